@@ -1,0 +1,31 @@
+# Every dependency comes from a Debian package (tools/install-deps.sh installs them); nothing is
+# downloaded by the build.
+
+find_package(PkgConfig REQUIRED)
+find_package(Threads REQUIRED)
+
+# Physics: Bullet in double precision, to match the custom solver's doubles.
+pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
+# Windowing and OpenGL.
+find_package(glfw3 3.3 REQUIRED)
+find_package(OpenGL REQUIRED)
+# Dear ImGui (static, with the GLFW and OpenGL3 backends) and stb.
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui stb)
+find_package(glm REQUIRED)
+find_package(assimp REQUIRED)
+find_package(SFML 2.5 COMPONENTS audio system REQUIRED)
+pkg_check_modules(LUA REQUIRED IMPORTED_TARGET lua5.4)
+find_package(Catch2 2 REQUIRED)
+find_package(CLI11 REQUIRED)
+
+# glad: the OpenGL 3.3 core loader, generated at build time by Debian's python3-glad.
+find_program(GLAD_EXECUTABLE glad REQUIRED)
+set(GLAD_OUT ${CMAKE_BINARY_DIR}/glad)
+add_custom_command(
+  OUTPUT ${GLAD_OUT}/src/gl.c ${GLAD_OUT}/include/glad/gl.h
+  COMMAND ${GLAD_EXECUTABLE} --quiet --reproducible --api gl:core=3.3 --out-path ${GLAD_OUT} c
+  COMMENT "Generating the OpenGL 3.3 core loader with glad"
+  VERBATIM)
+add_library(glad STATIC ${GLAD_OUT}/src/gl.c)
+target_include_directories(glad PUBLIC ${GLAD_OUT}/include)
+target_link_libraries(glad PUBLIC ${CMAKE_DL_LIBS})

@@ -1,0 +1,17 @@
+// The subcommands of the `animator` executable. Each registers itself on the CLI11 app and
+// returns the process exit code when run: 0 success, 1 bad input, 2 usage error.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace animator::cli {
+
+enum ExitCode { kSuccess = 0, kBadInput = 1, kUsage = 2 };
+
+// Sets `run` to the subcommand's action when the user picks it.
+void add_plugins_command(CLI::App &app, std::function<int()> &run);
+void add_info_command(CLI::App &app, std::function<int()> &run);
+
+} // namespace animator::cli

@@ -1,0 +1,39 @@
+// animator: the command line face of the program. The editor (`animator [edit] FILE`) and the
+// later subcommands (bake, render, compare, soundtrack) plug in here beside `plugins` and `info`.
+#include "cli/commands.hpp"
+
+#include <iostream>
+
+int main(int argc, char **argv) {
+    using namespace animator::cli;
+    CLI::App app{"animator: a 3D keyframe animator in which models obey physics", "animator"};
+    app.set_version_flag("--version", "animator 0.1.0");
+    app.require_subcommand(0, 1);
+
+    std::function<int()> run;
+    add_plugins_command(app, run);
+    add_info_command(app, run);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp &e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp &e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion &e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError &e) {
+        app.exit(e);
+        return kUsage;
+    }
+    if (!run) {
+        std::cout << app.help();
+        return kSuccess;
+    }
+    try {
+        return run();
+    } catch (const std::exception &e) {
+        std::cerr << "animator: " << e.what() << "\n";
+        return kBadInput;
+    }
+}

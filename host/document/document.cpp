@@ -1,0 +1,208 @@
+#include "document/document.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace animator {
+
+namespace {
+
+bool finite(const glm::dvec3 &v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+bool in_unit(double x) { return x >= 0.0 && x <= 1.0; }
+bool in_unit(const glm::dvec3 &v) { return in_unit(v.x) && in_unit(v.y) && in_unit(v.z); }
+
+template <class... Parts> std::string concat(const Parts &...parts) {
+    std::ostringstream out;
+    (out << ... << parts);
+    return out.str();
+}
+
+} // namespace
+
+bool Model::operator==(const Model &o) const {
+    return name == o.name && mesh == o.mesh && parent == o.parent && material == o.material &&
+           texture == o.texture && tint == o.tint && reflectivity == o.reflectivity &&
+           transparency == o.transparency && refractive_index == o.refractive_index &&
+           dynamics == o.dynamics && gravity == o.gravity && mass == o.mass &&
+           initial_velocity == o.initial_velocity && collision_sound == o.collision_sound &&
+           moving_sound == o.moving_sound;
+}
+
+double wrap_degrees(double degrees) {
+    double wrapped = std::fmod(degrees, 360.0);
+    if (wrapped < 0.0) wrapped += 360.0;
+    return wrapped >= 360.0 ? 0.0 : wrapped; // fmod of a tiny negative can round up to 360
+}
+
+std::string check_model(const Model &m) {
+    if (m.name.empty()) return "a model needs a name";
+    if (m.mesh.empty()) return concat("model '", m.name, "' needs a mesh");
+    if (!in_unit(m.material.kd) || !in_unit(m.material.ks))
+        return concat("model '", m.name, "': kd and ks must be colours in [0, 1]");
+    if (!std::isfinite(m.material.shininess) || m.material.shininess < 0.0)
+        return concat("model '", m.name, "': shininess must be a finite number >= 0");
+    if (!in_unit(m.tint)) return concat("model '", m.name, "': tint must be in [0, 1]");
+    if (!in_unit(m.reflectivity))
+        return concat("model '", m.name, "': reflectivity must be in [0, 1]");
+    if (!in_unit(m.transparency))
+        return concat("model '", m.name, "': transparency must be in [0, 1]");
+    if (!std::isfinite(m.refractive_index) || m.refractive_index <= 0.0)
+        return concat("model '", m.name, "': refractive index must be a finite number > 0");
+    if (!std::isfinite(m.mass) || m.mass <= 0.0)
+        return concat("model '", m.name, "': mass must be a finite number > 0");
+    if (!finite(m.initial_velocity))
+        return concat("model '", m.name, "': velocity must be finite");
+    return "";
+}
+
+std::string check_state(const ModelState &s) {
+    if (!finite(s.center)) return "center must be finite";
+    for (int i = 0; i < 3; ++i)
+        if (!(s.angles[i] >= 0.0 && s.angles[i] < 360.0)) return "angles must be in [0, 360)";
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(s.scale[i]) || s.scale[i] <= 0.0) return "scale must be finite and > 0";
+    if (!finite(s.turn)) return "rotation direction must be finite";
+    return "";
+}
+
+std::string check_camera(const CameraState &c) {
+    if (!finite(c.position)) return "camera position must be finite";
+    const double n = glm::length(c.rotation);
+    if (!std::isfinite(n) || std::abs(n - 1.0) > 1e-6) return "camera rotation must be a unit quaternion";
+    if (!(c.fov_degrees > 0.0 && c.fov_degrees < 180.0)) return "camera fov must be in (0, 180) degrees";
+    return "";
+}
+
+std::string check_settings(const Settings &s) {
+    if (s.max_time_ms < Settings::kMinMaxTimeMs || s.max_time_ms > Settings::kMaxMaxTimeMs)
+        return "max time must be between 1 s and 300000 s";
+    if (!std::isfinite(s.gravity)) return "gravity must be finite";
+    if (s.down_axis != Axis::X && s.down_axis != Axis::Y && s.down_axis != Axis::Z)
+        return "down axis must be x, y or z";
+    if (s.physics_backend.empty()) return "a physics backend id is needed";
+    for (const auto &[plugin, values] : s.params)
+        for (const auto &[param, value] : values) {
+            for (double v : value)
+                if (!std::isfinite(v))
+                    return concat("parameter ", plugin, ".", param, " must be finite");
+        }
+    return "";
+}
+
+Document::Document() { keyframes_.push_back(Keyframe{}); }
+
+int Document::find_model(const std::string &name) const {
+    for (size_t i = 0; i < models_.size(); ++i)
+        if (models_[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+int Document::find_keyframe(std::int64_t time_ms) const {
+    auto it = std::lower_bound(keyframes_.begin(), keyframes_.end(), time_ms,
+                               [](const Keyframe &k, std::int64_t t) { return k.time_ms < t; });
+    if (it == keyframes_.end() || it->time_ms != time_ms) return -1;
+    return static_cast<int>(it - keyframes_.begin());
+}
+
+const Keyframe &Document::keyframe_at(std::int64_t time_ms) const {
+    const int i = find_keyframe(time_ms);
+    if (i < 0) throw DocumentError(concat("no keyframe at ", time_ms, " ms"));
+    return keyframes_[static_cast<size_t>(i)];
+}
+
+Keyframe &Document::mutable_keyframe(std::int64_t time_ms) {
+    return const_cast<Keyframe &>(keyframe_at(time_ms));
+}
+
+void Document::add_model(const Model &model, const ModelState &state) {
+    if (auto problem = check_model(model); !problem.empty()) throw DocumentError(problem);
+    if (auto problem = check_state(state); !problem.empty())
+        throw DocumentError(concat("model '", model.name, "': ", problem));
+    if (find_model(model.name) >= 0)
+        throw DocumentError(concat("a model named '", model.name, "' already exists"));
+    if (model.parent < -1 || model.parent >= static_cast<int>(models_.size()))
+        throw DocumentError(concat("model '", model.name, "': parent ", model.parent,
+                                   " is not an earlier model"));
+    models_.push_back(model);
+    for (auto &k : keyframes_) k.states.push_back(state);
+}
+
+void Document::remove_last_model() {
+    if (models_.empty()) throw DocumentError("there is no model to remove");
+    models_.pop_back();
+    for (auto &k : keyframes_) k.states.pop_back();
+}
+
+void Document::set_model(int index, const Model &model) {
+    if (index < 0 || index >= static_cast<int>(models_.size()))
+        throw DocumentError(concat("no model ", index));
+    if (auto problem = check_model(model); !problem.empty()) throw DocumentError(problem);
+    const int other = find_model(model.name);
+    if (other >= 0 && other != index)
+        throw DocumentError(concat("a model named '", model.name, "' already exists"));
+    if (model.parent < -1 || model.parent >= index)
+        throw DocumentError(concat("model '", model.name, "': parent ", model.parent,
+                                   " is not an earlier model"));
+    models_[static_cast<size_t>(index)] = model;
+}
+
+void Document::insert_keyframe(const Keyframe &keyframe) {
+    if (keyframe.time_ms < 0 || keyframe.time_ms > settings_.max_time_ms)
+        throw DocumentError(concat("keyframe time ", keyframe.time_ms, " ms is outside 0 .. ",
+                                   settings_.max_time_ms, " ms"));
+    if (find_keyframe(keyframe.time_ms) >= 0)
+        throw DocumentError(concat("there is already a keyframe at ", keyframe.time_ms, " ms"));
+    if (keyframe.states.size() != models_.size())
+        throw DocumentError(concat("keyframe at ", keyframe.time_ms, " ms has ",
+                                   keyframe.states.size(), " model states for ", models_.size(),
+                                   " models"));
+    for (size_t i = 0; i < keyframe.states.size(); ++i)
+        if (auto problem = check_state(keyframe.states[i]); !problem.empty())
+            throw DocumentError(concat("keyframe at ", keyframe.time_ms, " ms, model '",
+                                       models_[i].name, "': ", problem));
+    if (auto problem = check_camera(keyframe.camera); !problem.empty())
+        throw DocumentError(concat("keyframe at ", keyframe.time_ms, " ms: ", problem));
+    auto at = std::upper_bound(keyframes_.begin(), keyframes_.end(), keyframe.time_ms,
+                               [](std::int64_t t, const Keyframe &k) { return t < k.time_ms; });
+    keyframes_.insert(at, keyframe);
+}
+
+Keyframe Document::delete_keyframe(std::int64_t time_ms) {
+    if (time_ms == 0) throw DocumentError("the keyframe at t = 0 cannot be deleted");
+    const int i = find_keyframe(time_ms);
+    if (i < 0) throw DocumentError(concat("no keyframe at ", time_ms, " ms"));
+    Keyframe removed = keyframes_[static_cast<size_t>(i)];
+    keyframes_.erase(keyframes_.begin() + i);
+    return removed;
+}
+
+void Document::set_state(std::int64_t keyframe_ms, int model, const ModelState &state) {
+    if (model < 0 || model >= static_cast<int>(models_.size()))
+        throw DocumentError(concat("no model ", model));
+    if (auto problem = check_state(state); !problem.empty())
+        throw DocumentError(concat("model '", models_[static_cast<size_t>(model)].name, "': ", problem));
+    mutable_keyframe(keyframe_ms).states[static_cast<size_t>(model)] = state;
+}
+
+void Document::set_camera(std::int64_t keyframe_ms, const CameraState &camera) {
+    if (auto problem = check_camera(camera); !problem.empty()) throw DocumentError(problem);
+    mutable_keyframe(keyframe_ms).camera = camera;
+}
+
+std::vector<Keyframe> Document::set_settings(const Settings &settings) {
+    if (auto problem = check_settings(settings); !problem.empty()) throw DocumentError(problem);
+    std::vector<Keyframe> removed;
+    // Shortening the animation deletes every keyframe past the new max time (seed, "The
+    // Animator Interface"); t = 0 is always kept since max time is at least 1 s.
+    while (keyframes_.back().time_ms > settings.max_time_ms) {
+        removed.insert(removed.begin(), keyframes_.back());
+        keyframes_.pop_back();
+    }
+    settings_ = settings;
+    return removed;
+}
+
+} // namespace animator

@@ -1,0 +1,40 @@
+#include "document/edits.hpp"
+
+namespace animator {
+
+void SetStateEdit::apply(Document &doc) {
+    const Keyframe &k = doc.keyframe_at(keyframe_ms_);
+    if (model_ < 0 || model_ >= static_cast<int>(k.states.size()))
+        throw DocumentError("no model " + std::to_string(model_));
+    before_ = k.states[static_cast<size_t>(model_)];
+    doc.set_state(keyframe_ms_, model_, after_);
+}
+
+void SetStateEdit::revert(Document &doc) { doc.set_state(keyframe_ms_, model_, before_); }
+
+void SetCameraEdit::apply(Document &doc) {
+    before_ = doc.keyframe_at(keyframe_ms_).camera;
+    doc.set_camera(keyframe_ms_, after_);
+}
+
+void SetCameraEdit::revert(Document &doc) { doc.set_camera(keyframe_ms_, before_); }
+
+void SetModelEdit::apply(Document &doc) {
+    if (index_ < 0 || index_ >= static_cast<int>(doc.models().size()))
+        throw DocumentError("no model " + std::to_string(index_));
+    before_ = doc.models()[static_cast<size_t>(index_)];
+    doc.set_model(index_, after_);
+}
+
+void SetSettingsEdit::apply(Document &doc) {
+    before_ = doc.settings();
+    removed_ = doc.set_settings(after_);
+}
+
+void SetSettingsEdit::revert(Document &doc) {
+    doc.set_settings(before_);
+    for (const auto &k : removed_) doc.insert_keyframe(k);
+    removed_.clear();
+}
+
+} // namespace animator

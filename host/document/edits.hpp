@@ -1,0 +1,120 @@
+// Edits: every change a user makes to a document, as an object that can apply and revert
+// itself, so that the history (history.hpp) can undo and redo it.
+#pragma once
+
+#include "document/document.hpp"
+
+#include <optional>
+
+namespace animator {
+
+class Edit {
+  public:
+    virtual ~Edit() = default;
+    // Applies the edit. Throws DocumentError, leaving the document unchanged, when it cannot.
+    virtual void apply(Document &doc) = 0;
+    // Undoes a successful apply().
+    virtual void revert(Document &doc) = 0;
+    virtual std::string label() const = 0;
+    // The keyframe whose undo stack records this edit (seed, "Keys": "each keyframe has its
+    // own undo stack"), or none for edits of the whole document (settings, models, the list of
+    // keyframes), which go on the document's stack.
+    virtual std::optional<std::int64_t> keyframe() const { return std::nullopt; }
+    // The time of the keyframe this edit creates, if it creates one: that keyframe starts with
+    // a fresh undo stack.
+    virtual std::optional<std::int64_t> creates_keyframe() const { return std::nullopt; }
+};
+
+class SetStateEdit final : public Edit {
+  public:
+    SetStateEdit(std::int64_t keyframe_ms, int model, const ModelState &state)
+        : keyframe_ms_(keyframe_ms), model_(model), after_(state) {}
+    void apply(Document &doc) override;
+    void revert(Document &doc) override;
+    std::string label() const override { return "transform model"; }
+    std::optional<std::int64_t> keyframe() const override { return keyframe_ms_; }
+
+  private:
+    std::int64_t keyframe_ms_;
+    int model_;
+    ModelState before_, after_;
+};
+
+class SetCameraEdit final : public Edit {
+  public:
+    SetCameraEdit(std::int64_t keyframe_ms, const CameraState &camera)
+        : keyframe_ms_(keyframe_ms), after_(camera) {}
+    void apply(Document &doc) override;
+    void revert(Document &doc) override;
+    std::string label() const override { return "move camera"; }
+    std::optional<std::int64_t> keyframe() const override { return keyframe_ms_; }
+
+  private:
+    std::int64_t keyframe_ms_;
+    CameraState before_, after_;
+};
+
+class AddKeyframeEdit final : public Edit {
+  public:
+    explicit AddKeyframeEdit(Keyframe keyframe) : keyframe_(std::move(keyframe)) {}
+    void apply(Document &doc) override { doc.insert_keyframe(keyframe_); }
+    void revert(Document &doc) override { doc.delete_keyframe(keyframe_.time_ms); }
+    std::string label() const override { return "add keyframe"; }
+    std::optional<std::int64_t> creates_keyframe() const override { return keyframe_.time_ms; }
+
+  private:
+    Keyframe keyframe_;
+};
+
+class DeleteKeyframeEdit final : public Edit {
+  public:
+    explicit DeleteKeyframeEdit(std::int64_t time_ms) : time_ms_(time_ms) {}
+    void apply(Document &doc) override { removed_ = doc.delete_keyframe(time_ms_); }
+    void revert(Document &doc) override { doc.insert_keyframe(removed_); }
+    std::string label() const override { return "delete keyframe"; }
+
+  private:
+    std::int64_t time_ms_;
+    Keyframe removed_;
+};
+
+class AddModelEdit final : public Edit {
+  public:
+    AddModelEdit(Model model, const ModelState &state) : model_(std::move(model)), state_(state) {}
+    void apply(Document &doc) override { doc.add_model(model_, state_); }
+    void revert(Document &doc) override { doc.remove_last_model(); }
+    std::string label() const override { return "add model"; }
+
+  private:
+    Model model_;
+    ModelState state_;
+};
+
+// Changes a model's properties (physics, material, sounds...).
+class SetModelEdit final : public Edit {
+  public:
+    SetModelEdit(int index, Model model) : index_(index), after_(std::move(model)) {}
+    void apply(Document &doc) override;
+    void revert(Document &doc) override { doc.set_model(index_, before_); }
+    std::string label() const override { return "change model"; }
+
+  private:
+    int index_;
+    Model before_, after_;
+};
+
+// Changes the animation settings. A shorter max time deletes later keyframes; reverting puts
+// them back.
+class SetSettingsEdit final : public Edit {
+  public:
+    explicit SetSettingsEdit(Settings settings) : after_(std::move(settings)) {}
+    void apply(Document &doc) override;
+    void revert(Document &doc) override;
+    std::string label() const override { return "change settings"; }
+
+  private:
+    Settings before_, after_;
+    std::vector<Keyframe> removed_;
+};
+
+} // namespace animator

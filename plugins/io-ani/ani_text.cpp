@@ -1,0 +1,90 @@
+#include "ani_text.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace ani_format {
+
+bool tokenize(const std::string &line, std::vector<Token> &tokens, std::string &error) {
+    tokens.clear();
+    size_t i = 0;
+    while (i < line.size()) {
+        const char c = line[i];
+        if (c == ' ' || c == '\t' || c == '\r') {
+            ++i;
+        } else if (c == '#') {
+            break; // a comment runs to the end of the line
+        } else if (c == '"') {
+            Token t;
+            t.quoted = true;
+            ++i;
+            bool closed = false;
+            while (i < line.size()) {
+                char d = line[i++];
+                if (d == '"') {
+                    closed = true;
+                    break;
+                }
+                if (d == '\\') {
+                    if (i >= line.size()) break;
+                    const char e = line[i++];
+                    if (e == 'n') d = '\n';
+                    else if (e == '"' || e == '\\') d = e;
+                    else {
+                        error = std::string("unknown escape '\\") + e + "' in a string";
+                        return false;
+                    }
+                }
+                t.text.push_back(d);
+            }
+            if (!closed) {
+                error = "a string is not closed with '\"'";
+                return false;
+            }
+            tokens.push_back(std::move(t));
+        } else {
+            Token t;
+            while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r' &&
+                   line[i] != '"' && line[i] != '#')
+                t.text.push_back(line[i++]);
+            tokens.push_back(std::move(t));
+        }
+    }
+    return true;
+}
+
+std::string quote(const std::string &s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out.push_back('\\');
+        if (c == '\n') {
+            out += "\\n";
+            continue;
+        }
+        out.push_back(c);
+    }
+    return out + "\"";
+}
+
+std::string number(double x) {
+    char buf[64];
+    for (int precision = 15; precision <= 17; ++precision) {
+        std::snprintf(buf, sizeof buf, "%.*g", precision, x);
+        if (std::strtod(buf, nullptr) == x) break;
+    }
+    return buf;
+}
+
+void OwnedDocument::finish() {
+    for (size_t k = 0; k < keyframes.size(); ++k) keyframes[k].states = states[k].data();
+    view.struct_size = sizeof view;
+    view.models = models.data();
+    view.model_count = static_cast<uint32_t>(models.size());
+    view.keyframes = keyframes.data();
+    view.keyframe_count = static_cast<uint32_t>(keyframes.size());
+    view.params = params.data();
+    view.param_count = static_cast<uint32_t>(params.size());
+}
+
+} // namespace ani_format

@@ -1,0 +1,51 @@
+// The .ani format's text layer (docs/ani-format.md): lines of words and quoted strings, and the
+// owned storage that a read document view points into.
+#pragma once
+
+#include <animator/document.h>
+
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace ani_format {
+
+constexpr int kVersion = 1;
+constexpr const char *kMagic = "animator-ani";
+
+// A line split into tokens: bare words, and "quoted strings" with \" \\ \n escapes.
+struct Token {
+    std::string text;
+    bool quoted = false;
+};
+
+// Returns false and sets `error` for an unterminated string or a bad escape.
+bool tokenize(const std::string &line, std::vector<Token> &tokens, std::string &error);
+// The token form of a string: always quoted, escaped.
+std::string quote(const std::string &s);
+// Shortest text of a double that reads back as the same double.
+std::string number(double x);
+
+// Everything a read document view points into.
+struct OwnedDocument {
+    std::deque<std::string> strings;
+    std::vector<ani_model_desc> models;
+    std::vector<std::vector<ani_model_state>> states; // per keyframe
+    std::vector<ani_keyframe_view> keyframes;
+    std::vector<ani_param_setting> params;
+    ani_document_view view{};
+
+    const char *keep(const std::string &s) {
+        strings.push_back(s);
+        return strings.back().c_str();
+    }
+    // Points the view at the vectors; call once they are complete.
+    void finish();
+};
+
+// Reads `path`; on failure returns false with "path:line: what was expected" in `error`.
+bool read_ani(const char *path, OwnedDocument &doc, std::string &error);
+// Writes atomically; on failure returns false with the reason, and any old file is intact.
+bool write_ani(const char *path, const ani_document_view &doc, std::string &error);
+
+} // namespace ani_format

@@ -1,0 +1,104 @@
+/* animator plugin SDK: a document (an animation) as plain C data.
+ *
+ * File-format plugins read into and write from this view; physics backends receive the models
+ * part of it. All pointers are owned by whoever built the view and stay valid for the call (or,
+ * for a view returned by a plugin, until the plugin's matching release function).
+ *
+ * Units: lengths in scene units (1 unit = 1 metre), times in milliseconds for keyframes and max
+ * time, angles in degrees, colours RGB in [0, 1].
+ */
+#ifndef ANIMATOR_SDK_DOCUMENT_H
+#define ANIMATOR_SDK_DOCUMENT_H
+
+#include "animator/plugin.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct ani_vec3 {
+    double x, y, z;
+} ani_vec3;
+
+typedef struct ani_quat {
+    double w, x, y, z; /* unit quaternion */
+} ani_quat;
+
+typedef enum ani_axis { ANI_AXIS_X = 0, ANI_AXIS_Y = 1, ANI_AXIS_Z = 2 } ani_axis;
+
+/* A model: what the seed's Model Interface holds. Empty strings mean "none". */
+typedef struct ani_model_desc {
+    uint32_t struct_size;
+    const char *name;   /* unique in the document */
+    const char *mesh;   /* mesh id or path */
+    int32_t parent;     /* index of the parent model in the scene tree, -1 for the root */
+    ani_vec3 kd;        /* diffuse colour */
+    ani_vec3 ks;        /* specular colour */
+    double shininess;   /* >= 0 */
+    const char *texture;
+    double tint;        /* [0, 1] */
+    double reflectivity;     /* [0, 1] */
+    double transparency;     /* [0, 1] */
+    double refractive_index; /* > 0, air 1, water 1.33 */
+    int32_t dynamics;   /* 0 or 1 */
+    int32_t gravity;    /* 0 or 1 */
+    double mass;        /* > 0 */
+    ani_vec3 initial_velocity; /* velocity at t = 0 */
+    const char *collision_sound;
+    const char *moving_sound;
+} ani_model_desc;
+
+/* One model's state at one keyframe (the seed's NodeState). */
+typedef struct ani_model_state {
+    ani_vec3 center; /* world position of the model's origin */
+    ani_vec3 angles; /* degrees in [0, 360) about the model's own X, Y, Z axes */
+    ani_vec3 scale;  /* > 0 */
+    ani_vec3 turn;   /* rotation direction per axis: the sign of the seed's `ccw`; 0 = shortest */
+} ani_model_state;
+
+typedef struct ani_camera_state {
+    ani_vec3 position;
+    ani_quat rotation; /* camera-to-world rotation; identity looks down -Z with +Y up */
+    double fov_degrees; /* vertical field of view, (0, 180) */
+} ani_camera_state;
+
+typedef struct ani_keyframe_view {
+    uint32_t struct_size;
+    int64_t time_ms;               /* >= 0; the first keyframe has time 0 */
+    const ani_model_state *states; /* one per model, in model order */
+    ani_camera_state camera;
+} ani_keyframe_view;
+
+/* One saved parameter value of a plugin. */
+typedef struct ani_param_setting {
+    const char *plugin_id;
+    const char *param_id;
+    ani_param_value value;
+} ani_param_setting;
+
+typedef struct ani_settings_view {
+    uint32_t struct_size;
+    int64_t max_time_ms;  /* [1000, 300000000] */
+    double gravity;       /* m/s^2, default 9.81 */
+    int32_t down_axis;    /* ani_axis; models fall toward -axis */
+    int32_t cel_shading;  /* 0 or 1 */
+    const char *skybox;   /* "" for none */
+    const char *physics_backend; /* plugin id, e.g. "physics.custom" */
+} ani_settings_view;
+
+typedef struct ani_document_view {
+    uint32_t struct_size;
+    const ani_model_desc *models;
+    uint32_t model_count;
+    const ani_keyframe_view *keyframes; /* strictly increasing times, the first at 0 */
+    uint32_t keyframe_count;
+    ani_settings_view settings;
+    const ani_param_setting *params;
+    uint32_t param_count;
+} ani_document_view;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ANIMATOR_SDK_DOCUMENT_H */

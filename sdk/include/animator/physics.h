@@ -1,0 +1,120 @@
+/* animator plugin SDK: physics backends (ANI_KIND_PHYSICS).
+ *
+ * A backend bakes a scene: given the models, their meshes, which spans of time each one is
+ * driven by its keyframes, and the state of every model at t_begin, it reports the motion of
+ * every model from t_begin to t_end as segments, and every collision as an event. The host owns
+ * the canonical scene and caches what the backend reports, so a backend can be swapped at run
+ * time by destroying one instance and creating another.
+ *
+ * Between events a segment is a closed form: center(t) = p0 + v0 (t - t0) + a (t - t0)^2 / 2.
+ * An analytic backend reports one segment per free flight; a stepping backend one per step.
+ * Times here are in seconds.
+ */
+#ifndef ANIMATOR_SDK_PHYSICS_H
+#define ANIMATOR_SDK_PHYSICS_H
+
+#include "animator/document.h"
+#include "animator/instance.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define ANI_NO_MODEL 0xffffffffu
+
+/* A triangle mesh in the model's own coordinates (before its keyframed transform). */
+typedef struct ani_mesh_view {
+    uint32_t struct_size;
+    const double *positions;    /* 3 per vertex */
+    uint32_t vertex_count;
+    const uint32_t *triangles;  /* 3 vertex indices per triangle, counter-clockwise outward */
+    uint32_t triangle_count;
+    ani_vec3 bound_center;      /* the seed's bounding sphere: mean of the vertices */
+    double bound_radius;        /* largest distance from bound_center to a vertex */
+    int32_t is_sphere;          /* 1 when the mesh is a sphere of bound_radius (closed forms) */
+} ani_mesh_view;
+
+typedef struct ani_time_span {
+    double begin, end; /* seconds, begin <= end */
+} ani_time_span;
+
+/* How a model moves at a given time. */
+typedef enum ani_motion_kind {
+    ANI_MOTION_KEYED = 1, /* driven by its keyframes (the host's interpolation) */
+    ANI_MOTION_FREE = 2,  /* free flight: the closed form of the segment */
+    ANI_MOTION_REST = 3   /* not moving (a = v0 = 0) */
+} ani_motion_kind;
+
+typedef struct ani_body_state {
+    int32_t motion;   /* ani_motion_kind at t_begin */
+    ani_vec3 center;
+    ani_vec3 velocity;
+} ani_body_state;
+
+typedef struct ani_physics_model {
+    uint32_t struct_size;
+    const ani_model_desc *desc;  /* dynamics, gravity, mass, ... */
+    const ani_mesh_view *mesh;
+    /* Models with the same group move as one jointed model and never collide with each other
+     * (the index of the scene root's child they hang under). */
+    uint32_t group;
+    const ani_time_span *keyed_spans; /* spans driven by keyframes, sorted, disjoint */
+    uint32_t keyed_span_count;
+    ani_body_state start;             /* the state at t_begin */
+} ani_physics_model;
+
+typedef struct ani_physics_scene {
+    uint32_t struct_size;
+    const ani_physics_model *models;
+    uint32_t model_count;
+    double gravity;     /* m/s^2 along -down_axis */
+    int32_t down_axis;  /* ani_axis */
+
+    /* [thread: any] The keyframed state (and center velocity) of a model at time t in
+     * seconds, for keyed models and for rotation/scale of every model. */
+    void *host_context;
+    ani_status_code (*evaluate_keyed)(void *host_context, uint32_t model, double t,
+                                      ani_model_state *state, ani_vec3 *velocity);
+} ani_physics_scene;
+
+typedef struct ani_motion_segment {
+    uint32_t model;
+    int32_t motion;   /* ani_motion_kind */
+    double t0, t1;    /* seconds */
+    ani_vec3 p0, v0, a;
+} ani_motion_segment;
+
+typedef struct ani_collision_event {
+    double t;         /* seconds, the time of first contact */
+    uint32_t a, b;    /* the two models (b may be ANI_NO_MODEL for a world boundary) */
+    ani_vec3 normal;  /* unit normal of the face hit, pointing from b towards a */
+    ani_vec3 point;   /* contact point */
+    double speed;     /* approach speed along the normal, >= 0 */
+} ani_collision_event;
+
+/* Where a bake reports what it finds; the host copies what it is given. */
+typedef struct ani_bake_sink {
+    void *context;
+    void (*segment)(void *context, const ani_motion_segment *segment);
+    void (*event)(void *context, const ani_collision_event *event);
+    /* Reports progress in [0, 1]; returns 0 when the host asks the bake to stop, which then
+     * returns ANI_ERR_CANCELLED. */
+    int32_t (*progress)(void *context, double fraction);
+} ani_bake_sink;
+
+typedef struct ani_physics_api {
+    uint32_t struct_size;
+    ani_instance_api instance;
+    /* Bakes [t_begin, t_end] seconds. Every model's motion over the whole span is reported
+     * (segments of one model in time order, covering the span); events in time order. Never
+     * reports a NaN or an infinity: a scene that would produce one is refused with a status
+     * naming the model. */
+    ani_status_code (*bake)(void *instance, const ani_physics_scene *scene, double t_begin,
+                            double t_end, const ani_bake_sink *sink, ani_status *status);
+} ani_physics_api;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ANIMATOR_SDK_PHYSICS_H */

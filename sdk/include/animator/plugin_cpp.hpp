@@ -1,0 +1,94 @@
+// animator plugin SDK: optional C++ helpers for writing a plugin in C++.
+//
+// Header-only, so nothing of the host's C++ crosses the boundary: each plugin library compiles
+// its own copy. `guarded` turns exceptions into a status code plus message, as the ABI requires
+// of every C++ entry point; `ParamStore` implements get_param/set_param over a plugin's
+// parameter descriptors.
+#ifndef ANIMATOR_SDK_PLUGIN_CPP_HPP
+#define ANIMATOR_SDK_PLUGIN_CPP_HPP
+
+#include "animator/plugin.h"
+
+#include <cstring>
+#include <exception>
+#include <new>
+#include <string>
+#include <vector>
+
+namespace ani {
+
+// Thrown inside a plugin to fail with a particular status code.
+struct Failure : std::exception {
+    Failure(ani_status_code c, std::string m) : code(c), message(std::move(m)) {}
+    const char *what() const noexcept override { return message.c_str(); }
+    ani_status_code code;
+    std::string message;
+};
+
+inline ani_status_code set_status(ani_status *status, ani_status_code code,
+                                  const std::string &message) {
+    return ani_status_set(status, code, message.c_str());
+}
+
+// Runs fn(); returns ANI_OK, or the failure it threw as a status.
+template <class Fn> ani_status_code guarded(ani_status *status, Fn &&fn) noexcept {
+    try {
+        fn();
+        return set_status(status, ANI_OK, "");
+    } catch (const Failure &f) {
+        return set_status(status, f.code, f.message);
+    } catch (const std::bad_alloc &) {
+        return set_status(status, ANI_ERR_OUT_OF_MEMORY, "out of memory");
+    } catch (const std::exception &e) {
+        return set_status(status, ANI_ERR_FAILED, e.what());
+    } catch (...) {
+        return set_status(status, ANI_ERR_FAILED, "unknown error");
+    }
+}
+
+// The current values of a plugin instance's parameters, starting at their defaults.
+class ParamStore {
+  public:
+    ParamStore(const ani_param_descriptor *params, uint32_t count) : params_(params, params + count) {
+        for (const auto &p : params_) values_.push_back(p.default_value);
+    }
+
+    ani_status_code get(const char *id, ani_param_value *out, ani_status *status) const {
+        const int i = index_of(id);
+        if (i < 0) return unknown(id, status);
+        *out = values_[static_cast<size_t>(i)];
+        return set_status(status, ANI_OK, "");
+    }
+
+    ani_status_code set(const char *id, const ani_param_value *value, ani_status *status) {
+        const int i = index_of(id);
+        if (i < 0) return unknown(id, status);
+        values_[static_cast<size_t>(i)] = *value;
+        return set_status(status, ANI_OK, "");
+    }
+
+    double number(const char *id) const {
+        const int i = index_of(id);
+        if (i < 0) throw Failure(ANI_ERR_UNKNOWN_PARAM, std::string("no parameter '") + id + "'");
+        return values_[static_cast<size_t>(i)].value[0];
+    }
+
+  private:
+    int index_of(const char *id) const {
+        if (id == nullptr) return -1;
+        for (size_t i = 0; i < params_.size(); ++i)
+            if (std::strcmp(params_[i].id, id) == 0) return static_cast<int>(i);
+        return -1;
+    }
+    static ani_status_code unknown(const char *id, ani_status *status) {
+        return set_status(status, ANI_ERR_UNKNOWN_PARAM,
+                          std::string("no parameter '") + (id ? id : "(null)") + "'");
+    }
+
+    std::vector<ani_param_descriptor> params_;
+    std::vector<ani_param_value> values_;
+};
+
+} // namespace ani
+
+#endif // ANIMATOR_SDK_PLUGIN_CPP_HPP

@@ -1,0 +1,69 @@
+/* animator plugin SDK: shading models (ANI_KIND_SHADING).
+ *
+ * A shading model hands the host GLSL (330 core) source and the uniforms it needs; the host
+ * compiles, binds and fills them. No GL call happens in a plugin.
+ */
+#ifndef ANIMATOR_SDK_SHADING_H
+#define ANIMATOR_SDK_SHADING_H
+
+#include "animator/instance.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* What a draw needs; the host asks for the program of exactly the features in use, so a scene
+ * without them does not pay for them. */
+typedef enum ani_shading_feature {
+    ANI_SHADE_TEXTURE = 1 << 0,
+    ANI_SHADE_REFLECTION = 1 << 1,
+    ANI_SHADE_REFRACTION = 1 << 2,
+    ANI_SHADE_CEL = 1 << 3,
+    ANI_SHADE_SELECTED = 1 << 4,
+    ANI_SHADE_SKYBOX_PASS = 1 << 5 /* the program that draws the skybox itself */
+} ani_shading_feature;
+
+typedef enum ani_uniform_type {
+    ANI_UNIFORM_FLOAT = 1,
+    ANI_UNIFORM_INT = 2,
+    ANI_UNIFORM_VEC3 = 3,
+    ANI_UNIFORM_VEC4 = 4,
+    ANI_UNIFORM_MAT3 = 5,
+    ANI_UNIFORM_MAT4 = 6,
+    ANI_UNIFORM_SAMPLER_2D = 7,
+    ANI_UNIFORM_SAMPLER_CUBE = 8
+} ani_uniform_type;
+
+/* A uniform and what the host puts in it. Semantics (docs/sdk.md lists them): "model",
+ * "view", "projection", "normal_matrix", "camera_position", "light_position", "light_colour",
+ * "ambient", "kd", "ks", "shininess", "tint", "reflectivity", "transparency",
+ * "refractive_index", "texture", "skybox", "selected_tint", and "param:<id>" for the value of
+ * one of the plugin's own parameters. */
+typedef struct ani_uniform_desc {
+    const char *name; /* as in the GLSL */
+    int32_t type;     /* ani_uniform_type */
+    const char *semantic;
+} ani_uniform_desc;
+
+typedef struct ani_shader_program {
+    uint32_t struct_size;
+    const char *vertex_source;
+    const char *fragment_source;
+    const ani_uniform_desc *uniforms;
+    uint32_t uniform_count;
+} ani_shader_program;
+
+typedef struct ani_shading_api {
+    uint32_t struct_size;
+    ani_instance_api instance;
+    /* The program for a set of ani_shading_feature bits. The strings stay valid until the
+     * instance is destroyed. */
+    ani_status_code (*get_program)(void *instance, uint32_t features, ani_shader_program *program,
+                                   ani_status *status);
+} ani_shading_api;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ANIMATOR_SDK_SHADING_H */

@@ -1,0 +1,63 @@
+// The real `animator` executable, run as a user runs it: output and exit codes.
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace animator;
+
+namespace {
+const std::string drop = (test::source_dir() / "assets/animations/drop.ani").string();
+}
+
+TEST_CASE("animator --help names the subcommands and each subcommand has --help") {
+    auto r = test::run_animator("--help");
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("plugins") && Catch::Contains("info"));
+    for (const char *sub : {"plugins", "info"}) {
+        auto s = test::run_animator(std::string(sub) + " --help");
+        CAPTURE(sub);
+        CHECK(s.exit_code == 0);
+        CHECK_THAT(s.out, Catch::Contains("Usage") || Catch::Contains("usage"));
+    }
+}
+
+TEST_CASE("animator plugins lists id, kind, version and library, and why any was refused") {
+    auto r = test::run_animator("plugins");
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Matches(R"([\s\S]*format\.ani +file_format +1\.0\.0 +\S*animator-io-ani\.so[\s\S]*)"));
+
+    auto broken = test::run_animator("plugins", std::string("ANIMATOR_PLUGIN_PATH=") + ANIMATOR_BROKEN_PLUGIN_DIR);
+    CHECK(broken.exit_code == 0);
+    CHECK_THAT(broken.out, Catch::Contains("format.ani"));
+    CHECK_THAT(broken.out, Catch::Contains("interpolator.broken"));
+    CHECK_THAT(broken.out, Catch::Contains("refused ") && Catch::Contains("animator-test-wrong-major.so: was built for plugin ABI 2.0"));
+}
+
+TEST_CASE("animator info prints a document's settings, models and keyframes") {
+    auto r = test::run_animator("info " + drop);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("read by format.ani"));
+    CHECK_THAT(r.out, Catch::Contains("max time:        10000 ms"));
+    CHECK_THAT(r.out, Catch::Contains("gravity:         9.81 m/s^2 toward -y"));
+    CHECK_THAT(r.out, Catch::Contains("models (2):"));
+    CHECK_THAT(r.out, Catch::Contains("ball: mesh sphere"));
+    CHECK_THAT(r.out, Catch::Contains("dynamics on, gravity on, mass 1"));
+    CHECK_THAT(r.out, Catch::Contains("keyframes (1):"));
+    CHECK_THAT(r.out, Catch::Contains("ball: center (0, 5, 0)"));
+}
+
+TEST_CASE("bad input exits 1 naming the file and usage errors exit 2") {
+    const auto dir = test::fresh_dir("cli_bad");
+    auto missing = test::run_animator("info " + (dir / "missing.ani").string());
+    CHECK(missing.exit_code == 1);
+    CHECK_THAT(missing.out, Catch::Contains("missing.ani"));
+
+    test::write_file(dir / "bad.ani", "animator-ani 1\nmodel \"b\"\n  mass -1\nend\n");
+    auto bad = test::run_animator("info " + (dir / "bad.ani").string());
+    CHECK(bad.exit_code == 1);
+    CHECK_THAT(bad.out, Catch::Contains("bad.ani:3: expected mass > 0"));
+
+    CHECK(test::run_animator("info").exit_code == 2);
+    CHECK(test::run_animator("frobnicate").exit_code == 2);
+    CHECK(test::run_animator("info --bogus " + drop).exit_code == 2);
+}

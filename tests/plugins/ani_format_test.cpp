@@ -1,0 +1,174 @@
+// The .ani format plugin through the host's document I/O: round trips, strict errors with file
+// and line, version refusal, and atomic saving.
+#include "io/document_io.hpp"
+
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <csignal>
+#include <random>
+#include <sys/resource.h>
+
+using namespace animator;
+namespace fs = std::filesystem;
+
+namespace {
+
+PluginRegistry &registry() {
+    static PluginRegistry r({test::bin_dir()}, {});
+    return r;
+}
+
+std::vector<fs::path> temp_files_in(const fs::path &dir) {
+    std::vector<fs::path> out;
+    for (const auto &e : fs::directory_iterator(dir))
+        if (e.path().filename().string().find(".tmp-") != std::string::npos) out.push_back(e.path());
+    return out;
+}
+
+const char *kValidHeader = "animator-ani 1\n";
+
+} // namespace
+
+TEST_CASE("read(write(doc)) == doc over documents with many models and keyframes") {
+    std::mt19937 rng(42);
+    const fs::path dir = test::fresh_dir("ani_round_trip");
+    for (auto [models, keyframes] : {std::pair{0, 1}, {1, 1}, {3, 10}, {12, 60}, {40, 200}}) {
+        CAPTURE(models, keyframes);
+        const Document doc = test::random_document(rng, models, keyframes);
+        const fs::path path = dir / ("doc" + std::to_string(models) + ".ani");
+        save_document(registry(), doc, path);
+        CHECK(test::read_file(path).rfind(kValidHeader, 0) == 0);
+        const OpenedDocument opened = open_document(registry(), path);
+        CHECK(opened.format_id == "format.ani");
+        CHECK(opened.document == doc);
+        // Writing what was read gives the same bytes: the format has one spelling of a document.
+        const fs::path again = dir / "again.ani";
+        save_document(registry(), opened.document, again);
+        CHECK(test::read_file(again) == test::read_file(path));
+    }
+}
+
+TEST_CASE("every example animation loads and round trips") {
+    const fs::path dir = test::fresh_dir("ani_examples");
+    int count = 0;
+    for (const auto &entry : fs::directory_iterator(test::source_dir() / "assets" / "animations")) {
+        if (entry.path().extension() != ".ani") continue;
+        CAPTURE(entry.path());
+        const Document doc = open_document(registry(), entry.path()).document;
+        CHECK(doc.keyframes().front().time_ms == 0);
+        const fs::path copy = dir / entry.path().filename();
+        save_document(registry(), doc, copy);
+        CHECK(open_document(registry(), copy).document == doc);
+        ++count;
+    }
+    CHECK(count >= 1);
+}
+
+TEST_CASE("malformed .ani files fail with the file, the line and what was expected") {
+    const fs::path dir = test::fresh_dir("ani_bad");
+    const std::string model = "model \"ball\"\n  mesh \"sphere\"\nend\n";
+    const std::string key0 = "keyframe 0\n  camera position 0 0 0 rotation 1 0 0 0 fov 50\n"
+                             "  state \"ball\" center 0 0 0 angles 0 0 0 scale 1 1 1 turn 0 0 0\nend\n";
+    struct Case {
+        const char *name;
+        std::string text;
+        const char *expected;
+    };
+    const std::vector<Case> cases = {
+        {"empty", "", ":1: the file is empty"},
+        {"no_magic", "hello 1\n", ":1: expected 'animator-ani'"},
+        {"newer_version", "animator-ani 2\n", ":1: format version 2 was written by a newer animator"},
+        {"version_word", "animator-ani one\n", ":1: expected a whole number for the format version"},
+        {"unknown_block", std::string(kValidHeader) + "models\n", ":2: expected 'settings', 'model' or 'keyframe'"},
+        {"unknown_setting", std::string(kValidHeader) + "settings\n  speed 3\nend\n", ":3: unknown settings key 'speed'"},
+        {"max_time_low", std::string(kValidHeader) + "settings\n  max_time_ms 10\nend\n", ":3: expected max_time_ms between 1000"},
+        {"gravity_nan", std::string(kValidHeader) + "settings\n  gravity nan\nend\n", ":3: expected a finite number for gravity"},
+        {"down_w", std::string(kValidHeader) + "settings\n  down w\nend\n", ":3: expected x, y or z"},
+        {"bool_yes", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  dynamics yes\nend\n", ":4: expected true or false for dynamics"},
+        {"mass_zero", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  mass 0\nend\n", ":4: expected mass > 0"},
+        {"mass_word", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  mass heavy\nend\n", ":4: expected a number for mass, got 'heavy'"},
+        {"no_mesh", std::string(kValidHeader) + "model \"b\"\n  mass 2\nend\n", ":2: model \"b\" has no 'mesh'"},
+        {"unclosed_string", std::string(kValidHeader) + "model \"b\n", ":2: a string is not closed"},
+        {"duplicate_model", std::string(kValidHeader) + model + model, ":5: a model named \"ball\" already exists"},
+        {"duplicate_key", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  mesh \"t\"\nend\n", ":4: 'mesh' is given twice"},
+        {"kd_range", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  kd 1 2 0\nend\n", ":4: expected kd components in [0, 1]"},
+        {"missing_number", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  velocity 1 2\nend\n", ":4: expected three numbers after 'velocity'"},
+        {"no_keyframe", std::string(kValidHeader) + model, ":5: the file ends without a 'keyframe 0' block"},
+        {"first_not_zero", std::string(kValidHeader) + "keyframe 5\nend\n", ":2: expected the first keyframe at 0 ms"},
+        {"missing_state", std::string(kValidHeader) + model + "keyframe 0\n  camera position 0 0 0 rotation 1 0 0 0 fov 50\nend\n", ":5: keyframe 0 has no state for model \"ball\""},
+        {"angle_360", std::string(kValidHeader) + model + "keyframe 0\n  camera position 0 0 0 rotation 1 0 0 0 fov 50\n  state \"ball\" center 0 0 0 angles 360 0 0 scale 1 1 1 turn 0 0 0\nend\n", ":7: expected angles in [0, 360)"},
+        {"unknown_model", std::string(kValidHeader) + model + "keyframe 0\n  camera position 0 0 0 rotation 1 0 0 0 fov 50\n  state \"bal\" center 0 0 0 angles 0 0 0 scale 1 1 1 turn 0 0 0\nend\n", ":7: no model named \"bal\""},
+        {"keyframe_order", std::string(kValidHeader) + model + key0 + "keyframe 0\nend\n", ":9: expected keyframe times to increase"},
+        {"quaternion", std::string(kValidHeader) + "keyframe 0\n  camera position 0 0 0 rotation 2 0 0 0 fov 50\nend\n", ":3: expected a unit quaternion"},
+        {"past_max_time", std::string(kValidHeader) + "settings\n  max_time_ms 1000\nend\n" + model + key0 + "keyframe 2000\nend\n", ":12: keyframe 2000 ms is past the max time"},
+        {"unterminated_block", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n", ":3: the file ends inside model \"b\""},
+    };
+    for (const Case &c : cases) {
+        CAPTURE(c.name);
+        const fs::path path = dir / (std::string(c.name) + ".ani");
+        test::write_file(path, c.text);
+        try {
+            open_document(registry(), path);
+            FAIL("no error for " << c.name);
+        } catch (const DocumentIoError &e) {
+            const std::string message = e.what();
+            CHECK_THAT(message, Catch::StartsWith(path.string()));
+            CHECK_THAT(message, Catch::Contains(c.expected));
+        }
+    }
+}
+
+TEST_CASE("a file no plugin reads is named in the error") {
+    const fs::path dir = test::fresh_dir("ani_unknown");
+    test::write_file(dir / "notes.txt", "just some text\n");
+    CHECK_THROWS_WITH(open_document(registry(), dir / "notes.txt"),
+                      Catch::Contains("notes.txt") && Catch::Contains("no file-format plugin reads"));
+    CHECK_THROWS_WITH(open_document(registry(), dir / "missing.ani"),
+                      Catch::Contains("missing.ani: cannot open"));
+    CHECK_THROWS_WITH(save_document(registry(), Document{}, dir / "out.xyz"),
+                      Catch::Contains("no file-format plugin writes '.xyz'"));
+}
+
+TEST_CASE("a save that fails midway leaves the previous file intact") {
+    const fs::path dir = test::fresh_dir("ani_atomic");
+    const fs::path path = dir / "work.ani";
+    std::mt19937 rng(7);
+    const Document small = test::random_document(rng, 1, 1);
+    save_document(registry(), small, path);
+    const std::string before = test::read_file(path);
+
+    // A full disk, as far as this process can tell: writes past 4 KiB fail with EFBIG.
+    const Document big = test::random_document(rng, 20, 100);
+    std::signal(SIGXFSZ, SIG_IGN);
+    rlimit old{};
+    getrlimit(RLIMIT_FSIZE, &old);
+    rlimit tiny = old;
+    tiny.rlim_cur = 4096;
+    setrlimit(RLIMIT_FSIZE, &tiny);
+    std::string error;
+    try {
+        save_document(registry(), big, path);
+    } catch (const DocumentIoError &e) {
+        error = e.what();
+    }
+    setrlimit(RLIMIT_FSIZE, &old);
+    std::signal(SIGXFSZ, SIG_DFL);
+
+    CHECK_THAT(error, Catch::Contains("work.ani") && Catch::Contains("previous file is unchanged"));
+    CHECK(test::read_file(path) == before);
+    CHECK(temp_files_in(dir).empty());
+    CHECK(open_document(registry(), path).document == small);
+}
+
+TEST_CASE("a save that cannot replace the target says why and leaves no temporary file") {
+    const fs::path dir = test::fresh_dir("ani_atomic_dir");
+    fs::create_directories(dir / "taken.ani" / "inside");
+    CHECK_THROWS_WITH(save_document(registry(), Document{}, dir / "taken.ani"),
+                      Catch::Contains("cannot replace the file"));
+    CHECK(fs::is_directory(dir / "taken.ani" / "inside"));
+    CHECK(temp_files_in(dir).empty());
+    CHECK_THROWS_WITH(save_document(registry(), Document{}, dir / "no" / "such" / "folder.ani"),
+                      Catch::Contains("cannot create a temporary file"));
+}

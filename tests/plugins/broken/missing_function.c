@@ -1,0 +1,3 @@
+#define BROKEN_ID "interpolator.no-evaluate"
+#define BROKEN_EVALUATE NULL
+#include "broken_plugin.h"

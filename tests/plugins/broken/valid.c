@@ -1,0 +1,1 @@
+#include "broken_plugin.h" /* valid: the control, it must load */

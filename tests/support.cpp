@@ -1,0 +1,113 @@
+#include "support.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace animator::test {
+
+fs::path bin_dir() { return ANIMATOR_BIN_DIR; }
+fs::path source_dir() { return ANIMATOR_SOURCE_DIR; }
+
+fs::path fresh_dir(const std::string &name) {
+    const fs::path dir = fs::path(ANIMATOR_TEST_TMP_DIR) / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+CommandResult run_animator(const std::string &args, const std::string &env) {
+    const std::string command =
+        (env.empty() ? "" : env + " ") + (bin_dir() / "animator").string() + " " + args + " 2>&1";
+    CommandResult result;
+    FILE *pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    char buf[4096];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) result.out.append(buf, n);
+    const int status = pclose(pipe);
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+std::string read_file(const fs::path &path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream out;
+    out << in.rdbuf();
+    return out.str();
+}
+
+void write_file(const fs::path &path, const std::string &text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+Document random_document(std::mt19937 &rng, int models, int keyframes) {
+    std::uniform_real_distribution<double> any(-1e3, 1e3), unit(0.0, 1.0), angle(0.0, 359.999),
+        positive(0.01, 100.0);
+    auto vec = [&] { return glm::dvec3(any(rng), any(rng), any(rng)); };
+    auto colour = [&] { return glm::dvec3(unit(rng), unit(rng), unit(rng)); };
+    auto state = [&] {
+        ModelState s;
+        s.center = vec();
+        s.angles = glm::dvec3(angle(rng), angle(rng), angle(rng));
+        s.scale = glm::dvec3(positive(rng), positive(rng), positive(rng));
+        s.turn = glm::dvec3(any(rng), 0.0, -any(rng));
+        return s;
+    };
+    auto camera = [&] {
+        CameraState c;
+        c.position = vec();
+        c.rotation = glm::normalize(glm::dquat(any(rng), any(rng), any(rng), any(rng)));
+        c.fov_degrees = 10.0 + 100.0 * unit(rng);
+        return c;
+    };
+
+    Document doc;
+    Settings s;
+    s.max_time_ms = 1000 + static_cast<std::int64_t>(unit(rng) * 1e6) + keyframes * 1000;
+    s.gravity = positive(rng);
+    s.down_axis = static_cast<Axis>(rng() % 3);
+    s.cel_shading = rng() % 2;
+    s.skybox = rng() % 2 ? "sunset" : "";
+    s.physics_backend = rng() % 2 ? "physics.custom" : "physics.bullet";
+    s.params["physics.bullet"]["step"] = {1.0 / 240.0, 0.0, 0.0, 0.0};
+    s.params["shading.cel"]["outline"] = {unit(rng), unit(rng), unit(rng), 1.0};
+    doc.set_settings(s);
+    for (int i = 0; i < models; ++i) {
+        Model m;
+        m.name = "model \"" + std::to_string(i) + "\" \\ é";
+        m.mesh = i % 2 ? "sphere" : "meshes/odd name.obj";
+        m.parent = i > 0 && rng() % 3 == 0 ? static_cast<int>(rng() % static_cast<unsigned>(i)) : -1;
+        m.material.kd = colour();
+        m.material.ks = colour();
+        m.material.shininess = positive(rng);
+        m.texture = rng() % 2 ? "checker" : "";
+        m.tint = unit(rng);
+        m.reflectivity = unit(rng);
+        m.transparency = unit(rng);
+        m.refractive_index = 1.0 + unit(rng);
+        m.dynamics = rng() % 2;
+        m.gravity = rng() % 2;
+        m.mass = positive(rng);
+        m.initial_velocity = vec();
+        m.collision_sound = rng() % 2 ? "click" : "";
+        m.moving_sound = rng() % 2 ? "hum" : "";
+        doc.add_model(m, state());
+    }
+    doc.set_camera(0, camera());
+    std::int64_t t = 0;
+    for (int k = 1; k < keyframes; ++k) {
+        t += 1 + static_cast<std::int64_t>(rng() % 1000);
+        Keyframe kf;
+        kf.time_ms = t;
+        kf.camera = camera();
+        for (int i = 0; i < models; ++i) kf.states.push_back(state());
+        doc.insert_keyframe(kf);
+    }
+    return doc;
+}
+
+} // namespace animator::test

@@ -1,0 +1,31 @@
+// Shared by the tests: where the build put things, temporary folders, and running the real
+// `animator` executable.
+#pragma once
+
+#include "document/document.hpp"
+
+#include <filesystem>
+#include <random>
+#include <string>
+
+namespace animator::test {
+
+std::filesystem::path bin_dir();
+std::filesystem::path source_dir();
+// A fresh, empty folder for one test, under the build tree.
+std::filesystem::path fresh_dir(const std::string &name);
+
+struct CommandResult {
+    int exit_code = -1;
+    std::string out; // stdout and stderr together
+};
+// Runs `animator ARGS` with the given environment prefix (e.g. "ANIMATOR_PLUGIN_PATH=x").
+CommandResult run_animator(const std::string &args, const std::string &env = "");
+
+std::string read_file(const std::filesystem::path &path);
+void write_file(const std::filesystem::path &path, const std::string &text);
+
+// A document of `models` models and `keyframes` keyframes with random but valid content.
+Document random_document(std::mt19937 &rng, int models, int keyframes);
+
+} // namespace animator::test

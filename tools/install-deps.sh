@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs the Debian packages animator needs, only those missing. Safe to run twice.
+# Uses sudo only when not root.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config python3
+  libbullet-dev libglfw3-dev python3-glad libimgui-dev libglm-dev libassimp-dev
+  libsfml-dev liblua5.4-dev libstb-dev catch2 libcli11-dev
+  libgl-dev xvfb xauth xdotool mesa-utils libgl1-mesa-dri
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+echo "animator: installing missing packages: ${missing[*]}" >&2
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  sudo="sudo"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

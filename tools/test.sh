@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Builds animator and runs every test: first a normal build, then the whole suite again under
+# AddressSanitizer + UndefinedBehaviorSanitizer. Installs missing Debian packages first.
+# Usage: tools/test.sh            (both builds)
+#        ANIMATOR_SKIP_SANITIZE=1 tools/test.sh   (normal build only, for a quick check)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./tools/install-deps.sh
+
+jobs=$(nproc)
+run_suite() {
+  local dir=$1; shift
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+  cmake --build "$dir" -j "$jobs"
+  # Tests that need a display get one from Xvfb (none do yet; the renderer's will).
+  ctest --test-dir "$dir" --output-on-failure -j "$jobs"
+}
+
+run_suite build
+if [ "${ANIMATOR_SKIP_SANITIZE:-0}" != "1" ]; then
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    run_suite build-asan -DANIMATOR_SANITIZE=ON
+fi
