@@ -33,26 +33,27 @@ EditHistory::Stack *EditHistory::latest(std::int64_t keyframe_ms,
     return best;
 }
 
-bool EditHistory::undo(Document &doc, std::int64_t current_keyframe_ms) {
-    Stack *stack = latest(current_keyframe_ms, &Stack::done);
+bool EditHistory::move_latest(Document &doc, std::int64_t keyframe_ms,
+                              std::vector<Entry> Stack::*from, std::vector<Entry> Stack::*to) {
+    Stack *stack = latest(keyframe_ms, from);
     if (!stack) return false;
-    Entry entry = std::move(stack->done.back());
-    entry.edit->revert(doc);
-    stack->done.pop_back();
+    Entry entry = std::move((stack->*from).back());
+    if (from == &Stack::done)
+        entry.edit->revert(doc);
+    else
+        entry.edit->apply(doc);
+    (stack->*from).pop_back();
     entry.order = ++clock_;
-    stack->undone.push_back(std::move(entry));
+    (stack->*to).push_back(std::move(entry));
     return true;
 }
 
+bool EditHistory::undo(Document &doc, std::int64_t current_keyframe_ms) {
+    return move_latest(doc, current_keyframe_ms, &Stack::done, &Stack::undone);
+}
+
 bool EditHistory::redo(Document &doc, std::int64_t current_keyframe_ms) {
-    Stack *stack = latest(current_keyframe_ms, &Stack::undone);
-    if (!stack) return false;
-    Entry entry = std::move(stack->undone.back());
-    entry.edit->apply(doc);
-    stack->undone.pop_back();
-    entry.order = ++clock_;
-    stack->done.push_back(std::move(entry));
-    return true;
+    return move_latest(doc, current_keyframe_ms, &Stack::undone, &Stack::done);
 }
 
 bool EditHistory::can_undo(std::int64_t current_keyframe_ms) const {

@@ -46,6 +46,9 @@ class EditHistory {
     const Stack *find_stack(std::optional<std::int64_t> keyframe_ms) const;
     // The stack (of the keyframe's and the document's) whose `list` top is latest, or null.
     Stack *latest(std::int64_t keyframe_ms, std::vector<Entry> Stack::*list);
+    // Undo (from done to undone: revert) or redo (from undone to done: apply) the latest entry.
+    bool move_latest(Document &doc, std::int64_t keyframe_ms, std::vector<Entry> Stack::*from,
+                     std::vector<Entry> Stack::*to);
 
     std::map<std::int64_t, Stack> keyframe_stacks_;
     Stack document_stack_;
