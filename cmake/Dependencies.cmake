@@ -14,7 +14,8 @@ pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui stb)
 find_package(glm REQUIRED)
 find_package(assimp REQUIRED)
 find_package(SFML 2.5 COMPONENTS audio system REQUIRED)
-pkg_check_modules(LUA REQUIRED IMPORTED_TARGET lua5.4)
+# Lua built as C++: its errors are exceptions, so C++ destructors run when a scene fails.
+pkg_check_modules(LUA REQUIRED IMPORTED_TARGET lua5.4-c++)
 find_package(Catch2 2 REQUIRED)
 find_package(CLI11 REQUIRED)
 

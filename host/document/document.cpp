@@ -39,7 +39,6 @@ double wrap_degrees(double degrees) {
 
 std::string check_model(const Model &m) {
     if (m.name.empty()) return "a model needs a name";
-    if (m.mesh.empty()) return concat("model '", m.name, "' needs a mesh");
     if (!in_unit(m.material.kd) || !in_unit(m.material.ks))
         return concat("model '", m.name, "': kd and ks must be colours in [0, 1]");
     if (!std::isfinite(m.material.shininess) || m.material.shininess < 0.0)

@@ -37,8 +37,8 @@ struct Material {
 // What the seed's Model Interface holds for one model.
 struct Model {
     std::string name;
-    std::string mesh;
-    int parent = -1; // index of the parent model in the scene tree, -1 under the root
+    std::string mesh; // "" for an empty: a node of the scene tree without geometry
+    int parent = -1;  // index of the parent model in the scene tree, -1 under the root
     Material material;
     std::string texture;
     double tint = 0.0;
@@ -55,7 +55,9 @@ struct Model {
     bool operator==(const Model &o) const;
 };
 
-// One model's state at one keyframe (the seed's NodeState).
+// One model's state at one keyframe (the seed's NodeState), in its parent's frame (the world
+// for a model under the root). Its transform is T(center) Rx(angles.x) Ry(angles.y)
+// Rz(angles.z) S(scale): rotations about the model's own axes, X first.
 struct ModelState {
     glm::dvec3 center{0.0};
     glm::dvec3 angles{0.0}; // degrees in [0, 360) about the model's own axes

@@ -12,7 +12,7 @@
 namespace {
 
 struct AniInstance {
-    std::map<const ani_document_view *, std::unique_ptr<ani_format::OwnedDocument>> read_documents;
+    std::map<const ani_document_view *, std::unique_ptr<ani::OwnedDocument>> read_documents;
 };
 
 void *ani_create(const ani_host *, ani_status *status) {
@@ -43,7 +43,7 @@ int32_t ani_probe(void *, const char *path, const unsigned char *head, size_t he
 ani_status_code ani_read(void *instance, const char *path, const ani_document_view **document,
                          ani_status *status) {
     return ani::guarded(status, [&] {
-        auto doc = std::make_unique<ani_format::OwnedDocument>();
+        auto doc = std::make_unique<ani::OwnedDocument>();
         std::string error;
         if (!ani_format::read_ani(path, *doc, error)) throw ani::Failure(ANI_ERR_PARSE, error);
         *document = &doc->view;

@@ -22,7 +22,7 @@ class Reader {
   public:
     Reader(const char *path, std::istream &in) : path_(path), in_(in) {}
 
-    void read(OwnedDocument &doc);
+    void read(ani::OwnedDocument &doc);
 
   private:
     [[noreturn]] void fail(const std::string &what) const { fail_at(line_, what); }
@@ -57,9 +57,9 @@ class Reader {
         if (!seen.insert(tokens_[0].text).second) fail("'" + tokens_[0].text + "' is given twice");
     }
 
-    void read_settings(OwnedDocument &doc);
-    void read_model(OwnedDocument &doc);
-    void read_keyframe(OwnedDocument &doc);
+    void read_settings(ani::OwnedDocument &doc);
+    void read_model(ani::OwnedDocument &doc);
+    void read_keyframe(ani::OwnedDocument &doc);
 
     const char *path_;
     std::istream &in_;
@@ -138,7 +138,7 @@ double Reader::positive(size_t i, const char *what) const {
     return v;
 }
 
-void Reader::read(OwnedDocument &doc) {
+void Reader::read(ani::OwnedDocument &doc) {
     if (!next_line()) fail_at(1, "the file is empty; expected 'animator-ani 1'");
     expect_word(0, kMagic);
     expect_count(2, "the format version");
@@ -149,15 +149,7 @@ void Reader::read(OwnedDocument &doc) {
              std::to_string(kVersion));
     if (version < 1) fail("expected a format version >= 1, got " + std::to_string(version));
 
-    // Defaults of the settings (docs/ani-format.md).
-    ani_settings_view &s = doc.view.settings;
-    s.struct_size = sizeof s;
-    s.max_time_ms = 60000;
-    s.gravity = 9.81;
-    s.down_axis = ANI_AXIS_Y;
-    s.cel_shading = 0;
-    s.skybox = doc.keep("");
-    s.physics_backend = doc.keep("physics.custom");
+    doc.default_settings(); // docs/ani-format.md
 
     bool seen_settings = false;
     while (next_line()) {
@@ -183,7 +175,7 @@ void Reader::read(OwnedDocument &doc) {
     doc.finish();
 }
 
-void Reader::read_settings(OwnedDocument &doc) {
+void Reader::read_settings(ani::OwnedDocument &doc) {
     ani_settings_view &s = doc.view.settings;
     std::set<std::string> seen;
     std::set<std::pair<std::string, std::string>> params_seen;
@@ -240,24 +232,15 @@ void Reader::read_settings(OwnedDocument &doc) {
     }
 }
 
-void Reader::read_model(OwnedDocument &doc) {
+void Reader::read_model(ani::OwnedDocument &doc) {
     expect_count(2, "a quoted model name");
     const std::string name = string(1, "the model name");
     if (name.empty()) fail("a model needs a non-empty name");
     if (model_index_.count(name)) fail("a model named \"" + name + "\" already exists");
     const int header_line = line_;
 
-    ani_model_desc m{};
-    m.struct_size = sizeof m;
-    m.name = doc.keep(name);
-    m.mesh = nullptr;
-    m.parent = -1;
-    m.kd = {0.7, 0.7, 0.7};
-    m.ks = {0.3, 0.3, 0.3};
-    m.shininess = 25.0;
-    m.texture = m.collision_sound = m.moving_sound = doc.keep("");
-    m.refractive_index = 1.0;
-    m.mass = 1.0;
+    ani_model_desc m = doc.default_model(name, "");
+    bool have_mesh = false;
 
     std::set<std::string> seen;
     while (true) {
@@ -270,9 +253,8 @@ void Reader::read_model(OwnedDocument &doc) {
         once(seen);
         if (key == "mesh") {
             expect_count(2, "a quoted mesh id");
-            const std::string mesh = string(1, "mesh");
-            if (mesh.empty()) fail("expected a mesh id, got \"\"");
-            m.mesh = doc.keep(mesh);
+            m.mesh = doc.keep(string(1, "mesh")); // "" makes an empty: a node without geometry
+            have_mesh = true;
         } else if (key == "parent") {
             expect_count(2, "the quoted name of an earlier model");
             const std::string parent = string(1, "parent");
@@ -329,12 +311,12 @@ void Reader::read_model(OwnedDocument &doc) {
                  "mass, velocity, collision_sound, moving_sound or end");
         }
     }
-    if (!m.mesh) fail_at(header_line, "model \"" + name + "\" has no 'mesh'");
+    if (!have_mesh) fail_at(header_line, "model \"" + name + "\" has no 'mesh'");
     model_index_[name] = static_cast<int>(doc.models.size());
     doc.models.push_back(m);
 }
 
-void Reader::read_keyframe(OwnedDocument &doc) {
+void Reader::read_keyframe(ani::OwnedDocument &doc) {
     expect_count(2, "a time in milliseconds");
     const std::int64_t t = integer(1, "the keyframe time");
     if (doc.keyframes.empty() && t != 0) fail("expected the first keyframe at 0 ms, got " + got(1));
@@ -415,7 +397,7 @@ void Reader::read_keyframe(OwnedDocument &doc) {
 
 } // namespace
 
-bool read_ani(const char *path, OwnedDocument &doc, std::string &error) {
+bool read_ani(const char *path, ani::OwnedDocument &doc, std::string &error) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         error = std::string(path) + ": cannot open the file: " + std::strerror(errno);

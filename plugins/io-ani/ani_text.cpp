@@ -76,15 +76,4 @@ std::string number(double x) {
     return buf;
 }
 
-void OwnedDocument::finish() {
-    for (size_t k = 0; k < keyframes.size(); ++k) keyframes[k].states = states[k].data();
-    view.struct_size = sizeof view;
-    view.models = models.data();
-    view.model_count = static_cast<uint32_t>(models.size());
-    view.keyframes = keyframes.data();
-    view.keyframe_count = static_cast<uint32_t>(keyframes.size());
-    view.params = params.data();
-    view.param_count = static_cast<uint32_t>(params.size());
-}
-
 } // namespace ani_format

@@ -1,10 +1,8 @@
-// The .ani format's text layer (docs/ani-format.md): lines of words and quoted strings, and the
-// owned storage that a read document view points into.
+// The .ani format's text layer (docs/ani-format.md): lines of words and quoted strings.
 #pragma once
 
-#include <animator/document.h>
+#include <animator/document_builder.hpp>
 
-#include <deque>
 #include <string>
 #include <vector>
 
@@ -26,25 +24,8 @@ std::string quote(const std::string &s);
 // Shortest text of a double that reads back as the same double.
 std::string number(double x);
 
-// Everything a read document view points into.
-struct OwnedDocument {
-    std::deque<std::string> strings;
-    std::vector<ani_model_desc> models;
-    std::vector<std::vector<ani_model_state>> states; // per keyframe
-    std::vector<ani_keyframe_view> keyframes;
-    std::vector<ani_param_setting> params;
-    ani_document_view view{};
-
-    const char *keep(const std::string &s) {
-        strings.push_back(s);
-        return strings.back().c_str();
-    }
-    // Points the view at the vectors; call once they are complete.
-    void finish();
-};
-
 // Reads `path`; on failure returns false with "path:line: what was expected" in `error`.
-bool read_ani(const char *path, OwnedDocument &doc, std::string &error);
+bool read_ani(const char *path, ani::OwnedDocument &doc, std::string &error);
 // Writes atomically; on failure returns false with the reason, and any old file is intact.
 bool write_ani(const char *path, const ani_document_view &doc, std::string &error);
 

@@ -30,7 +30,7 @@ typedef enum ani_axis { ANI_AXIS_X = 0, ANI_AXIS_Y = 1, ANI_AXIS_Z = 2 } ani_axi
 typedef struct ani_model_desc {
     uint32_t struct_size;
     const char *name;   /* unique in the document */
-    const char *mesh;   /* mesh id or path */
+    const char *mesh;   /* mesh id or path; "" for an empty (a scene-tree node, no geometry) */
     int32_t parent;     /* index of the parent model in the scene tree, -1 for the root */
     ani_vec3 kd;        /* diffuse colour */
     ani_vec3 ks;        /* specular colour */
@@ -48,7 +48,8 @@ typedef struct ani_model_desc {
     const char *moving_sound;
 } ani_model_desc;
 
-/* One model's state at one keyframe (the seed's NodeState). */
+/* One model's state at one keyframe (the seed's NodeState), in its parent's frame (the world for
+ * a model under the root): T(center) Rx(angles.x) Ry(angles.y) Rz(angles.z) S(scale). */
 typedef struct ani_model_state {
     ani_vec3 center; /* world position of the model's origin */
     ani_vec3 angles; /* degrees in [0, 360) about the model's own X, Y, Z axes */

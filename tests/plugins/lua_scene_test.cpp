@@ -1,0 +1,236 @@
+// The Lua scene plugin through the host's document I/O: the CS488 API and its extensions, the
+// meaning of transforms (against a direct matrix product), the sandbox, and error messages.
+#include "io/document_io.hpp"
+
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtx/euler_angles.hpp>
+
+#include <random>
+
+using namespace animator;
+namespace fs = std::filesystem;
+
+namespace {
+
+PluginRegistry &registry() {
+    static PluginRegistry r({test::bin_dir()}, [](ani_log_level, const std::string &, const std::string &) {});
+    return r;
+}
+
+Document load(const std::string &name, const std::string &lua) {
+    const fs::path path = test::fresh_dir("lua_" + name) / (name + ".lua");
+    test::write_file(path, lua);
+    return open_document(registry(), path).document;
+}
+
+std::string load_error_at(const fs::path &path) {
+    try {
+        open_document(registry(), path);
+    } catch (const DocumentIoError &e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+std::string load_error(const std::string &name, const std::string &lua) {
+    const fs::path path = test::fresh_dir("lua_" + name) / (name + ".lua");
+    test::write_file(path, lua);
+    return load_error_at(path);
+}
+
+// The model matrix the document model promises: T(center) Rx Ry Rz S(scale).
+glm::dmat4 matrix_of(const ModelState &s) {
+    return glm::translate(glm::dmat4(1.0), s.center) *
+           glm::eulerAngleXYZ(glm::radians(s.angles.x), glm::radians(s.angles.y), glm::radians(s.angles.z)) *
+           glm::scale(glm::dmat4(1.0), s.scale);
+}
+
+} // namespace
+
+TEST_CASE("the seed-style simple scene loads with its six models, materials, physics and camera") {
+    const Document doc = open_document(registry(), test::source_dir() / "assets/scenes/simple.lua").document;
+    REQUIRE(doc.models().size() == 6);
+    const int ball = doc.find_model("ball");
+    REQUIRE(ball >= 0);
+    const Model &b = doc.models()[static_cast<size_t>(ball)];
+    CHECK(b.mesh == "sphere");
+    CHECK(b.dynamics);
+    CHECK(b.gravity);
+    CHECK(b.collision_sound == "click");
+    CHECK(b.material.kd == glm::dvec3(0.9, 0.2, 0.2));
+    CHECK(doc.keyframe_at(0).states[static_cast<size_t>(ball)].center == glm::dvec3(-4, 3, 0));
+    const Model &torus = doc.models()[static_cast<size_t>(doc.find_model("torus"))];
+    CHECK(torus.transparency == 0.6);
+    CHECK(torus.refractive_index == 1.33);
+    CHECK(doc.settings().max_time_ms == 20000);
+    CHECK(doc.settings().skybox == "day");
+
+    // The camera at eye looks at look_at: its -Z axis points there, its +Y is up-ish.
+    const CameraState &cam = doc.keyframe_at(0).camera;
+    CHECK(cam.position == glm::dvec3(0, 4, 14));
+    const glm::dvec3 forward = cam.rotation * glm::dvec3(0, 0, -1);
+    const glm::dvec3 expected = glm::normalize(glm::dvec3(0, 1, 0) - glm::dvec3(0, 4, 14));
+    CHECK(glm::length(forward - expected) < 1e-12);
+    CHECK((cam.rotation * glm::dvec3(0, 1, 0)).y > 0.9);
+    CHECK(cam.fov_degrees == 50.0);
+}
+
+TEST_CASE("a node's transform calls give the same matrix as the CS488 product") {
+    std::mt19937 rng(99);
+    std::uniform_real_distribution<double> any(-10.0, 10.0), angle(-720.0, 720.0), factor(0.2, 3.0);
+    for (int round = 0; round < 50; ++round) {
+        std::string lua = "local root = gr.node('root')\nlocal m = gr.mesh('sphere', 'm')\n";
+        glm::dmat4 expected(1.0);
+        const char *axes[] = {"x", "y", "z"};
+        for (int call = 0; call < 6; ++call) {
+            const int what = static_cast<int>(rng() % 3);
+            char line[200];
+            if (what == 0) {
+                const glm::dvec3 v(any(rng), any(rng), any(rng));
+                std::snprintf(line, sizeof line, "m:translate(%.17g, %.17g, %.17g)\n", v.x, v.y, v.z);
+                expected = glm::translate(glm::dmat4(1.0), v) * expected;
+            } else if (what == 1) {
+                const int a = static_cast<int>(rng() % 3);
+                const double deg = angle(rng);
+                std::snprintf(line, sizeof line, "m:rotate('%s', %.17g)\n", axes[a], deg);
+                glm::dvec3 axis(0.0);
+                axis[a] = 1.0;
+                expected = glm::rotate(glm::dmat4(1.0), glm::radians(deg), axis) * expected;
+            } else {
+                const double s = factor(rng); // uniform, so no shear arises
+                std::snprintf(line, sizeof line, "m:scale(%.17g, %.17g, %.17g)\n", s, s, s);
+                expected = glm::scale(glm::dmat4(1.0), glm::dvec3(s)) * expected;
+            }
+            lua += line;
+        }
+        lua += "root:add_child(m)\nreturn root\n";
+        const Document doc = load("transform", lua);
+        const ModelState &s = doc.keyframe_at(0).states[0];
+        const glm::dmat4 got = matrix_of(s);
+        CAPTURE(lua);
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 3; ++r) CHECK(got[c][r] == Approx(expected[c][r]).margin(1e-9));
+        for (int i = 0; i < 3; ++i) {
+            CHECK(s.angles[i] >= 0.0);
+            CHECK(s.angles[i] < 360.0);
+        }
+    }
+}
+
+TEST_CASE("children keep their parent, states are local to it, and a bare root is folded away") {
+    const Document doc = load("tree", R"(
+        local root = gr.node('root')
+        root:translate(0, 10, 0)
+        local arm = gr.joint('arm', {-90, 45, 90}, {0, 0, 0})
+        local upper = gr.mesh('cylinder', 'upper')
+        upper:translate(0, 1, 0)
+        local hand = gr.mesh('sphere', 'hand')
+        hand:translate(0, 2, 0)
+        root:add_child(arm)
+        arm:add_child(upper)
+        upper:add_child(hand)
+        return root)");
+    REQUIRE(doc.models().size() == 3);
+    CHECK(doc.models()[0].name == "arm");
+    CHECK(doc.models()[0].mesh.empty()); // a joint is an empty
+    CHECK(doc.models()[0].parent == -1);
+    CHECK(doc.models()[1].parent == 0);
+    CHECK(doc.models()[2].parent == 1);
+    const auto &states = doc.keyframe_at(0).states;
+    CHECK(states[0].center == glm::dvec3(0, 10, 0)); // the root's translation moved into arm
+    CHECK(states[0].angles.x == Approx(45.0));
+    CHECK(states[1].center == glm::dvec3(0, 1, 0));
+    CHECK(states[2].center == glm::dvec3(0, 2, 0));
+}
+
+TEST_CASE("a scene cannot escape its sandbox") {
+    struct Escape {
+        const char *name;
+        const char *lua;
+        const char *expected;
+    };
+    const std::vector<Escape> escapes = {
+        {"os_execute", "os.execute('touch /tmp/animator-escaped')", "global 'os'"},
+        {"io_open", "io.open('/etc/passwd')", "global 'io'"},
+        {"require", "require('os')", "global 'require'"},
+        {"dofile", "dofile('/etc/passwd')", "global 'dofile'"},
+        {"loadfile", "loadfile('/etc/passwd')", "global 'loadfile'"},
+        {"package", "package.loadlib('libc.so.6', 'system')", "global 'package'"},
+        {"debug", "debug.sethook()", "global 'debug'"},
+        {"string_dump", "string.dump(function() end)", "field 'dump'"},
+        {"load_bytecode", "assert(load('\\27Lua\\84\\0'))", "binary chunk"},
+        {"collectgarbage", "collectgarbage('stop')", "global 'collectgarbage'"},
+        {"endless_loop", "while true do end", "budget of 200000000 instructions"},
+        {"memory_bomb", "local t = {} for i = 1, 1e9 do t[i] = string.rep('x', 1 << 20) .. i end",
+         "memory budget of 256 MiB"},
+    };
+    for (const Escape &e : escapes) {
+        CAPTURE(e.name);
+        const std::string error = load_error(e.name, std::string("\n") + e.lua + "\nreturn gr.node('r')\n");
+        CHECK_THAT(error, Catch::Contains(e.expected));
+        CHECK_THAT(error, Catch::Contains(std::string(e.name) + ".lua"));
+    }
+    CHECK_FALSE(fs::exists("/tmp/animator-escaped"));
+}
+
+TEST_CASE("a Lua bytecode file is refused with a clear message") {
+    const fs::path path = test::fresh_dir("lua_bytecode") / "scene.lua";
+    test::write_file(path, std::string("\x1bLua\x54\x00\x19\x93\r\n\x1a\n", 12));
+    CHECK_THROWS_WITH(open_document(registry(), path), Catch::Contains("is Lua bytecode"));
+}
+
+TEST_CASE("scene errors name the file and the line") {
+    struct Bad {
+        const char *name;
+        const char *lua;
+        const char *expected;
+    };
+    const std::vector<Bad> bad = {
+        {"syntax", "local root = gr.node('root'\nreturn root\n", "syntax.lua:2:"},
+        {"arg_type", "local r = gr.node('r')\nr:translate('up', 0, 0)\nreturn r\n",
+         "arg_type.lua:2: bad argument #1 to 'translate' (number expected, got string)"},
+        {"duplicate", "local r = gr.node('r')\nlocal a = gr.mesh('sphere', 'a')\nlocal b = gr.mesh('cube', 'a')\nreturn r\n",
+         "duplicate.lua:3: a node named 'a' already exists (made on line 2)"},
+        {"unknown_key", "local r = gr.node('r')\nr:set_physics{dynamic = true}\nreturn r\n",
+         "unknown_key.lua:2: unknown key 'dynamic' in set_physics; expected dynamics, gravity, mass, velocity"},
+        {"bad_mass", "local r = gr.node('r')\nr:set_physics{mass = -2}\nreturn r\n", "bad_mass.lua:2:"},
+        {"bad_axis", "local r = gr.node('r')\nr:rotate('w', 10)\nreturn r\n", "bad_axis.lua:2: rotate's axis must be"},
+        {"no_return", "local r = gr.node('r')\n", "the scene must return its root node"},
+        {"cycle", "local a = gr.node('a')\nlocal b = gr.node('b')\na:add_child(b)\nb:add_child(a)\nreturn a\n",
+         "cycle.lua:4: adding 'a' under 'b' would make a cycle"},
+        {"two_parents", "local a = gr.node('a')\nlocal b = gr.node('b')\nlocal c = gr.node('c')\na:add_child(c)\nb:add_child(c)\nreturn a\n",
+         "two_parents.lua:5: node 'c' is already a child of 'a'"},
+        {"settings_down", "gr.settings{down = 'w'}\nreturn gr.node('r')\n", "settings_down.lua:1: 'down' must be"},
+        {"max_time", "gr.settings{max_time = 0.5}\nreturn gr.node('r')\n", "max_time.lua:1: 'max_time' must be in"},
+        {"camera_same", "gr.camera{eye = {1, 1, 1}, look_at = {1, 1, 1}}\nreturn gr.node('r')\n",
+         "camera_same.lua:1: the camera's look_at must differ"},
+        {"material", "local m = gr.material({2, 0, 0}, {0, 0, 0}, 10)\nreturn gr.node('r')\n",
+         "material.lua:1: material colours must be in [0, 1]"},
+        {"runtime", "local r = gr.node('r')\nlocal x = nil\nx.y = 1\nreturn r\n", "runtime.lua:3: attempt to index"},
+    };
+    for (const Bad &b : bad) {
+        CAPTURE(b.name);
+        CHECK_THAT(load_error(b.name, b.lua), Catch::Contains(b.expected));
+    }
+}
+
+TEST_CASE("animator info on a bad scene exits 1 with the file and line") {
+    const fs::path path = test::fresh_dir("lua_cli") / "broken.lua";
+    test::write_file(path, "local r = gr.node('r')\nr:scale(0, 1, 1)\nreturn r\n");
+    const auto r = test::run_animator("info " + path.string());
+    CHECK(r.exit_code == 1);
+    CHECK_THAT(r.out, Catch::Contains("broken.lua:2: scale factors must be > 0"));
+}
+
+TEST_CASE("errors carry the whole path of a scene, however long") {
+    const fs::path dir = test::fresh_dir("lua_long") / std::string(120, 'd');
+    fs::create_directories(dir);
+    const fs::path path = dir / "deep.lua";
+    test::write_file(path, "local r = gr.node('r')\nr:rotate('q', 1)\nreturn r\n");
+    CHECK_THAT(load_error_at(path), Catch::StartsWith(path.string() + ":2: rotate's axis"));
+    test::write_file(path, "\n\nwhile true do end\n");
+    CHECK_THAT(load_error_at(path), Catch::StartsWith(path.string() + ":3: the scene ran past"));
+}
