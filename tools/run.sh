@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ./tools/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build build -j "$(nproc)" --target animator animator-io-ani
+cmake --build build -j "$(nproc)"   # the program and every plugin (and the tests)
 if [ $# -eq 0 ]; then
   set -- info assets/animations/drop.ani
 fi
