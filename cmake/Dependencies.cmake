@@ -11,6 +11,7 @@ find_package(glfw3 3.3 REQUIRED)
 find_package(OpenGL REQUIRED)
 # Dear ImGui (static, with the GLFW and OpenGL3 backends) and stb.
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui stb)
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 find_package(glm REQUIRED)
 find_package(assimp REQUIRED)
 find_package(SFML 2.5 COMPONENTS audio system REQUIRED)

@@ -101,10 +101,12 @@ Document random_document(std::mt19937 &rng, int models, int keyframes) {
     std::int64_t t = 0;
     for (int k = 1; k < keyframes; ++k) {
         t += 1 + static_cast<std::int64_t>(rng() % 1000);
+        // Later keyframes key a random part of the models and sometimes the camera.
         Keyframe kf;
         kf.time_ms = t;
-        kf.camera = camera();
-        for (int i = 0; i < models; ++i) kf.states.push_back(state());
+        if (rng() % 2) kf.camera = camera();
+        for (int i = 0; i < models; ++i)
+            kf.states.push_back(rng() % 3 ? std::optional<ModelState>(state()) : std::nullopt);
         doc.insert_keyframe(kf);
     }
     return doc;

@@ -1,7 +1,11 @@
 // `animator info FILE`: a document's settings, models and keyframes, as text.
 #include "cli/commands.hpp"
 
+#include "assets/mesh.hpp"
 #include "io/document_io.hpp"
+#include "io/environment.hpp"
+
+#include <map>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -20,7 +24,32 @@ std::string vec(const glm::dvec3 &v) {
 
 const char *on_off(bool b) { return b ? "on" : "off"; }
 
-void print_document(std::ostream &out, const Document &doc) {
+// A mesh line: where the mesh was found, its size and the seed's bounding sphere.
+std::string describe_mesh(const AssetPaths &assets, const std::string &id, const std::string &document,
+                          std::map<std::string, std::string> &cache) {
+    if (id.empty()) return "(none: an empty)";
+    auto it = cache.find(id);
+    if (it != cache.end()) return it->second;
+    std::ostringstream out;
+    out << id;
+    if (auto path = assets.resolve(ANI_ASSET_MESH, id, document)) {
+        try {
+            const LoadedMesh loaded = load_mesh(*path);
+            for (const std::string &w : loaded.warnings) std::cerr << "animator: warning: " << w << "\n";
+            out << " (" << path->string() << ": " << loaded.mesh.triangle_count()
+                << " triangles, bounding sphere " << vec(loaded.mesh.bound_center) << " r "
+                << loaded.mesh.bound_radius << ")";
+        } catch (const AssetError &e) {
+            out << " (" << e.what() << ")";
+        }
+    } else {
+        out << " (not found: " << assets.searched(ANI_ASSET_MESH, id, document) << ")";
+    }
+    return cache[id] = out.str();
+}
+
+void print_document(std::ostream &out, const Document &doc, const AssetPaths &assets, const std::string &file) {
+    std::map<std::string, std::string> meshes;
     const Settings &s = doc.settings();
     const char *axes = "xyz";
     out << "settings:\n"
@@ -36,7 +65,7 @@ void print_document(std::ostream &out, const Document &doc) {
 
     out << "models (" << doc.models().size() << "):\n";
     for (const Model &m : doc.models()) {
-        out << "  " << m.name << ": mesh " << m.mesh << ", parent "
+        out << "  " << m.name << ": mesh " << describe_mesh(assets, m.mesh, file, meshes) << ", parent "
             << (m.parent < 0 ? std::string("(root)") : doc.models()[static_cast<size_t>(m.parent)].name)
             << "\n    physics: dynamics " << on_off(m.dynamics) << ", gravity " << on_off(m.gravity)
             << ", mass " << m.mass << ", velocity " << vec(m.initial_velocity)
@@ -51,11 +80,16 @@ void print_document(std::ostream &out, const Document &doc) {
 
     out << "keyframes (" << doc.keyframes().size() << "):\n";
     for (const Keyframe &k : doc.keyframes()) {
-        const glm::dvec3 euler = glm::degrees(glm::eulerAngles(k.camera.rotation));
-        out << "  t = " << k.time_ms << " ms: camera at " << vec(k.camera.position)
-            << ", rotation (deg) " << vec(euler) << ", fov " << k.camera.fov_degrees << "\n";
+        out << "  t = " << k.time_ms << " ms:";
+        if (k.camera) {
+            const glm::dvec3 euler = glm::degrees(glm::eulerAngles(k.camera->rotation));
+            out << " camera at " << vec(k.camera->position) << ", rotation (deg) " << vec(euler)
+                << ", fov " << k.camera->fov_degrees;
+        }
+        out << "\n";
         for (size_t i = 0; i < k.states.size(); ++i) {
-            const ModelState &st = k.states[i];
+            if (!k.states[i]) continue; // not keyed here
+            const ModelState &st = *k.states[i];
             out << "    " << doc.models()[i].name << ": center " << vec(st.center) << ", angles "
                 << vec(st.angles) << ", scale " << vec(st.scale) << "\n";
         }
@@ -70,11 +104,11 @@ void add_info_command(CLI::App &app, std::function<int()> &run) {
     cmd->add_option("FILE", *file, "an animation (.ani) or scene file")->required();
     cmd->callback([&run, file] {
         run = [file] {
-            PluginRegistry registry(PluginRegistry::default_search_dirs());
+            Environment env;
             try {
-                OpenedDocument opened = open_document(registry, *file);
+                OpenedDocument opened = open_document(env.plugins, *file);
                 std::cout << "file: " << *file << " (read by " << opened.format_id << ")\n";
-                print_document(std::cout, opened.document);
+                print_document(std::cout, opened.document, env.assets, *file);
                 return static_cast<int>(kSuccess);
             } catch (const DocumentIoError &e) {
                 std::cerr << "animator: " << e.what() << "\n";

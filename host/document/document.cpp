@@ -91,7 +91,11 @@ std::string check_settings(const Settings &s) {
     return "";
 }
 
-Document::Document() { keyframes_.push_back(Keyframe{}); }
+Document::Document() {
+    Keyframe initial;
+    initial.camera = CameraState{};
+    keyframes_.push_back(initial);
+}
 
 int Document::find_model(const std::string &name) const {
     for (size_t i = 0; i < models_.size(); ++i)
@@ -126,7 +130,7 @@ void Document::add_model(const Model &model, const ModelState &state) {
         throw DocumentError(concat("model '", model.name, "': parent ", model.parent,
                                    " is not an earlier model"));
     models_.push_back(model);
-    for (auto &k : keyframes_) k.states.push_back(state);
+    for (auto &k : keyframes_) k.states.push_back(k.time_ms == 0 ? std::optional<ModelState>(state) : std::nullopt);
 }
 
 void Document::remove_last_model() {
@@ -158,12 +162,21 @@ void Document::insert_keyframe(const Keyframe &keyframe) {
         throw DocumentError(concat("keyframe at ", keyframe.time_ms, " ms has ",
                                    keyframe.states.size(), " model states for ", models_.size(),
                                    " models"));
-    for (size_t i = 0; i < keyframe.states.size(); ++i)
-        if (auto problem = check_state(keyframe.states[i]); !problem.empty())
+    for (size_t i = 0; i < keyframe.states.size(); ++i) {
+        if (!keyframe.states[i]) {
+            if (keyframe.time_ms == 0)
+                throw DocumentError(concat("the keyframe at t = 0 must key model '", models_[i].name, "'"));
+            continue;
+        }
+        if (auto problem = check_state(*keyframe.states[i]); !problem.empty())
             throw DocumentError(concat("keyframe at ", keyframe.time_ms, " ms, model '",
                                        models_[i].name, "': ", problem));
-    if (auto problem = check_camera(keyframe.camera); !problem.empty())
-        throw DocumentError(concat("keyframe at ", keyframe.time_ms, " ms: ", problem));
+    }
+    if (!keyframe.camera && keyframe.time_ms == 0)
+        throw DocumentError("the keyframe at t = 0 must key the camera");
+    if (keyframe.camera)
+        if (auto problem = check_camera(*keyframe.camera); !problem.empty())
+            throw DocumentError(concat("keyframe at ", keyframe.time_ms, " ms: ", problem));
     auto at = std::upper_bound(keyframes_.begin(), keyframes_.end(), keyframe.time_ms,
                                [](std::int64_t t, const Keyframe &k) { return t < k.time_ms; });
     keyframes_.insert(at, keyframe);
@@ -178,17 +191,31 @@ Keyframe Document::delete_keyframe(std::int64_t time_ms) {
     return removed;
 }
 
-void Document::set_state(std::int64_t keyframe_ms, int model, const ModelState &state) {
+void Document::set_state(std::int64_t keyframe_ms, int model, const std::optional<ModelState> &state) {
     if (model < 0 || model >= static_cast<int>(models_.size()))
         throw DocumentError(concat("no model ", model));
-    if (auto problem = check_state(state); !problem.empty())
-        throw DocumentError(concat("model '", models_[static_cast<size_t>(model)].name, "': ", problem));
+    const std::string &name = models_[static_cast<size_t>(model)].name;
+    if (!state && keyframe_ms == 0)
+        throw DocumentError(concat("model '", name, "' cannot be unkeyed at t = 0"));
+    if (state)
+        if (auto problem = check_state(*state); !problem.empty())
+            throw DocumentError(concat("model '", name, "': ", problem));
     mutable_keyframe(keyframe_ms).states[static_cast<size_t>(model)] = state;
 }
 
-void Document::set_camera(std::int64_t keyframe_ms, const CameraState &camera) {
-    if (auto problem = check_camera(camera); !problem.empty()) throw DocumentError(problem);
+void Document::set_camera(std::int64_t keyframe_ms, const std::optional<CameraState> &camera) {
+    if (!camera && keyframe_ms == 0) throw DocumentError("the camera cannot be unkeyed at t = 0");
+    if (camera)
+        if (auto problem = check_camera(*camera); !problem.empty()) throw DocumentError(problem);
     mutable_keyframe(keyframe_ms).camera = camera;
+}
+
+std::vector<const Keyframe *> Document::keys_of(int model) const {
+    std::vector<const Keyframe *> out;
+    for (const Keyframe &k : keyframes_)
+        if (model < 0 ? k.camera.has_value() : k.states[static_cast<size_t>(model)].has_value())
+            out.push_back(&k);
+    return out;
 }
 
 std::vector<Keyframe> Document::set_settings(const Settings &settings) {

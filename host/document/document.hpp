@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -78,10 +79,14 @@ struct CameraState {
     }
 };
 
+// A keyframe keys some models and perhaps the camera, as in Blender or Maya: a model's motion
+// is interpolated between its own keys, and it is free after its own last key (seed, "Motion
+// after the Final Keyframe"). The keyframe at t = 0 keys every model and the camera: it is the
+// initial placement.
 struct Keyframe {
     std::int64_t time_ms = 0;
-    std::vector<ModelState> states; // one per model, in model order
-    CameraState camera;
+    std::vector<std::optional<ModelState>> states; // one slot per model, in model order
+    std::optional<CameraState> camera;
     bool operator==(const Keyframe &o) const {
         return time_ms == o.time_ms && states == o.states && camera == o.camera;
     }
@@ -135,21 +140,26 @@ class Document {
     int find_keyframe(std::int64_t time_ms) const;
     const Keyframe &keyframe_at(std::int64_t time_ms) const;
 
-    // Adds a model at the end, with `state` at every keyframe. Throws DocumentError for a
-    // duplicate or empty name, a bad parent, or invalid properties.
+    // Adds a model at the end, keyed with `state` at t = 0 (and not keyed at later keyframes).
+    // Throws DocumentError for a duplicate or empty name, a bad parent, or invalid properties.
     void add_model(const Model &model, const ModelState &state);
     // Removes the last model (the undo of add_model).
     void remove_last_model();
     void set_model(int index, const Model &model);
 
-    // Inserts a keyframe in time order; its states must cover every model. Throws for a time
-    // that is taken, negative or past max time.
+    // Inserts a keyframe in time order, with a slot per model. Throws for a time that is taken,
+    // negative or past max time, or for a t = 0 keyframe that does not key everything.
     void insert_keyframe(const Keyframe &keyframe);
     // Deletes the keyframe at time_ms and returns it. The t = 0 keyframe cannot be deleted.
     Keyframe delete_keyframe(std::int64_t time_ms);
 
-    void set_state(std::int64_t keyframe_ms, int model, const ModelState &state);
-    void set_camera(std::int64_t keyframe_ms, const CameraState &camera);
+    // Keys (or, with nullopt, unkeys) a model or the camera at a keyframe. At t = 0 everything
+    // stays keyed.
+    void set_state(std::int64_t keyframe_ms, int model, const std::optional<ModelState> &state);
+    void set_camera(std::int64_t keyframe_ms, const std::optional<CameraState> &camera);
+
+    // The keyframes that key model `model` (or, with -1, the camera), in time order.
+    std::vector<const Keyframe *> keys_of(int model) const;
 
     // Replaces the settings. A shorter max time deletes the keyframes past it, which are
     // returned (the caller keeps them to undo).

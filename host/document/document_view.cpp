@@ -60,8 +60,13 @@ DocumentView::DocumentView(const Document &doc) {
     }
     for (const Keyframe &k : doc.keyframes()) {
         std::vector<ani_model_state> states;
-        for (const ModelState &s : k.states) states.push_back(to_ani(s));
+        std::vector<int32_t> keyed;
+        for (const auto &s : k.states) {
+            states.push_back(to_ani(s.value_or(ModelState{})));
+            keyed.push_back(s ? 1 : 0);
+        }
         states_.push_back(std::move(states));
+        keyed_.push_back(std::move(keyed));
     }
     for (size_t i = 0; i < doc.keyframes().size(); ++i) {
         const Keyframe &k = doc.keyframes()[i];
@@ -69,7 +74,9 @@ DocumentView::DocumentView(const Document &doc) {
         kv.struct_size = sizeof kv;
         kv.time_ms = k.time_ms;
         kv.states = states_[i].data();
-        kv.camera = to_ani(k.camera);
+        kv.keyed = keyed_[i].data();
+        kv.camera = to_ani(k.camera.value_or(CameraState{}));
+        kv.camera_keyed = k.camera ? 1 : 0;
         keyframes_.push_back(kv);
     }
     const Settings &s = doc.settings();
@@ -144,7 +151,8 @@ Document document_from_view(const ani_document_view &view) {
 
     const ani_keyframe_view &first = view.keyframes[0];
     for (uint32_t m = 0; m < view.model_count; ++m)
-        doc.set_state(0, static_cast<int>(m), from_ani(first.states[m]));
+        if (!first.keyed[m]) throw DocumentError("the keyframe at t = 0 must key model '" + doc.models()[m].name + "'");
+    if (!first.camera_keyed) throw DocumentError("the keyframe at t = 0 must key the camera");
     doc.set_camera(0, from_ani(first.camera));
     for (uint32_t k = 1; k < view.keyframe_count; ++k) {
         const ani_keyframe_view &kv = view.keyframes[k];
@@ -154,8 +162,9 @@ Document document_from_view(const ani_document_view &view) {
                                 " ms");
         Keyframe keyframe;
         keyframe.time_ms = kv.time_ms;
-        keyframe.camera = from_ani(kv.camera);
-        for (uint32_t m = 0; m < view.model_count; ++m) keyframe.states.push_back(from_ani(kv.states[m]));
+        if (kv.camera_keyed) keyframe.camera = from_ani(kv.camera);
+        for (uint32_t m = 0; m < view.model_count; ++m)
+            keyframe.states.push_back(kv.keyed[m] ? std::optional<ModelState>(from_ani(kv.states[m])) : std::nullopt);
         doc.insert_keyframe(keyframe);
     }
     return doc;

@@ -23,6 +23,7 @@ class DocumentView {
   private:
     std::vector<ani_model_desc> models_;
     std::vector<std::vector<ani_model_state>> states_;
+    std::vector<std::vector<int32_t>> keyed_;
     std::vector<ani_keyframe_view> keyframes_;
     std::vector<ani_param_setting> params_;
     ani_document_view view_{};

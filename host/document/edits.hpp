@@ -27,7 +27,8 @@ class Edit {
 
 class SetStateEdit final : public Edit {
   public:
-    SetStateEdit(std::int64_t keyframe_ms, int model, const ModelState &state)
+    // With nullopt: unkeys the model at that keyframe.
+    SetStateEdit(std::int64_t keyframe_ms, int model, std::optional<ModelState> state)
         : keyframe_ms_(keyframe_ms), model_(model), after_(state) {}
     void apply(Document &doc) override;
     void revert(Document &doc) override;
@@ -37,12 +38,12 @@ class SetStateEdit final : public Edit {
   private:
     std::int64_t keyframe_ms_;
     int model_;
-    ModelState before_, after_;
+    std::optional<ModelState> before_, after_;
 };
 
 class SetCameraEdit final : public Edit {
   public:
-    SetCameraEdit(std::int64_t keyframe_ms, const CameraState &camera)
+    SetCameraEdit(std::int64_t keyframe_ms, std::optional<CameraState> camera)
         : keyframe_ms_(keyframe_ms), after_(camera) {}
     void apply(Document &doc) override;
     void revert(Document &doc) override;
@@ -51,7 +52,7 @@ class SetCameraEdit final : public Edit {
 
   private:
     std::int64_t keyframe_ms_;
-    CameraState before_, after_;
+    std::optional<CameraState> before_, after_;
 };
 
 class AddKeyframeEdit final : public Edit {

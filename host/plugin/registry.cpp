@@ -97,8 +97,11 @@ void PluginRegistry::host_log(const ani_host *host, ani_log_level level, const c
     self->log_(level, plugin_id ? plugin_id : "?", message ? message : "");
 }
 
-const void *PluginRegistry::host_get_extension(const ani_host *, const char *) {
-    return nullptr; // no optional host features yet
+const void *PluginRegistry::host_get_extension(const ani_host *host, const char *extension_id) {
+    if (!host || !host->host_data || !extension_id) return nullptr;
+    const auto *self = static_cast<const PluginRegistry *>(host->host_data);
+    auto it = self->extensions_.find(extension_id);
+    return it == self->extensions_.end() ? nullptr : it->second;
 }
 
 std::vector<fs::path> PluginRegistry::default_search_dirs() {

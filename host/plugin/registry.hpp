@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -62,6 +63,9 @@ class PluginRegistry {
     std::vector<std::filesystem::path> libraries_opened() const;
 
     const ani_host *host() const { return &host_; }
+    // Offers plugins an optional host feature (host->get_extension(host, id)); `extension` must
+    // outlive the registry's use.
+    void provide_extension(const std::string &id, const void *extension) { extensions_[id] = extension; }
 
   private:
     struct Library;
@@ -75,6 +79,7 @@ class PluginRegistry {
     std::vector<std::unique_ptr<Library>> libraries_;
     std::vector<std::unique_ptr<PluginInfo>> plugins_;
     std::vector<LibraryRefusal> refusals_;
+    std::map<std::string, const void *> extensions_;
     LogSink log_;
     std::mutex log_mutex_;
     ani_host host_{};

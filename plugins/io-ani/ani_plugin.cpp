@@ -12,12 +12,16 @@
 namespace {
 
 struct AniInstance {
+    const ani_host *host = nullptr;
     std::map<const ani_document_view *, std::unique_ptr<ani::OwnedDocument>> read_documents;
 };
 
-void *ani_create(const ani_host *, ani_status *status) {
+void *ani_create(const ani_host *host, ani_status *status) {
     AniInstance *self = nullptr;
-    ani::guarded(status, [&] { self = new AniInstance(); });
+    ani::guarded(status, [&] {
+        self = new AniInstance();
+        self->host = host;
+    });
     return self;
 }
 
@@ -45,7 +49,7 @@ ani_status_code ani_read(void *instance, const char *path, const ani_document_vi
     return ani::guarded(status, [&] {
         auto doc = std::make_unique<ani::OwnedDocument>();
         std::string error;
-        if (!ani_format::read_ani(path, *doc, error)) throw ani::Failure(ANI_ERR_PARSE, error);
+        if (!ani_format::read_ani(path, static_cast<AniInstance *>(instance)->host, *doc, error)) throw ani::Failure(ANI_ERR_PARSE, error);
         *document = &doc->view;
         static_cast<AniInstance *>(instance)->read_documents[&doc->view] = std::move(doc);
     });

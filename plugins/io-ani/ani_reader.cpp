@@ -1,6 +1,8 @@
 // Reading .ani files: strict, and every error names the file, the line and what was expected.
 #include "ani_text.hpp"
 
+#include <animator/assets.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -20,7 +22,8 @@ struct ParseError : std::runtime_error {
 
 class Reader {
   public:
-    Reader(const char *path, std::istream &in) : path_(path), in_(in) {}
+    Reader(const char *path, std::istream &in, const ani_assets_ext *assets, const ani_host *host)
+        : path_(path), in_(in), assets_(assets), host_(host) {}
 
     void read(ani::OwnedDocument &doc);
 
@@ -63,6 +66,8 @@ class Reader {
 
     const char *path_;
     std::istream &in_;
+    const ani_assets_ext *assets_; // null when the host has no asset folders
+    const ani_host *host_;
     int line_ = 0;
     std::vector<Token> tokens_;
     std::map<std::string, int> model_index_;
@@ -253,7 +258,12 @@ void Reader::read_model(ani::OwnedDocument &doc) {
         once(seen);
         if (key == "mesh") {
             expect_count(2, "a quoted mesh id");
-            m.mesh = doc.keep(string(1, "mesh")); // "" makes an empty: a node without geometry
+            const std::string mesh = string(1, "mesh"); // "" makes an empty: a node without geometry
+            char where[2048];
+            if (!mesh.empty() && assets_ &&
+                !assets_->resolve(host_, ANI_ASSET_MESH, mesh.c_str(), path_, where, sizeof where))
+                fail("unknown mesh \"" + mesh + "\" (" + where + ")");
+            m.mesh = doc.keep(mesh);
             have_mesh = true;
         } else if (key == "parent") {
             expect_count(2, "the quoted name of an earlier model");
@@ -332,7 +342,7 @@ void Reader::read_keyframe(ani::OwnedDocument &doc) {
     k.struct_size = sizeof k;
     k.time_ms = t;
     std::vector<ani_model_state> states(doc.models.size());
-    std::vector<bool> have(doc.models.size(), false);
+    std::vector<int32_t> have(doc.models.size(), 0);
     bool have_camera = false;
     while (true) {
         if (!next_line()) fail("the file ends inside keyframe " + std::to_string(t) + "; expected 'end'");
@@ -381,30 +391,37 @@ void Reader::read_keyframe(ani::OwnedDocument &doc) {
                 if (!(x > 0.0)) fail("expected a scale > 0");
             st.turn = vec3(15, "the rotation direction");
             states[m] = st;
-            have[m] = true;
+            have[m] = 1;
         } else {
             fail("unknown keyframe key " + got(0) + "; expected camera, state or end");
         }
     }
-    if (!have_camera) fail_at(header_line, "keyframe " + std::to_string(t) + " has no 'camera' line");
+    // Only the keyframe at t = 0 must key everything (the initial placement); later keyframes
+    // key the models and camera they list.
+    if (t == 0 && !have_camera) fail_at(header_line, "keyframe 0 has no 'camera' line");
     for (size_t m = 0; m < have.size(); ++m)
-        if (!have[m])
+        if (t == 0 && !have[m])
             fail_at(header_line, std::string("keyframe ") + std::to_string(t) + " has no state for model \"" +
                  doc.models[m].name + "\"");
+    k.camera_keyed = have_camera ? 1 : 0;
     doc.keyframes.push_back(k);
     doc.states.push_back(std::move(states));
+    doc.keyed.push_back(std::move(have));
 }
 
 } // namespace
 
-bool read_ani(const char *path, ani::OwnedDocument &doc, std::string &error) {
+bool read_ani(const char *path, const ani_host *host, ani::OwnedDocument &doc, std::string &error) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         error = std::string(path) + ": cannot open the file: " + std::strerror(errno);
         return false;
     }
     try {
-        Reader(path, in).read(doc);
+        const auto *assets = host && host->get_extension
+                                 ? static_cast<const ani_assets_ext *>(host->get_extension(host, ANI_EXT_ASSETS))
+                                 : nullptr;
+        Reader(path, in, assets, host).read(doc);
         return true;
     } catch (const ParseError &e) {
         error = e.what();

@@ -25,7 +25,8 @@ std::string quote(const std::string &s);
 std::string number(double x);
 
 // Reads `path`; on failure returns false with "path:line: what was expected" in `error`.
-bool read_ani(const char *path, ani::OwnedDocument &doc, std::string &error);
+// `host` (may be null) offers the assets extension, used to report an unknown mesh at its line.
+bool read_ani(const char *path, const ani_host *host, ani::OwnedDocument &doc, std::string &error);
 // Writes atomically; on failure returns false with the reason, and any old file is intact.
 bool write_ani(const char *path, const ani_document_view &doc, std::string &error);
 

@@ -66,11 +66,13 @@ std::string to_text(const ani_document_view &doc) {
     for (uint32_t k = 0; k < doc.keyframe_count; ++k) {
         const ani_keyframe_view &kf = doc.keyframes[k];
         const ani_quat &q = kf.camera.rotation;
-        out << "\nkeyframe " << kf.time_ms << "\n"
-            << "  camera position " << vec(kf.camera.position) << " rotation " << number(q.w) << " "
-            << number(q.x) << " " << number(q.y) << " " << number(q.z) << " fov "
-            << number(kf.camera.fov_degrees) << "\n";
+        out << "\nkeyframe " << kf.time_ms << "\n";
+        if (kf.camera_keyed)
+            out << "  camera position " << vec(kf.camera.position) << " rotation " << number(q.w) << " "
+                << number(q.x) << " " << number(q.y) << " " << number(q.z) << " fov "
+                << number(kf.camera.fov_degrees) << "\n";
         for (uint32_t m = 0; m < doc.model_count; ++m) {
+            if (!kf.keyed[m]) continue;
             const ani_model_state &st = kf.states[m];
             out << "  state " << quote(str(doc.models[m].name)) << " center " << vec(st.center)
                 << " angles " << vec(st.angles) << " scale " << vec(st.scale) << " turn "

@@ -2,6 +2,8 @@
 
 #include "lua_sandbox.hpp"
 
+#include <animator/assets.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtx/euler_angles.hpp>
@@ -42,6 +44,8 @@ struct Node {
 };
 
 struct Scene {
+    std::string path;
+    const ani_host *host = nullptr;
     std::vector<Node> nodes;
     std::vector<Material> materials;
     std::map<std::string, int> by_name;
@@ -174,6 +178,15 @@ int gr_mesh(lua_State *L) {
     n.mesh = luaL_checkstring(L, 1);
     n.name = luaL_optstring(L, 2, n.mesh.c_str());
     if (n.mesh.empty()) return luaL_error(L, "gr.mesh needs a mesh id");
+    const Scene &scene = scene_of(L);
+    const auto *assets = scene.host && scene.host->get_extension
+                             ? static_cast<const ani_assets_ext *>(scene.host->get_extension(scene.host, ANI_EXT_ASSETS))
+                             : nullptr;
+    if (assets) {
+        char where[2048];
+        if (!assets->resolve(scene.host, ANI_ASSET_MESH, n.mesh.c_str(), scene.path.c_str(), where, sizeof where))
+            return luaL_error(L, "unknown mesh '%s' (%s)", n.mesh.c_str(), where);
+    }
     return push_node(L, n);
 }
 
@@ -427,6 +440,8 @@ bool read_scene(const char *path, const ani_host *host, ani::OwnedDocument &doc,
     text << in.rdbuf();
 
     Scene scene;
+    scene.path = path;
+    scene.host = host;
     Sandbox sandbox;
     lua_State *L = sandbox.state();
     if (!L) {
@@ -503,6 +518,8 @@ bool read_scene(const char *path, const ani_host *host, ani::OwnedDocument &doc,
     k.struct_size = sizeof k;
     k.time_ms = 0;
     k.camera = scene.camera;
+    k.camera_keyed = 1;
+    doc.keyed.emplace_back(states.size(), 1);
     doc.keyframes.push_back(k);
     doc.states.push_back(std::move(states));
     doc.finish();

@@ -3,6 +3,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <filesystem>
+
 using namespace animator;
 
 namespace {
@@ -40,7 +43,8 @@ TEST_CASE("animator info prints a document's settings, models and keyframes") {
     CHECK_THAT(r.out, Catch::Contains("max time:        10000 ms"));
     CHECK_THAT(r.out, Catch::Contains("gravity:         9.81 m/s^2 toward -y"));
     CHECK_THAT(r.out, Catch::Contains("models (2):"));
-    CHECK_THAT(r.out, Catch::Contains("ball: mesh sphere"));
+    CHECK_THAT(r.out, Catch::Contains("ball: mesh sphere ("));
+    CHECK_THAT(r.out, Catch::Contains("sphere.obj: "));
     CHECK_THAT(r.out, Catch::Contains("dynamics on, gravity on, mass 1"));
     CHECK_THAT(r.out, Catch::Contains("keyframes (1):"));
     CHECK_THAT(r.out, Catch::Contains("ball: center (0, 5, 0)"));
@@ -60,4 +64,39 @@ TEST_CASE("bad input exits 1 naming the file and usage errors exit 2") {
     CHECK(test::run_animator("info").exit_code == 2);
     CHECK(test::run_animator("frobnicate").exit_code == 2);
     CHECK(test::run_animator("info --bogus " + drop).exit_code == 2);
+}
+
+TEST_CASE("animator info prints every example with its models, keyframes and resolved meshes") {
+    namespace fs = std::filesystem;
+    int examples = 0;
+    for (const char *folder : {"assets/animations", "assets/scenes"}) {
+        for (const auto &entry : fs::directory_iterator(test::source_dir() / folder)) {
+            const fs::path file = entry.path();
+            if (file.extension() != ".ani" && file.extension() != ".lua") continue;
+            CAPTURE(file.string());
+            // Independent counts from the text: model blocks / gr.mesh calls, keyframe blocks.
+            const std::string text = test::read_file(file);
+            auto count = [&](const std::string &needle) {
+                size_t n = 0;
+                for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+                return n;
+            };
+            const size_t models = file.extension() == ".ani" ? count("\nmodel \"") : count("gr.mesh(");
+            const size_t keyframes = file.extension() == ".ani" ? count("\nkeyframe ") : 1;
+            const auto r = test::run_animator("info " + file.string());
+            CHECK(r.exit_code == 0);
+            CHECK_THAT(r.out, Catch::Contains("models (" + std::to_string(models) + "):"));
+            CHECK_THAT(r.out, Catch::Contains("keyframes (" + std::to_string(keyframes) + "):"));
+            CHECK_THAT(r.out, !Catch::Contains("not found"));
+            CHECK(std::count(r.out.begin(), r.out.end(), '\n') > 10);
+            // Each model's mesh was found and loaded (empties say so).
+            size_t meshes = 0;
+            for (size_t at = r.out.find(" triangles, bounding sphere"); at != std::string::npos;
+                 at = r.out.find(" triangles, bounding sphere", at + 1))
+                ++meshes;
+            CHECK(meshes == models);
+            ++examples;
+        }
+    }
+    CHECK(examples >= 5); // simple.lua, drop, stairs, orbs, cradle
 }

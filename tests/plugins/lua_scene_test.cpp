@@ -1,6 +1,7 @@
 // The Lua scene plugin through the host's document I/O: the CS488 API and its extensions, the
 // meaning of transforms (against a direct matrix product), the sandbox, and error messages.
 #include "io/document_io.hpp"
+#include "io/environment.hpp"
 
 #include "support.hpp"
 
@@ -61,7 +62,7 @@ TEST_CASE("the seed-style simple scene loads with its six models, materials, phy
     CHECK(b.gravity);
     CHECK(b.collision_sound == "click");
     CHECK(b.material.kd == glm::dvec3(0.9, 0.2, 0.2));
-    CHECK(doc.keyframe_at(0).states[static_cast<size_t>(ball)].center == glm::dvec3(-4, 3, 0));
+    CHECK(doc.keyframe_at(0).states[static_cast<size_t>(ball)]->center == glm::dvec3(-4, 3, 0));
     const Model &torus = doc.models()[static_cast<size_t>(doc.find_model("torus"))];
     CHECK(torus.transparency == 0.6);
     CHECK(torus.refractive_index == 1.33);
@@ -69,7 +70,7 @@ TEST_CASE("the seed-style simple scene loads with its six models, materials, phy
     CHECK(doc.settings().skybox == "day");
 
     // The camera at eye looks at look_at: its -Z axis points there, its +Y is up-ish.
-    const CameraState &cam = doc.keyframe_at(0).camera;
+    const CameraState &cam = *doc.keyframe_at(0).camera;
     CHECK(cam.position == glm::dvec3(0, 4, 14));
     const glm::dvec3 forward = cam.rotation * glm::dvec3(0, 0, -1);
     const glm::dvec3 expected = glm::normalize(glm::dvec3(0, 1, 0) - glm::dvec3(0, 4, 14));
@@ -108,7 +109,7 @@ TEST_CASE("a node's transform calls give the same matrix as the CS488 product") 
         }
         lua += "root:add_child(m)\nreturn root\n";
         const Document doc = load("transform", lua);
-        const ModelState &s = doc.keyframe_at(0).states[0];
+        const ModelState &s = *doc.keyframe_at(0).states[0];
         const glm::dmat4 got = matrix_of(s);
         CAPTURE(lua);
         for (int c = 0; c < 4; ++c)
@@ -140,10 +141,10 @@ TEST_CASE("children keep their parent, states are local to it, and a bare root i
     CHECK(doc.models()[1].parent == 0);
     CHECK(doc.models()[2].parent == 1);
     const auto &states = doc.keyframe_at(0).states;
-    CHECK(states[0].center == glm::dvec3(0, 10, 0)); // the root's translation moved into arm
-    CHECK(states[0].angles.x == Approx(45.0));
-    CHECK(states[1].center == glm::dvec3(0, 1, 0));
-    CHECK(states[2].center == glm::dvec3(0, 2, 0));
+    CHECK(states[0]->center == glm::dvec3(0, 10, 0)); // the root's translation moved into arm
+    CHECK(states[0]->angles.x == Approx(45.0));
+    CHECK(states[1]->center == glm::dvec3(0, 1, 0));
+    CHECK(states[2]->center == glm::dvec3(0, 2, 0));
 }
 
 TEST_CASE("a scene cannot escape its sandbox") {
@@ -233,4 +234,22 @@ TEST_CASE("errors carry the whole path of a scene, however long") {
     CHECK_THAT(load_error_at(path), Catch::StartsWith(path.string() + ":2: rotate's axis"));
     test::write_file(path, "\n\nwhile true do end\n");
     CHECK_THAT(load_error_at(path), Catch::StartsWith(path.string() + ":3: the scene ran past"));
+}
+
+TEST_CASE("an unknown mesh is an error at the line that names it, in a scene and in an animation") {
+    const fs::path root = test::fresh_dir("unknown_mesh_assets");
+    fs::create_directories(root / "meshes");
+    test::write_file(root / "meshes" / "ball.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    Environment env({root}, {test::bin_dir()}, [](ani_log_level, const std::string &, const std::string &) {});
+    const fs::path dir = test::fresh_dir("unknown_mesh_docs");
+
+    test::write_file(dir / "ok.lua", "local r = gr.node('r')\nr:add_child(gr.mesh('ball', 'b'))\nreturn r\n");
+    CHECK(open_document(env.plugins, dir / "ok.lua").document.models().size() == 1);
+    test::write_file(dir / "bad.lua", "local r = gr.node('r')\n\nr:add_child(gr.mesh('teapot', 't'))\nreturn r\n");
+    CHECK_THROWS_WITH(open_document(env.plugins, dir / "bad.lua"),
+                      Catch::Contains("bad.lua:3: unknown mesh 'teapot'") &&
+                          Catch::Contains((root / "meshes" / "teapot.obj").string()));
+
+    test::write_file(dir / "bad.ani", "animator-ani 1\nmodel \"t\"\n  mesh \"teapot\"\nend\n");
+    CHECK_THROWS_WITH(open_document(env.plugins, dir / "bad.ani"), Catch::Contains("bad.ani:3: unknown mesh \"teapot\""));
 }

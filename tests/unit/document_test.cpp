@@ -20,7 +20,7 @@ Keyframe keyframe_at(const Document &doc, std::int64_t t) {
     Keyframe k;
     k.time_ms = t;
     k.states.assign(doc.models().size(), ModelState{});
-    for (auto &s : k.states) s.center = glm::dvec3(static_cast<double>(t), 0.0, 0.0);
+    for (auto &s : k.states) s->center = glm::dvec3(static_cast<double>(t), 0.0, 0.0);
     return k;
 }
 
@@ -58,7 +58,7 @@ TEST_CASE("keyframes stay in time order whatever order they are added in") {
     doc.add_model(ball(), ModelState{});
     for (std::int64_t t : {5000, 1000, 3000, 2000, 4000}) doc.insert_keyframe(keyframe_at(doc, t));
     CHECK(times(doc) == std::vector<std::int64_t>{0, 1000, 2000, 3000, 4000, 5000});
-    CHECK(doc.keyframe_at(3000).states[0].center.x == 3000.0);
+    CHECK(doc.keyframe_at(3000).states[0]->center.x == 3000.0);
     CHECK(doc.find_keyframe(2500) == -1);
 }
 
@@ -75,7 +75,7 @@ TEST_CASE("a keyframe at a taken, negative or too late time, or with missing sta
     missing.states.clear();
     CHECK_THROWS_AS(doc.insert_keyframe(missing), DocumentError);
     Keyframe nan_state = keyframe_at(doc, 2000);
-    nan_state.states[0].center.y = std::numeric_limits<double>::quiet_NaN();
+    nan_state.states[0]->center.y = std::numeric_limits<double>::quiet_NaN();
     CHECK_THROWS_AS(doc.insert_keyframe(nan_state), DocumentError);
     CHECK(doc == before);
 }
@@ -120,7 +120,7 @@ TEST_CASE("a model is added to every keyframe, with a unique name and valid prop
     doc.add_model(ball("b"), s);
     for (const auto &k : doc.keyframes()) {
         REQUIRE(k.states.size() == 2);
-        CHECK(k.states[1].center == glm::dvec3(1, 2, 3));
+        CHECK(k.states[1]->center == glm::dvec3(1, 2, 3));
     }
     CHECK_THROWS_WITH(doc.add_model(ball("a"), ModelState{}), Catch::Contains("already exists"));
     Model heavy = ball("c");
@@ -166,5 +166,37 @@ TEST_CASE("the camera needs a unit rotation and a field of view in (0, 180)") {
     CHECK_THROWS_AS(doc.set_camera(0, c), DocumentError);
     c.fov_degrees = 60.0;
     doc.set_camera(0, c);
-    CHECK(doc.keyframe_at(0).camera.fov_degrees == 60.0);
+    CHECK(doc.keyframe_at(0).camera->fov_degrees == 60.0);
+}
+
+TEST_CASE("keyframes key some models: t = 0 keys everything, later keyframes what they list") {
+    Document doc;
+    doc.add_model(ball("a"), ModelState{});
+    doc.add_model(ball("b"), ModelState{});
+    Keyframe k;
+    k.time_ms = 1000;
+    k.states = {ModelState{}, std::nullopt}; // keys a only, and not the camera
+    doc.insert_keyframe(k);
+    CHECK(doc.keys_of(0).size() == 2);
+    CHECK(doc.keys_of(1).size() == 1);
+    CHECK(doc.keys_of(-1).size() == 1); // the camera: only at t = 0
+
+    // A model added later is keyed at t = 0 only.
+    doc.add_model(ball("c"), ModelState{});
+    CHECK(doc.keys_of(2).size() == 1);
+    CHECK_FALSE(doc.keyframe_at(1000).states[2].has_value());
+
+    // Keying and unkeying at a later keyframe; never unkeying at t = 0.
+    doc.set_state(1000, 1, ModelState{});
+    CHECK(doc.keys_of(1).size() == 2);
+    doc.set_state(1000, 1, std::nullopt);
+    CHECK(doc.keys_of(1).size() == 1);
+    CHECK_THROWS_WITH(doc.set_state(0, 1, std::nullopt), Catch::Contains("t = 0"));
+    CHECK_THROWS_WITH(doc.set_camera(0, std::nullopt), Catch::Contains("t = 0"));
+
+    Keyframe partial_zero;
+    partial_zero.time_ms = 0;
+    partial_zero.states.assign(3, std::nullopt);
+    Document other;
+    CHECK_THROWS_AS(other.insert_keyframe(partial_zero), DocumentError); // t = 0 is taken anyway
 }

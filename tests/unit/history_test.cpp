@@ -40,11 +40,11 @@ TEST_CASE("undo and redo of a model transformation") {
     const Document original = doc;
     EditHistory history;
     history.perform(doc, std::make_unique<SetStateEdit>(1000, 0, at(5.0)));
-    CHECK(doc.keyframe_at(1000).states[0].center.x == 5.0);
+    CHECK(doc.keyframe_at(1000).states[0]->center.x == 5.0);
     REQUIRE(history.undo(doc, 1000));
     CHECK(doc == original);
     REQUIRE(history.redo(doc, 1000));
-    CHECK(doc.keyframe_at(1000).states[0].center.x == 5.0);
+    CHECK(doc.keyframe_at(1000).states[0]->center.x == 5.0);
     CHECK_FALSE(history.redo(doc, 1000));
 }
 
@@ -59,14 +59,14 @@ TEST_CASE("each keyframe has its own undo stack") {
 
     // Undo at 2000 takes back only 2000's edit, although 1000's was later.
     REQUIRE(history.undo(doc, 2000));
-    CHECK(doc.keyframe_at(2000).states[0].center.x == 0.0);
-    CHECK(doc.keyframe_at(1000).states[1].center.x == 3.0);
+    CHECK(doc.keyframe_at(2000).states[0]->center.x == 0.0);
+    CHECK(doc.keyframe_at(1000).states[1]->center.x == 3.0);
     CHECK_FALSE(history.undo(doc, 2000));
     CHECK_FALSE(history.can_undo(3000));
 
     REQUIRE(history.undo(doc, 1000));
-    CHECK(doc.keyframe_at(1000).states[1].center.x == 0.0);
-    CHECK(doc.keyframe_at(1000).states[0].center.x == 1.0);
+    CHECK(doc.keyframe_at(1000).states[1]->center.x == 0.0);
+    CHECK(doc.keyframe_at(1000).states[0]->center.x == 1.0);
 }
 
 TEST_CASE("a new edit clears what could be redone on its stack only") {
@@ -78,9 +78,9 @@ TEST_CASE("a new edit clears what could be redone on its stack only") {
     history.undo(doc, 2000);
     history.perform(doc, std::make_unique<SetStateEdit>(1000, 0, at(7.0)));
     CHECK_FALSE(history.redo(doc, 1000));
-    CHECK(doc.keyframe_at(1000).states[0].center.x == 7.0);
+    CHECK(doc.keyframe_at(1000).states[0]->center.x == 7.0);
     REQUIRE(history.redo(doc, 2000));
-    CHECK(doc.keyframe_at(2000).states[0].center.x == 2.0);
+    CHECK(doc.keyframe_at(2000).states[0]->center.x == 2.0);
 }
 
 TEST_CASE("shortening max time is undone with the deleted keyframes restored") {
@@ -94,7 +94,7 @@ TEST_CASE("shortening max time is undone with the deleted keyframes restored") {
     CHECK(doc.keyframes().size() == 2);
     REQUIRE(history.undo(doc, 0));
     CHECK(doc == before);
-    CHECK(doc.keyframe_at(3000).states[1].center.x == 9.0);
+    CHECK(doc.keyframe_at(3000).states[1]->center.x == 9.0);
     REQUIRE(history.redo(doc, 0));
     CHECK(doc.keyframes().size() == 2);
 }
@@ -146,16 +146,16 @@ TEST_CASE("undo takes the latest of the keyframe's and the document's edits") {
     history.perform(doc, std::make_unique<SetStateEdit>(1000, 0, at(2.0)));
 
     history.undo(doc, 1000);
-    CHECK(doc.keyframe_at(1000).states[0].center.x == 1.0);
+    CHECK(doc.keyframe_at(1000).states[0]->center.x == 1.0);
     CHECK(doc.settings().gravity == 3.0);
     history.undo(doc, 1000);
     CHECK(doc.settings().gravity == 9.81);
-    CHECK(doc.keyframe_at(1000).states[0].center.x == 1.0);
+    CHECK(doc.keyframe_at(1000).states[0]->center.x == 1.0);
     history.undo(doc, 1000);
-    CHECK(doc.keyframe_at(1000).states[0].center.x == 0.0);
+    CHECK(doc.keyframe_at(1000).states[0]->center.x == 0.0);
     // Redo brings them back in the order they were undone, latest first.
     history.redo(doc, 1000);
-    CHECK(doc.keyframe_at(1000).states[0].center.x == 1.0);
+    CHECK(doc.keyframe_at(1000).states[0]->center.x == 1.0);
     CHECK(doc.settings().gravity == 9.81);
     history.redo(doc, 1000);
     CHECK(doc.settings().gravity == 3.0);
@@ -215,4 +215,18 @@ TEST_CASE("any sequence of edits undone in full gives back the original, redone 
         }
         CHECK(doc == edited);
     }
+}
+
+TEST_CASE("keying and unkeying a model at a keyframe is undoable") {
+    Document doc = two_balls_with_keyframes();
+    doc.set_state(2000, 1, std::nullopt);
+    const Document before = doc;
+    EditHistory history;
+    history.perform(doc, std::make_unique<SetStateEdit>(2000, 1, at(4.0)));
+    CHECK(doc.keys_of(1).size() == 4);
+    history.perform(doc, std::make_unique<SetStateEdit>(1000, 0, std::nullopt));
+    CHECK(doc.keys_of(0).size() == 3);
+    history.undo(doc, 1000);
+    history.undo(doc, 2000);
+    CHECK(doc == before);
 }

@@ -66,8 +66,11 @@ typedef struct ani_camera_state {
 typedef struct ani_keyframe_view {
     uint32_t struct_size;
     int64_t time_ms;               /* >= 0; the first keyframe has time 0 */
-    const ani_model_state *states; /* one per model, in model order */
-    ani_camera_state camera;
+    /* A keyframe keys some models and perhaps the camera; the one at t = 0 keys everything. */
+    const ani_model_state *states; /* one per model, in model order; meaningful where keyed */
+    const int32_t *keyed;          /* one per model: 1 if this keyframe keys that model */
+    ani_camera_state camera;       /* meaningful if camera_keyed */
+    int32_t camera_keyed;
 } ani_keyframe_view;
 
 /* One saved parameter value of a plugin. */

@@ -15,6 +15,7 @@ struct OwnedDocument {
     std::deque<std::string> strings; // a deque, so that c_str() pointers stay valid as it grows
     std::vector<ani_model_desc> models;
     std::vector<std::vector<ani_model_state>> states; // per keyframe, one per model
+    std::vector<std::vector<int32_t>> keyed;          // per keyframe, one per model
     std::vector<ani_keyframe_view> keyframes;
     std::vector<ani_param_setting> params;
     ani_document_view view{};
@@ -54,7 +55,10 @@ struct OwnedDocument {
 
     // Points the view at the vectors; call once they are complete.
     void finish() {
-        for (size_t k = 0; k < keyframes.size(); ++k) keyframes[k].states = states[k].data();
+        for (size_t k = 0; k < keyframes.size(); ++k) {
+            keyframes[k].states = states[k].data();
+            keyframes[k].keyed = keyed[k].data();
+        }
         view.struct_size = sizeof view;
         view.models = models.data();
         view.model_count = static_cast<uint32_t>(models.size());

@@ -1,0 +1,100 @@
+#include "assets/mesh.hpp"
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <tuple>
+
+namespace animator {
+
+namespace {
+
+bool finite(const aiVector3D &v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+} // namespace
+
+void compute_bounding_sphere(Mesh &mesh) {
+    std::set<std::tuple<double, double, double>> distinct;
+    for (const glm::dvec3 &p : mesh.positions) distinct.emplace(p.x, p.y, p.z);
+    glm::dvec3 sum(0.0);
+    for (const auto &[x, y, z] : distinct) sum += glm::dvec3(x, y, z);
+    mesh.bound_center = distinct.empty() ? glm::dvec3(0.0) : sum / static_cast<double>(distinct.size());
+    double radius = 0.0;
+    for (const auto &[x, y, z] : distinct) radius = std::max(radius, glm::length(glm::dvec3(x, y, z) - mesh.bound_center));
+    mesh.bound_radius = radius;
+}
+
+LoadedMesh load_mesh(const std::filesystem::path &path) {
+    const std::string name = path.string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) throw AssetError(name + ": no such mesh file");
+
+    Assimp::Importer importer;
+    // Keep degenerate triangles (we report them ourselves) and lines/points out.
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const aiScene *scene = importer.ReadFile(
+        name, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
+                  aiProcess_GenSmoothNormals | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+    if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
+        const std::string reason = importer.GetErrorString();
+        // assimp's validation words an empty file in terms of its own structures.
+        if (reason.find("mNumMeshes is 0") != std::string::npos || reason.find("no faces") != std::string::npos)
+            throw AssetError(name + ": the mesh has no triangles");
+        throw AssetError(name + ": cannot be read as a mesh: " + reason);
+    }
+
+    LoadedMesh out;
+    Mesh &mesh = out.mesh;
+    std::size_t degenerate = 0, first_degenerate = 0, triangle_index = 0;
+    bool any_uvs = false;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        const aiMesh *src = scene->mMeshes[m];
+        if (!(src->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+        const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+        for (unsigned v = 0; v < src->mNumVertices; ++v) {
+            const aiVector3D &p = src->mVertices[v];
+            if (!finite(p))
+                throw AssetError(name + ": vertex " + std::to_string(v + 1) + " is not a finite number");
+            mesh.positions.emplace_back(p.x, p.y, p.z);
+            glm::dvec3 n(0.0, 0.0, 0.0);
+            if (src->mNormals && finite(src->mNormals[v])) n = {src->mNormals[v].x, src->mNormals[v].y, src->mNormals[v].z};
+            const double len = glm::length(n);
+            mesh.normals.push_back(len > 0.0 ? n / len : glm::dvec3(0.0, 1.0, 0.0));
+            if (src->mTextureCoords[0]) {
+                mesh.uvs.emplace_back(src->mTextureCoords[0][v].x, src->mTextureCoords[0][v].y);
+                any_uvs = true;
+            } else {
+                mesh.uvs.emplace_back(0.0, 0.0);
+            }
+        }
+        for (unsigned f = 0; f < src->mNumFaces; ++f, ++triangle_index) {
+            const aiFace &face = src->mFaces[f];
+            if (face.mNumIndices != 3) continue;
+            const glm::dvec3 &a = mesh.positions[base + face.mIndices[0]];
+            const glm::dvec3 &b = mesh.positions[base + face.mIndices[1]];
+            const glm::dvec3 &c = mesh.positions[base + face.mIndices[2]];
+            const double scale = std::max({glm::length(b - a), glm::length(c - a), 1e-300});
+            if (glm::length(glm::cross(b - a, c - a)) <= 1e-12 * scale * scale) {
+                if (degenerate++ == 0) first_degenerate = triangle_index + 1;
+                continue;
+            }
+            for (unsigned k = 0; k < 3; ++k) mesh.triangles.push_back(base + face.mIndices[k]);
+        }
+    }
+    if (mesh.triangles.empty())
+        throw AssetError(name + (degenerate ? ": every triangle is degenerate (zero area)" : ": the mesh has no triangles"));
+    if (degenerate)
+        out.warnings.push_back(name + ": " + std::to_string(degenerate) +
+                               " degenerate (zero-area) triangles dropped, the first is triangle " +
+                               std::to_string(first_degenerate));
+    mesh.has_uvs = any_uvs;
+    compute_bounding_sphere(mesh);
+    return out;
+}
+
+} // namespace animator

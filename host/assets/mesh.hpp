@@ -1,0 +1,48 @@
+// Triangle meshes loaded with assimp from .obj (or any format assimp reads), with the seed's
+// bounding sphere ("Collision Detection": center = mean of the vertices, radius = the largest
+// distance from it to a vertex).
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace animator {
+
+// An asset could not be loaded; the message starts with its path.
+struct AssetError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct Mesh {
+    std::vector<glm::dvec3> positions;
+    std::vector<glm::dvec3> normals; // one per position, unit length
+    std::vector<glm::dvec2> uvs;     // one per position; (0, 0) where the file has none
+    std::vector<std::uint32_t> triangles; // 3 indices per triangle, counter-clockwise outward
+    glm::dvec3 bound_center{0.0};
+    double bound_radius = 0.0;
+    bool has_uvs = false;
+
+    std::size_t triangle_count() const { return triangles.size() / 3; }
+};
+
+struct LoadedMesh {
+    Mesh mesh;
+    std::vector<std::string> warnings; // each names the file
+};
+
+// Loads every mesh in the file as one, triangulated. Throws AssetError for a file that cannot be
+// read, has no triangles, or has a vertex that is not finite. Degenerate (zero-area) triangles
+// are dropped with a warning.
+LoadedMesh load_mesh(const std::filesystem::path &path);
+
+// The seed's bounding sphere over distinct positions (a vertex split for its UVs or normals
+// counts once, so seams do not pull the center).
+void compute_bounding_sphere(Mesh &mesh);
+
+} // namespace animator

@@ -1,0 +1,2 @@
+-- expect: the scene must return its root node
+local r = gr.node('r')

@@ -1,0 +1,2 @@
+-- expect: the scene must return its root node (return rootnode), got number
+return 42

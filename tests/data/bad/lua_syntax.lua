@@ -1,0 +1,3 @@
+-- expect: :3: 
+local root = gr.node('root'
+return root
