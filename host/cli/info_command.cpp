@@ -57,7 +57,8 @@ void print_document(std::ostream &out, const Document &doc, const AssetPaths &as
         << "  gravity:         " << s.gravity << " m/s^2 toward -" << axes[static_cast<int>(s.down_axis)] << "\n"
         << "  cel shading:     " << on_off(s.cel_shading) << "\n"
         << "  skybox:          " << (s.skybox.empty() ? "(none)" : s.skybox) << "\n"
-        << "  physics backend: " << s.physics_backend << "\n";
+        << "  physics backend: " << s.physics_backend << "\n"
+        << "  interpolation:   " << s.interpolation << "\n";
     for (const auto &[plugin, values] : s.params)
         for (const auto &[param, v] : values)
             out << "  parameter:       " << plugin << " " << param << " = " << v[0] << " " << v[1]

@@ -13,6 +13,7 @@ int main(int argc, char **argv) {
     std::function<int()> run;
     add_plugins_command(app, run);
     add_info_command(app, run);
+    add_bake_command(app, run);
 
     try {
         app.parse(argc, argv);

@@ -82,6 +82,7 @@ std::string check_settings(const Settings &s) {
     if (s.down_axis != Axis::X && s.down_axis != Axis::Y && s.down_axis != Axis::Z)
         return "down axis must be x, y or z";
     if (s.physics_backend.empty()) return "a physics backend id is needed";
+    if (s.interpolation.empty()) return "an interpolation plugin id is needed";
     for (const auto &[plugin, values] : s.params)
         for (const auto &[param, value] : values) {
             for (double v : value)

@@ -107,12 +107,16 @@ struct Settings {
     bool cel_shading = false;
     std::string skybox;
     std::string physics_backend = "physics.custom";
+    // The interpolator of keyed motion (a Dynamics model's center always follows the seed's
+    // kinematic equations): the seed's "interpolation.linear", or "interpolation.smooth".
+    std::string interpolation = "interpolation.linear";
     ParamValues params;
 
     bool operator==(const Settings &o) const {
         return max_time_ms == o.max_time_ms && gravity == o.gravity && down_axis == o.down_axis &&
                cel_shading == o.cel_shading && skybox == o.skybox &&
-               physics_backend == o.physics_backend && params == o.params;
+               physics_backend == o.physics_backend && interpolation == o.interpolation &&
+               params == o.params;
     }
 };
 

@@ -100,6 +100,7 @@ DocumentView::DocumentView(const Document &doc) {
     view_.settings.cel_shading = s.cel_shading ? 1 : 0;
     view_.settings.skybox = s.skybox.c_str();
     view_.settings.physics_backend = s.physics_backend.c_str();
+    view_.settings.interpolation = s.interpolation.c_str();
     view_.params = params_.data();
     view_.param_count = static_cast<uint32_t>(params_.size());
 }
@@ -118,6 +119,7 @@ Document document_from_view(const ani_document_view &view) {
     settings.cel_shading = view.settings.cel_shading != 0;
     settings.skybox = str(view.settings.skybox);
     settings.physics_backend = str(view.settings.physics_backend);
+    settings.interpolation = str(view.settings.interpolation);
     for (uint32_t i = 0; i < view.param_count; ++i) {
         const ani_param_setting &p = view.params[i];
         if (!p.plugin_id || !p.param_id) throw DocumentError("a parameter needs a plugin and an id");

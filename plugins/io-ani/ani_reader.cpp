@@ -218,6 +218,11 @@ void Reader::read_settings(ani::OwnedDocument &doc) {
             const std::string id = string(1, "physics_backend");
             if (id.empty()) fail("expected a plugin id for physics_backend, got \"\"");
             s.physics_backend = doc.keep(id);
+        } else if (key == "interpolation") {
+            expect_count(2, "a quoted plugin id");
+            const std::string id = string(1, "interpolation");
+            if (id.empty()) fail("expected a plugin id for interpolation, got \"\"");
+            s.interpolation = doc.keep(id);
         } else if (key == "param") {
             if (tokens_.size() < 4 || tokens_.size() > 7)
                 fail("expected 'param \"plugin.id\" \"param_id\"' and 1 to 4 numbers");
@@ -232,7 +237,7 @@ void Reader::read_settings(ani::OwnedDocument &doc) {
             doc.params.push_back(p);
         } else {
             fail("unknown settings key " + got(0) + "; expected max_time_ms, gravity, down, "
-                 "cel_shading, skybox, physics_backend, param or end");
+                 "cel_shading, skybox, physics_backend, interpolation, param or end");
         }
     }
 }

@@ -31,7 +31,8 @@ std::string to_text(const ani_document_view &doc) {
         << "  down " << "xyz"[s.down_axis >= 0 && s.down_axis <= 2 ? s.down_axis : 1] << "\n"
         << "  cel_shading " << boolean(s.cel_shading) << "\n"
         << "  skybox " << quote(str(s.skybox)) << "\n"
-        << "  physics_backend " << quote(str(s.physics_backend)) << "\n";
+        << "  physics_backend " << quote(str(s.physics_backend)) << "\n"
+        << "  interpolation " << quote(str(s.interpolation)) << "\n";
     for (uint32_t i = 0; i < doc.param_count; ++i) {
         const ani_param_setting &p = doc.params[i];
         out << "  param " << quote(str(p.plugin_id)) << " " << quote(str(p.param_id));

@@ -54,7 +54,7 @@ struct Scene {
     double gravity = 9.81;
     int down = ANI_AXIS_Y;
     bool cel = false;
-    std::string skybox, backend = "physics.custom";
+    std::string skybox, backend = "physics.custom", interpolation = "interpolation.linear";
     ani_camera_state camera{{0, 0, 0}, {1, 0, 0, 0}, 50.0};
 };
 
@@ -225,7 +225,7 @@ int gr_settings(lua_State *L) {
     Scene &scene = scene_of(L);
     if (scene.settings_line) return luaL_error(L, "gr.settings is called twice (first on line %d)", *scene.settings_line);
     scene.settings_line = current_line(L);
-    check_keys(L, 1, "gr.settings", {"gravity", "down", "max_time", "skybox", "cel", "backend"});
+    check_keys(L, 1, "gr.settings", {"gravity", "down", "max_time", "skybox", "cel", "backend", "interpolation"});
     if (has(L, 1, "gravity")) scene.gravity = number_field(L, 1, "gravity", -1e6, 1e6);
     if (has(L, 1, "down")) {
         const std::string d = string_field(L, 1, "down");
@@ -237,6 +237,7 @@ int gr_settings(lua_State *L) {
     if (has(L, 1, "skybox")) scene.skybox = string_field(L, 1, "skybox");
     if (has(L, 1, "cel")) scene.cel = bool_field(L, 1, "cel");
     if (has(L, 1, "backend")) scene.backend = string_field(L, 1, "backend");
+    if (has(L, 1, "interpolation")) scene.interpolation = string_field(L, 1, "interpolation");
     return 0;
 }
 
@@ -514,6 +515,7 @@ bool read_scene(const char *path, const ani_host *host, ani::OwnedDocument &doc,
     s.cel_shading = scene.cel ? 1 : 0;
     s.skybox = doc.keep(scene.skybox);
     s.physics_backend = doc.keep(scene.backend);
+    s.interpolation = doc.keep(scene.interpolation);
     ani_keyframe_view k{};
     k.struct_size = sizeof k;
     k.time_ms = 0;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <sstream>
 
 using namespace animator;
 
@@ -99,4 +100,65 @@ TEST_CASE("animator info prints every example with its models, keyframes and res
         }
     }
     CHECK(examples >= 5); // simple.lua, drop, stairs, orbs, cradle
+}
+
+namespace {
+
+std::vector<std::string> lines_of(const std::string &text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) out.push_back(line);
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("animator bake writes a trace of every model at every step and every keyframe time") {
+    namespace fs = std::filesystem;
+    const fs::path dir = test::fresh_dir("cli_bake");
+    const std::string stairs = (test::source_dir() / "assets/animations/stairs.ani").string();
+    const auto r = test::run_animator("bake " + stairs + " --until 1 --step 0.25 --trace " +
+                                      (dir / "trace.csv").string() + " --events " + (dir / "events.csv").string());
+    REQUIRE(r.exit_code == 0);
+    const auto rows = lines_of(test::read_file(dir / "trace.csv"));
+    REQUIRE(!rows.empty());
+    CHECK(rows[0] == "t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz");
+    // Times 0, 0.25, 0.4 (the second keyframe), 0.5, 0.75, 1: six samples of three models.
+    CHECK(rows.size() == 1 + 6 * 3);
+    // At the keyframe time the cube is exactly at its key: center (1.1, 3.4, 0), angles (0, 0, 330).
+    bool found = false;
+    for (const std::string &row : rows)
+        if (row.rfind("0.40000000000000002,cube,", 0) == 0) {
+            found = true;
+            CHECK_THAT(row, Catch::StartsWith("0.40000000000000002,cube,1.1000000000000001,3.3999999999999999,0,0,0,330,0.25,0.25,0.25,"));
+        }
+    CHECK(found);
+    CHECK(test::read_file(dir / "events.csv") == "t,a,b,nx,ny,nz,speed\n");
+}
+
+TEST_CASE("animator bake runs on every example and reports its statistics") {
+    namespace fs = std::filesystem;
+    for (const char *folder : {"assets/animations", "assets/scenes"})
+        for (const auto &entry : fs::directory_iterator(test::source_dir() / folder)) {
+            CAPTURE(entry.path().string());
+            const auto r = test::run_animator("bake " + entry.path().string() + " --stats");
+            CHECK(r.exit_code == 0);
+            CHECK_THAT(r.out, Catch::Contains("backend:   physics.custom"));
+            CHECK_THAT(r.out, Catch::Contains("segments:  "));
+            CHECK_THAT(r.out, Catch::Contains("skipped:   "));
+        }
+}
+
+TEST_CASE("animator bake refuses a bad backend, time, step or parameter") {
+    auto bad_backend = test::run_animator("bake " + drop + " --backend physics.nope");
+    CHECK(bad_backend.exit_code == 1);
+    CHECK_THAT(bad_backend.out, Catch::Contains("drop.ani: no physics backend 'physics.nope'"));
+    auto late = test::run_animator("bake " + drop + " --until 11");
+    CHECK(late.exit_code == 1);
+    CHECK_THAT(late.out, Catch::Contains("past the animation's max time 10 s"));
+    CHECK(test::run_animator("bake " + drop + " --step 0").exit_code == 2);
+    auto param = test::run_animator("bake " + drop + " --param restitution=0.5");
+    CHECK(param.exit_code == 1);
+    CHECK_THAT(param.out, Catch::Contains("physics.custom") && Catch::Contains("restitution"));
 }

@@ -88,6 +88,7 @@ typedef struct ani_settings_view {
     int32_t cel_shading;  /* 0 or 1 */
     const char *skybox;   /* "" for none */
     const char *physics_backend; /* plugin id, e.g. "physics.custom" */
+    const char *interpolation;   /* interpolator plugin id, e.g. "interpolation.linear" */
 } ani_settings_view;
 
 typedef struct ani_document_view {

@@ -35,6 +35,7 @@ struct OwnedDocument {
         s.cel_shading = 0;
         s.skybox = keep("");
         s.physics_backend = keep("physics.custom");
+        s.interpolation = keep("interpolation.linear");
     }
 
     // A model with every property at its default.

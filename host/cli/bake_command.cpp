@@ -1,0 +1,208 @@
+// `animator bake FILE`: bakes an animation with a physics backend and writes what it found: a
+// trace of every model's state, the collision events, and statistics.
+#include "cli/commands.hpp"
+
+#include "io/document_io.hpp"
+#include "io/environment.hpp"
+#include "plugin/descriptor_check.hpp"
+#include "timeline/timeline.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <set>
+
+namespace animator::cli {
+
+namespace {
+
+struct BakeOptions {
+    std::string file, backend, trace, events;
+    std::vector<std::string> params;
+    double until = -1.0;
+    double step = 1.0 / 60.0;
+    bool stats = false;
+};
+
+std::string csv_field(const std::string &s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string out = "\"";
+    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::string number(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", x);
+    return buf;
+}
+
+// A progress bar on a terminal, for bakes longer than a second; nothing otherwise.
+class ProgressBar {
+  public:
+    ProgressBar() : tty_(isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()) {}
+    ~ProgressBar() {
+        if (shown_) std::cerr << "\r" << std::string(60, ' ') << "\r" << std::flush;
+    }
+    bool operator()(double fraction) {
+        if (!tty_) return true;
+        const auto elapsed = std::chrono::steady_clock::now() - start_;
+        if (elapsed < std::chrono::seconds(1)) return true;
+        shown_ = true;
+        const int filled = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 40.0);
+        std::cerr << "\rbaking [" << std::string(static_cast<size_t>(filled), '#')
+                  << std::string(static_cast<size_t>(40 - filled), '.') << "] "
+                  << static_cast<int>(fraction * 100.0) << "%" << std::flush;
+        return true;
+    }
+
+  private:
+    bool tty_, shown_ = false;
+    std::chrono::steady_clock::time_point start_;
+};
+
+// "NAME=VALUE" or "NAME=V1,V2,V3" for a parameter of the chosen backend.
+void apply_params(Document &doc, const std::string &backend, const std::vector<std::string> &params) {
+    Settings settings = doc.settings();
+    for (const std::string &p : params) {
+        const auto eq = p.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw std::invalid_argument("--param needs NAME=VALUE, got '" + p + "'");
+        ParamValue value{};
+        size_t i = 0, at = eq + 1;
+        while (at <= p.size() && i < 4) {
+            const size_t comma = std::min(p.find(',', at), p.size());
+            const std::string part = p.substr(at, comma - at);
+            char *end = nullptr;
+            value[i++] = std::strtod(part.c_str(), &end);
+            if (part.empty() || *end != '\0' || !std::isfinite(value[i - 1]))
+                throw std::invalid_argument("--param " + p.substr(0, eq) + ": '" + part + "' is not a number");
+            at = comma + 1;
+        }
+        settings.params[backend][p.substr(0, eq)] = value;
+    }
+    doc.set_settings(settings);
+}
+
+void write_trace(const std::string &path, const Timeline &timeline, double until, double step) {
+    std::set<double> times;
+    const auto samples = static_cast<long long>(std::floor(until / step + 1e-9));
+    for (long long k = 0; k <= samples; ++k) times.insert(static_cast<double>(k) * step);
+    for (const Keyframe &k : timeline.document().keyframes()) {
+        const double t = static_cast<double>(k.time_ms) / 1000.0;
+        if (t <= until) times.insert(t);
+    }
+    std::ofstream out(path);
+    if (!out) throw std::runtime_error(path + ": cannot be written");
+    out << "t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz\n";
+    const auto &models = timeline.document().models();
+    for (double t : times) {
+        const Frame frame = timeline.evaluate(t);
+        for (size_t m = 0; m < models.size(); ++m) {
+            const ModelPose &p = frame.models[m];
+            out << number(t) << "," << csv_field(models[m].name);
+            for (const glm::dvec3 *v : {&p.center, &p.angles, &p.scale, &p.velocity})
+                out << "," << number(v->x) << "," << number(v->y) << "," << number(v->z);
+            out << "\n";
+        }
+    }
+    if (!out) throw std::runtime_error(path + ": writing failed");
+}
+
+void write_events(const std::string &path, const Timeline &timeline) {
+    std::ofstream out(path);
+    if (!out) throw std::runtime_error(path + ": cannot be written");
+    out << "t,a,b,nx,ny,nz,speed\n";
+    const auto &models = timeline.document().models();
+    auto name = [&](uint32_t i) { return i < models.size() ? csv_field(models[i].name) : std::string(); };
+    for (const ani_collision_event &e : timeline.events())
+        out << number(e.t) << "," << name(e.a) << "," << name(e.b) << "," << number(e.normal.x) << ","
+            << number(e.normal.y) << "," << number(e.normal.z) << "," << number(e.speed) << "\n";
+    if (!out) throw std::runtime_error(path + ": writing failed");
+}
+
+void print_stats(const Timeline &timeline, double wall_seconds) {
+    const auto &models = timeline.document().models();
+    std::size_t keyed = 0, free = 0, rest = 0, key_only_at_zero = 0, never_free = 0;
+    for (size_t m = 0; m < models.size(); ++m) {
+        bool any_free = false;
+        for (const ani_motion_segment &s : timeline.segments(static_cast<int>(m))) {
+            keyed += s.motion == ANI_MOTION_KEYED;
+            free += s.motion == ANI_MOTION_FREE;
+            rest += s.motion == ANI_MOTION_REST;
+            any_free = any_free || s.motion == ANI_MOTION_FREE;
+        }
+        never_free += !any_free;
+        key_only_at_zero += timeline.document().keys_of(static_cast<int>(m)).size() == 1;
+    }
+    const BakeStats &st = timeline.stats();
+    std::cout << "backend:   " << timeline.backend_id() << "\n"
+              << "wall time: " << wall_seconds << " s\n"
+              << "baked:     " << st.seconds_baked << " s of animation in " << st.bake_calls << " bake call(s)\n"
+              << "segments:  " << keyed + free + rest << " (" << keyed << " keyed, " << free << " free, " << rest
+              << " at rest)\n"
+              << "events:    " << timeline.events().size() << "\n"
+              << "skipped:   interpolation for " << key_only_at_zero << " of " << models.size()
+              << " models (keyed at t = 0 only); free flight for " << never_free << " of " << models.size()
+              << " models (at rest or keyed throughout)\n";
+}
+
+int run_bake(const BakeOptions &o) {
+    Environment env;
+    OpenedDocument opened;
+    try {
+        opened = open_document(env.plugins, o.file);
+    } catch (const DocumentIoError &e) {
+        std::cerr << "animator: " << e.what() << "\n";
+        return kBadInput;
+    }
+    Document &doc = opened.document;
+    const double max_time = static_cast<double>(doc.settings().max_time_ms) / 1000.0;
+    const double until = o.until < 0.0 ? max_time : o.until;
+    if (until > max_time) {
+        std::cerr << "animator: " << o.file << ": --until " << until << " s is past the animation's max time "
+                  << max_time << " s\n";
+        return kBadInput;
+    }
+    try {
+        const std::string backend = o.backend.empty() ? doc.settings().physics_backend : o.backend;
+        apply_params(doc, backend, o.params);
+        const auto start = std::chrono::steady_clock::now();
+        Timeline timeline(doc, env.plugins, o.backend);
+        ProgressBar bar;
+        timeline.bake(until, [&](double f) { return bar(f); });
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (!o.trace.empty()) write_trace(o.trace, timeline, until, o.step);
+        if (!o.events.empty()) write_events(o.events, timeline);
+        if (o.stats) print_stats(timeline, wall);
+        return kSuccess;
+    } catch (const std::exception &e) {
+        std::cerr << "animator: " << o.file << ": " << e.what() << "\n";
+        return kBadInput;
+    }
+}
+
+} // namespace
+
+void add_bake_command(CLI::App &app, std::function<int()> &run) {
+    auto o = std::make_shared<BakeOptions>();
+    CLI::App *cmd = app.add_subcommand("bake", "Bake an animation's physics and write its trace, events and statistics");
+    cmd->add_option("FILE", o->file, "an animation (.ani) or scene (.lua)")->required();
+    cmd->add_option("--backend", o->backend, "physics backend plugin id (default: the animation's)");
+    cmd->add_option("--until", o->until, "bake up to this time in seconds (default: the max time)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--step", o->step, "trace sample step in seconds (default 1/60)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--trace", o->trace, "write every model's state as CSV: t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz");
+    cmd->add_option("--events", o->events, "write collision events as CSV: t,a,b,nx,ny,nz,speed");
+    cmd->add_option("--param", o->params, "a backend parameter, NAME=VALUE (repeatable)");
+    cmd->add_flag("--stats", o->stats, "print wall time, segments, events and skipped stages");
+    cmd->callback([&run, o] { run = [o] { return run_bake(*o); }; });
+}
+
+} // namespace animator::cli

@@ -1,0 +1,69 @@
+// Keyed motion: every model's and the camera's state between their own keys, from interpolator
+// plugins (seed, "Linear Interpolation between Keyframes" and "Keyframe Interpolation with
+// Kinematic Equations"). Rotation and scale always come from here (the seed has no torque);
+// the center comes from here only over a model's keyed span, and from the physics bake after.
+#pragma once
+
+#include "document/document.hpp"
+#include "plugin/instance.hpp"
+
+#include <animator/interpolator.h>
+#include <animator/physics.h>
+
+#include <memory>
+#include <vector>
+
+namespace animator {
+
+struct ModelPose {
+    glm::dvec3 center{0.0};
+    glm::dvec3 angles{0.0}; // degrees in [0, 360)
+    glm::dvec3 scale{1.0};
+    glm::dvec3 velocity{0.0}; // of the center, m/s
+};
+
+// The interpolator instances a document needs: its choice (the seed's linear by default) for
+// everything but the center of a model with Dynamics on, which is kinematic.
+struct Interpolators {
+    std::unique_ptr<PluginInstance> chosen;    // the document's choice, for keyed motion
+    std::unique_ptr<PluginInstance> kinematic; // the center of a model with Dynamics on
+
+    // Throws PluginError naming a missing plugin.
+    static Interpolators load(PluginRegistry &plugins, const Document &doc);
+};
+
+class KeyedMotion {
+  public:
+    // Builds the channels of every model and of the camera; `interpolators` must outlive this.
+    KeyedMotion(const Document &doc, const Interpolators &interpolators);
+
+    // The keyed pose of model `m` at t seconds. Before its first key and after its last, the
+    // nearest key's values; velocity after the last key is the velocity it left its keys with.
+    ModelPose model(int m, double t) const;
+    // Many sorted times at once (one sweep per channel).
+    std::vector<ModelPose> model(int m, const std::vector<double> &times) const;
+    CameraState camera(double t) const;
+
+    // [first key, last key] of model m, in seconds.
+    ani_time_span keyed_span(int m) const;
+    std::size_t model_count() const { return models_.size(); }
+
+  private:
+    struct Channel {
+        const PluginInstance *interpolator = nullptr;
+        std::vector<ani_key> keys;
+        ani_channel channel{};
+    };
+    struct ModelChannels {
+        Channel center, angles, scale;
+    };
+    static void finish(Channel &c, int kind, const PluginInstance *interpolator, const glm::dvec3 &initial_rate);
+    static void evaluate(const Channel &c, const std::vector<double> &times, std::vector<double> &values,
+                         std::vector<double> &rates);
+
+    std::vector<ModelChannels> models_;
+    Channel camera_position_, camera_rotation_;
+    std::vector<double> fov_times_, fov_values_; // the camera's field of view, linear between keys
+};
+
+} // namespace animator

@@ -1,0 +1,232 @@
+#include "timeline/timeline.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace animator {
+
+namespace {
+
+std::unique_ptr<PluginInstance> physics_instance(PluginRegistry &plugins, const Document &doc,
+                                                 const std::string &backend) {
+    const std::string id = backend.empty() ? doc.settings().physics_backend : backend;
+    const PluginInfo *info = plugins.find(id);
+    if (!info || info->kind != ANI_KIND_PHYSICS) {
+        std::string known;
+        for (const PluginInfo *p : plugins.find_kind(ANI_KIND_PHYSICS)) known += (known.empty() ? "" : ", ") + p->id;
+        throw PluginError("no physics backend '" + id + "' (found: " + (known.empty() ? "none" : known) + ")");
+    }
+    auto instance = std::make_unique<PluginInstance>(*info, plugins.host());
+    // The document's saved parameters for this backend.
+    auto saved = doc.settings().params.find(id);
+    if (saved != doc.settings().params.end())
+        for (const auto &[param, value] : saved->second) instance->set_param(param, value);
+    return instance;
+}
+
+glm::dvec3 at(const ani_motion_segment &s, double t) {
+    const double tau = t - s.t0;
+    return glm::dvec3(s.p0.x, s.p0.y, s.p0.z) + glm::dvec3(s.v0.x, s.v0.y, s.v0.z) * tau +
+           0.5 * glm::dvec3(s.a.x, s.a.y, s.a.z) * tau * tau;
+}
+
+glm::dvec3 velocity_at(const ani_motion_segment &s, double t) {
+    const double tau = t - s.t0;
+    return glm::dvec3(s.v0.x, s.v0.y, s.v0.z) + glm::dvec3(s.a.x, s.a.y, s.a.z) * tau;
+}
+
+// The physics-relevant part of a model: a change elsewhere (a colour) moves nothing.
+bool same_physics(const Model &a, const Model &b) {
+    return a.mesh == b.mesh && a.parent == b.parent && a.dynamics == b.dynamics && a.gravity == b.gravity &&
+           a.mass == b.mass && a.initial_velocity == b.initial_velocity;
+}
+
+struct BakeContext {
+    Timeline *timeline;
+    std::vector<std::vector<ani_motion_segment>> *segments;
+    std::vector<ani_collision_event> *events;
+    const std::function<bool(double)> *progress;
+};
+
+} // namespace
+
+Timeline::Timeline(const Document &doc, PluginRegistry &plugins, const std::string &backend)
+    : doc_(doc), plugins_(plugins), interpolators_(Interpolators::load(plugins, doc)),
+      keyed_(std::make_unique<KeyedMotion>(doc_, interpolators_)),
+      physics_(physics_instance(plugins, doc_, backend)), segments_(doc_.models().size()) {}
+
+const ani_motion_segment *Timeline::segment_at(int model, double t) const {
+    const auto &list = segments_[static_cast<size_t>(model)];
+    auto it = std::upper_bound(list.begin(), list.end(), t,
+                               [](double time, const ani_motion_segment &s) { return time < s.t0; });
+    if (it == list.begin()) return list.empty() ? nullptr : &list.front();
+    return &*(it - 1);
+}
+
+ani_body_state Timeline::state_at(int model, double t) const {
+    ani_body_state state{};
+    const ani_motion_segment *s = segment_at(model, t);
+    if (!s || s->motion == ANI_MOTION_KEYED) {
+        const ModelPose pose = keyed_->model(model, t);
+        state.motion = ANI_MOTION_KEYED;
+        state.center = to_ani(pose.center);
+        state.velocity = to_ani(pose.velocity);
+    } else {
+        state.motion = s->motion;
+        state.center = to_ani(at(*s, t));
+        state.velocity = to_ani(velocity_at(*s, t));
+    }
+    return state;
+}
+
+void Timeline::truncate(double from) {
+    for (auto &list : segments_) {
+        list.erase(std::remove_if(list.begin(), list.end(), [&](const ani_motion_segment &s) { return s.t0 >= from; }),
+                   list.end());
+        if (!list.empty() && list.back().t1 > from) list.back().t1 = from;
+    }
+    events_.erase(std::remove_if(events_.begin(), events_.end(), [&](const ani_collision_event &e) { return e.t >= from; }),
+                  events_.end());
+    baked_until_ = std::min(baked_until_, from);
+}
+
+void Timeline::run_bake(double from, double until, const std::function<bool(double)> &progress) {
+    const DocumentView view(doc_);
+    const auto &models = doc_.models();
+    const double end_of_time = static_cast<double>(doc_.settings().max_time_ms) / 1000.0;
+    std::vector<ani_physics_model> scene_models(models.size());
+    std::vector<ani_time_span> spans(models.size());
+    std::vector<ani_body_state> starts(models.size());
+    for (size_t m = 0; m < models.size(); ++m) starts[m] = state_at(static_cast<int>(m), from);
+    for (size_t m = 0; m < models.size(); ++m) {
+        ani_physics_model &pm = scene_models[m];
+        pm.struct_size = sizeof pm;
+        pm.desc = &view.view().models[m];
+        pm.mesh = nullptr; // meshes come with collisions
+        // Parts of a jointed model move with their parent: keyed (relative to it) throughout.
+        spans[m] = models[m].parent >= 0 ? ani_time_span{0.0, std::max(end_of_time, until)}
+                                         : keyed_->keyed_span(static_cast<int>(m));
+        int root_child = static_cast<int>(m);
+        while (models[static_cast<size_t>(root_child)].parent >= 0) root_child = models[static_cast<size_t>(root_child)].parent;
+        pm.group = static_cast<uint32_t>(root_child);
+        pm.keyed_spans = &spans[m];
+        pm.keyed_span_count = 1;
+        pm.start = starts[m];
+    }
+    ani_physics_scene scene{};
+    scene.struct_size = sizeof scene;
+    scene.models = scene_models.data();
+    scene.model_count = static_cast<uint32_t>(scene_models.size());
+    scene.gravity = doc_.settings().gravity;
+    scene.down_axis = static_cast<int32_t>(doc_.settings().down_axis);
+    scene.host_context = keyed_.get();
+    scene.evaluate_keyed = [](void *context, uint32_t model, double t, ani_model_state *state, ani_vec3 *velocity) {
+        const auto *keyed = static_cast<const KeyedMotion *>(context);
+        try {
+            const ModelPose pose = keyed->model(static_cast<int>(model), t);
+            state->center = to_ani(pose.center);
+            state->angles = to_ani(pose.angles);
+            state->scale = to_ani(pose.scale);
+            state->turn = ani_vec3{0.0, 0.0, 0.0};
+            *velocity = to_ani(pose.velocity);
+            return ANI_OK;
+        } catch (const std::exception &) {
+            return ANI_ERR_FAILED;
+        }
+    };
+
+    BakeContext context{this, &segments_, &events_, &progress};
+    ani_bake_sink sink{};
+    sink.context = &context;
+    sink.segment = [](void *c, const ani_motion_segment *s) {
+        auto *ctx = static_cast<BakeContext *>(c);
+        if (s->model < ctx->segments->size()) (*ctx->segments)[s->model].push_back(*s);
+    };
+    sink.event = [](void *c, const ani_collision_event *e) { static_cast<BakeContext *>(c)->events->push_back(*e); };
+    sink.progress = [](void *c, double fraction) -> int32_t {
+        auto *ctx = static_cast<BakeContext *>(c);
+        return !*ctx->progress || (*ctx->progress)(fraction) ? 1 : 0;
+    };
+
+    ani_status status{};
+    const auto &api = physics_->api<ani_physics_api>();
+    const ani_status_code code = api.bake(physics_->handle(), &scene, from, until, &sink, &status);
+    ++stats_.bake_calls;
+    if (code == ANI_ERR_CANCELLED) {
+        truncate(from);
+        throw BakeCancelled();
+    }
+    if (code != ANI_OK) {
+        truncate(from);
+        throw PluginError("physics backend '" + physics_->info().id + "': " + status.message);
+    }
+    stats_.seconds_baked += until - from;
+    baked_until_ = until;
+    baked_any_ = true;
+}
+
+void Timeline::bake(double until, const std::function<bool(double)> &progress) {
+    if (baked_any_ && until <= baked_until_) return;
+    run_bake(baked_any_ ? baked_until_ : 0.0, until, progress);
+}
+
+Frame Timeline::evaluate(double t) const {
+    Frame frame;
+    const int n = static_cast<int>(doc_.models().size());
+    frame.models.resize(static_cast<size_t>(n));
+    frame.motion.resize(static_cast<size_t>(n));
+    for (int m = 0; m < n; ++m) {
+        ModelPose pose = keyed_->model(m, t); // rotation and scale always come from the keys
+        const ani_motion_segment *s = segment_at(m, t);
+        frame.motion[static_cast<size_t>(m)] = s ? s->motion : ANI_MOTION_KEYED;
+        if (s && s->motion != ANI_MOTION_KEYED) {
+            pose.center = at(*s, t);
+            pose.velocity = velocity_at(*s, t);
+        }
+        frame.models[static_cast<size_t>(m)] = pose;
+    }
+    frame.camera = keyed_->camera(t);
+    return frame;
+}
+
+double Timeline::affected_from(const Document &before, const Document &after) {
+    constexpr double never = std::numeric_limits<double>::infinity();
+    const Settings &a = before.settings(), &b = after.settings();
+    if (a.gravity != b.gravity || a.down_axis != b.down_axis || a.physics_backend != b.physics_backend ||
+        a.interpolation != b.interpolation || a.params != b.params)
+        return 0.0;
+    if (before.models().size() != after.models().size()) return 0.0;
+    for (size_t m = 0; m < before.models().size(); ++m)
+        if (!same_physics(before.models()[m], after.models()[m])) return 0.0;
+
+    double from = never;
+    for (size_t m = 0; m < before.models().size(); ++m) {
+        const auto keys_a = before.keys_of(static_cast<int>(m)), keys_b = after.keys_of(static_cast<int>(m));
+        // The first key that differs; the motion changes from the key before it, because the
+        // segment leading into it is interpolated from there.
+        size_t i = 0;
+        while (i < keys_a.size() && i < keys_b.size() && keys_a[i]->time_ms == keys_b[i]->time_ms &&
+               *keys_a[i]->states[m] == *keys_b[i]->states[m])
+            ++i;
+        if (i == keys_a.size() && i == keys_b.size()) continue;
+        const std::int64_t previous = i == 0 ? 0 : keys_a[i - 1]->time_ms;
+        from = std::min(from, static_cast<double>(previous) / 1000.0);
+    }
+    return from;
+}
+
+void Timeline::set_document(const Document &doc, const std::function<bool(double)> &progress) {
+    const double from = affected_from(doc_, doc);
+    const double until = baked_until_;
+    const bool new_interpolation = doc.settings().interpolation != doc_.settings().interpolation ||
+                                   doc.settings().params != doc_.settings().params;
+    doc_ = doc;
+    if (new_interpolation) interpolators_ = Interpolators::load(plugins_, doc_);
+    keyed_ = std::make_unique<KeyedMotion>(doc_, interpolators_);
+    if (doc_.models().size() != segments_.size()) segments_.assign(doc_.models().size(), {});
+    if (!baked_any_ || from >= until) return;
+    truncate(from);
+    run_bake(from, until, progress);
+}
+
+} // namespace animator

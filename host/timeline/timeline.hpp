@@ -1,0 +1,80 @@
+// The timeline: the state of every model and of the camera at any time t, the same whichever
+// way the user reached t. Keyed spans come from the interpolators (keyed_motion.hpp); free spans
+// from the physics backend's bake, cached as closed-form segments (never one sample per frame),
+// so scrubbing back is a look-up and an edit re-bakes only from the earliest time it can change.
+#pragma once
+
+#include "document/document_view.hpp"
+#include "timeline/keyed_motion.hpp"
+
+#include <functional>
+#include <limits>
+#include <stdexcept>
+
+namespace animator {
+
+struct BakeCancelled : std::runtime_error {
+    BakeCancelled() : std::runtime_error("the bake was cancelled") {}
+};
+
+struct Frame {
+    std::vector<ModelPose> models;
+    std::vector<int> motion; // ani_motion_kind of each model at that time
+    CameraState camera;
+};
+
+// What the bakes did, counted (not timed), for `animator bake --stats` and for tests.
+struct BakeStats {
+    std::size_t bake_calls = 0;
+    double seconds_baked = 0.0; // simulated time covered by all bake calls
+};
+
+class Timeline {
+  public:
+    // `backend` overrides the document's physics backend when not empty. Throws PluginError for
+    // a missing interpolator or backend.
+    Timeline(const Document &doc, PluginRegistry &plugins, const std::string &backend = "");
+
+    // Bakes [baked_until(), until] seconds. `progress` gets [0, 1] and returns false to cancel
+    // (throws BakeCancelled; what was baked before stays). Throws PluginError if the backend
+    // fails.
+    void bake(double until, const std::function<bool(double)> &progress = {});
+    double baked_until() const { return baked_until_; }
+
+    // Every model and the camera at t seconds, within what is baked.
+    Frame evaluate(double t) const;
+
+    // Takes an edited document: the bake is kept up to the earliest time the edit can change
+    // and redone from there to where it was.
+    void set_document(const Document &doc, const std::function<bool(double)> &progress = {});
+    const Document &document() const { return doc_; }
+
+    // The earliest time (seconds) at which `after` can move differently from `before`; infinity
+    // when the edit changes no motion (a colour, the camera).
+    static double affected_from(const Document &before, const Document &after);
+
+    const std::vector<ani_motion_segment> &segments(int model) const { return segments_[static_cast<size_t>(model)]; }
+    const std::vector<ani_collision_event> &events() const { return events_; }
+    const BakeStats &stats() const { return stats_; }
+    const std::string &backend_id() const { return physics_->info().id; }
+    const KeyedMotion &keyed() const { return *keyed_; }
+
+  private:
+    void truncate(double from);
+    ani_body_state state_at(int model, double t) const;
+    const ani_motion_segment *segment_at(int model, double t) const;
+    void run_bake(double from, double until, const std::function<bool(double)> &progress);
+
+    Document doc_;
+    PluginRegistry &plugins_;
+    Interpolators interpolators_;
+    std::unique_ptr<KeyedMotion> keyed_;
+    std::unique_ptr<PluginInstance> physics_;
+    std::vector<std::vector<ani_motion_segment>> segments_;
+    std::vector<ani_collision_event> events_;
+    double baked_until_ = 0.0;
+    bool baked_any_ = false;
+    BakeStats stats_;
+};
+
+} // namespace animator
