@@ -1,6 +1,6 @@
 // The timeline and the bake, through the real plugins (interpolation, physics.custom), against
 // hand-computed values and the seed's closed forms.
-#include "timeline/timeline.hpp"
+#include "timeline/bake_job.hpp"
 
 #include "support.hpp"
 
@@ -298,4 +298,39 @@ TEST_CASE("an animation can choose the smooth interpolator: through every key, w
     missing.interpolation = "interpolation.cubic";
     doc.set_settings(missing);
     CHECK_THROWS_WITH(Timeline(doc, plugins()), Catch::Contains("no interpolator plugin 'interpolation.cubic'"));
+}
+
+TEST_CASE("a bake runs on a worker thread, reports progress, and hands the timeline back") {
+    auto timeline = std::make_unique<Timeline>(four_cases(Axis::Y), plugins());
+    BakeJob job(std::move(timeline), 10.0);
+    job.start();
+    BakeJob::Result result = job.wait();
+    CHECK(job.done());
+    CHECK(job.progress() == 1.0);
+    CHECK_FALSE(result.cancelled);
+    CHECK(result.error.empty());
+    REQUIRE(result.timeline);
+    CHECK(result.timeline->baked_until() == 10.0);
+    CHECK(result.timeline->evaluate(3.0).models[3].center.x == Approx(2.0 + 4.0 * 2.0));
+}
+
+TEST_CASE("a bake on a worker thread can be cancelled, keeping what was baked before") {
+    Document doc;
+    Model m;
+    m.mesh = "sphere";
+    m.gravity = true;
+    for (int i = 0; i < 200; ++i) {
+        m.name = "ball" + std::to_string(i);
+        doc.add_model(m, at(static_cast<double>(i)));
+    }
+    auto timeline = std::make_unique<Timeline>(doc, plugins());
+    timeline->bake(1.0);
+    BakeJob job(std::move(timeline), 30.0);
+    job.cancel(); // before it starts: the first progress report stops it
+    job.start();
+    BakeJob::Result result = job.wait();
+    CHECK(result.cancelled);
+    REQUIRE(result.timeline);
+    CHECK(result.timeline->baked_until() == 1.0);
+    CHECK(result.timeline->evaluate(1.0).models[7].center.y == Approx(-9.81 / 2.0));
 }
