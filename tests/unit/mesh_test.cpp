@@ -137,3 +137,20 @@ TEST_CASE("asset ids resolve to a path relative to the document first, then the 
                Catch::Contains((root_a / "meshes" / "teapot.obj").string()) &&
                    Catch::Contains((root_b / "meshes" / "teapot.obj").string()));
 }
+
+TEST_CASE("the generated PNG and BMP textures load through the host's loader alike") {
+    const fs::path textures = test::bin_dir().parent_path() / "assets" / "textures";
+    const Image png = load_image(textures / "checker.png");
+    const Image bmp = load_image(textures / "checker.bmp");
+    CHECK(png.width == 256);
+    CHECK(png.height == 256);
+    CHECK(png.rgb == bmp.rgb);
+    // An 8 x 8 checker of 32-pixel squares: the two squares of the first row differ.
+    auto pixel = [&](int x, int y) { return png.rgb[static_cast<size_t>(3 * (y * 256 + x))]; };
+    CHECK(pixel(0, 0) != pixel(32, 0));
+    CHECK(pixel(0, 0) == pixel(64, 0));
+    CHECK(pixel(0, 0) == pixel(32, 32));
+    for (const char *name : {"wood.png", "marble.png", "brick.png"}) CHECK(load_image(textures / name).width == 256);
+    for (const char *face : {"right", "left", "top", "bottom", "front", "back"})
+        CHECK(load_image(textures.parent_path() / "skyboxes" / "night" / (std::string(face) + ".png")).height == 256);
+}
