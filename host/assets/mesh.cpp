@@ -1,11 +1,14 @@
 #include "assets/mesh.hpp"
 
+#include "assets/asset_paths.hpp"
+
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <set>
 #include <tuple>
@@ -27,6 +30,52 @@ void compute_bounding_sphere(Mesh &mesh) {
     double radius = 0.0;
     for (const auto &[x, y, z] : distinct) radius = std::max(radius, glm::length(glm::dvec3(x, y, z) - mesh.bound_center));
     mesh.bound_radius = radius;
+}
+
+bool approximates_sphere(const Mesh &mesh) {
+    const double r = mesh.bound_radius;
+    if (!(r > 0.0) || mesh.triangles.size() < 3 * 20) return false;
+    for (const glm::dvec3 &p : mesh.positions)
+        if (std::abs(glm::length(p - mesh.bound_center) - r) > 1e-6 * r) return false;
+    for (size_t t = 0; t < mesh.triangles.size(); t += 3) {
+        const glm::dvec3 centroid =
+            (mesh.positions[mesh.triangles[t]] + mesh.positions[mesh.triangles[t + 1]] + mesh.positions[mesh.triangles[t + 2]]) / 3.0;
+        if (glm::length(centroid - mesh.bound_center) < 0.9 * r) return false;
+    }
+    return true;
+}
+
+std::vector<std::shared_ptr<const Mesh>> load_meshes(const std::vector<std::string> &ids, const AssetPaths &assets,
+                                                     const std::filesystem::path &document,
+                                                     std::vector<std::string> &warnings) {
+    std::map<std::filesystem::path, std::shared_ptr<const Mesh>> loaded;
+    std::vector<std::shared_ptr<const Mesh>> out;
+    for (const std::string &id : ids) {
+        if (id.empty()) {
+            out.push_back(nullptr);
+            continue;
+        }
+        const auto path = assets.resolve(ANI_ASSET_MESH, id, document);
+        if (!path) {
+            warnings.push_back("mesh '" + id + "' not found (" + assets.searched(ANI_ASSET_MESH, id, document) + ")");
+            out.push_back(nullptr);
+            continue;
+        }
+        auto it = loaded.find(*path);
+        if (it == loaded.end()) {
+            std::shared_ptr<const Mesh> mesh;
+            try {
+                LoadedMesh lm = load_mesh(*path);
+                warnings.insert(warnings.end(), lm.warnings.begin(), lm.warnings.end());
+                mesh = std::make_shared<const Mesh>(std::move(lm.mesh));
+            } catch (const AssetError &e) {
+                warnings.push_back(e.what());
+            }
+            it = loaded.emplace(*path, mesh).first;
+        }
+        out.push_back(it->second);
+    }
+    return out;
 }
 
 LoadedMesh load_mesh(const std::filesystem::path &path) {

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -44,5 +45,17 @@ LoadedMesh load_mesh(const std::filesystem::path &path);
 // The seed's bounding sphere over distinct positions (a vertex split for its UVs or normals
 // counts once, so seams do not pull the center).
 void compute_bounding_sphere(Mesh &mesh);
+
+// Whether the mesh is a tessellated sphere, so physics may use the seed's sphere special case
+// (its bounding sphere): every vertex on the bounding sphere, and every face close to it (its
+// centroid beyond 0.9 of the radius), which a tetrahedron or a cube is not.
+bool approximates_sphere(const Mesh &mesh);
+
+// Loads the meshes named by `ids` for the document at `document` (one per id, null for "" or a
+// mesh that cannot be found or read, with a warning), each file once.
+std::vector<std::shared_ptr<const Mesh>> load_meshes(const std::vector<std::string> &ids,
+                                                     const class AssetPaths &assets,
+                                                     const std::filesystem::path &document,
+                                                     std::vector<std::string> &warnings);
 
 } // namespace animator

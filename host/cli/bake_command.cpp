@@ -174,6 +174,10 @@ int run_bake(const BakeOptions &o) {
         apply_params(doc, backend, o.params);
         const auto start = std::chrono::steady_clock::now();
         Timeline timeline(doc, env.plugins, o.backend);
+        std::vector<std::string> mesh_ids, warnings;
+        for (const Model &m : doc.models()) mesh_ids.push_back(m.mesh);
+        timeline.set_meshes(load_meshes(mesh_ids, env.assets, o.file, warnings));
+        for (const std::string &w : warnings) std::cerr << "animator: warning: " << w << "\n";
         ProgressBar bar;
         timeline.bake(until, [&](double f) { return bar(f); });
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -79,6 +79,31 @@ ani_body_state Timeline::state_at(int model, double t) const {
     return state;
 }
 
+void Timeline::set_meshes(std::vector<std::shared_ptr<const Mesh>> meshes) {
+    meshes_.clear();
+    for (auto &mesh : meshes) {
+        if (!mesh) {
+            meshes_.push_back(nullptr);
+            continue;
+        }
+        auto mv = std::make_unique<MeshView>();
+        mv->mesh = mesh;
+        for (const glm::dvec3 &p : mesh->positions) mv->positions.insert(mv->positions.end(), {p.x, p.y, p.z});
+        ani_mesh_view &v = mv->view;
+        v.struct_size = sizeof v;
+        v.positions = mv->positions.data();
+        v.vertex_count = static_cast<uint32_t>(mesh->positions.size());
+        v.triangles = mesh->triangles.data();
+        v.triangle_count = static_cast<uint32_t>(mesh->triangle_count());
+        v.bound_center = to_ani(mesh->bound_center);
+        v.bound_radius = mesh->bound_radius;
+        v.is_sphere = approximates_sphere(*mesh) ? 1 : 0;
+        meshes_.push_back(std::move(mv));
+    }
+    truncate(0.0);
+    baked_any_ = false;
+}
+
 void Timeline::truncate(double from) {
     for (auto &list : segments_) {
         list.erase(std::remove_if(list.begin(), list.end(), [&](const ani_motion_segment &s) { return s.t0 >= from; }),
@@ -102,7 +127,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         ani_physics_model &pm = scene_models[m];
         pm.struct_size = sizeof pm;
         pm.desc = &view.view().models[m];
-        pm.mesh = nullptr; // meshes come with collisions
+        pm.mesh = m < meshes_.size() && meshes_[m] ? &meshes_[m]->view : nullptr;
         // Parts of a jointed model move with their parent: keyed (relative to it) throughout.
         spans[m] = models[m].parent >= 0 ? ani_time_span{0.0, std::max(end_of_time, until)}
                                          : keyed_->keyed_span(static_cast<int>(m));

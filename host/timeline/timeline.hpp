@@ -4,6 +4,7 @@
 // so scrubbing back is a look-up and an edit re-bakes only from the earliest time it can change.
 #pragma once
 
+#include "assets/mesh.hpp"
 #include "document/document_view.hpp"
 #include "timeline/keyed_motion.hpp"
 
@@ -44,6 +45,10 @@ class Timeline {
     // Every model and the camera at t seconds, within what is baked.
     Frame evaluate(double t) const;
 
+    // The meshes of the models (one per model, null for an empty), for collisions. Without them
+    // the backend computes motion without contacts. Invalidates the bake.
+    void set_meshes(std::vector<std::shared_ptr<const Mesh>> meshes);
+
     // Takes an edited document: the bake is kept up to the earliest time the edit can change
     // and redone from there to where it was.
     void set_document(const Document &doc, const std::function<bool(double)> &progress = {});
@@ -70,6 +75,12 @@ class Timeline {
     Interpolators interpolators_;
     std::unique_ptr<KeyedMotion> keyed_;
     std::unique_ptr<PluginInstance> physics_;
+    struct MeshView {
+        std::shared_ptr<const Mesh> mesh;
+        std::vector<double> positions;
+        ani_mesh_view view{};
+    };
+    std::vector<std::unique_ptr<MeshView>> meshes_; // per model, null without a mesh
     std::vector<std::vector<ani_motion_segment>> segments_;
     std::vector<ani_collision_event> events_;
     double baked_until_ = 0.0;

@@ -84,6 +84,9 @@ std::optional<Contact> sphere_triangle(const Path &s, double r, const glm::dvec3
     // touching point inside the triangle.
     for (double side : {1.0, -1.0}) {
         const glm::dvec3 d = s.p - v0;
+        // Only the side the center is on can be met: from the other side the function is below
+        // zero all along, which is not a contact.
+        if (side * glm::dot(n, d) <= 0.0) continue;
         const Quartic f = {side * glm::dot(n, d) - r, side * glm::dot(n, s.v), side * 0.5 * glm::dot(n, s.a), 0.0, 0.0};
         auto inside = [&](double t) {
             const glm::dvec3 q = s.at(t) - side * r * n;

@@ -154,3 +154,15 @@ TEST_CASE("3D elastic exchange: the 1D formula along the normal, momentum and en
         CHECK(glm::length((va1 - va) - glm::dot(va1 - va, normal) * normal) <= 1e-12 * glm::length(va));
     }
 }
+
+TEST_CASE("a sphere leaving a face it bounced off does not meet it again from behind") {
+    const double r = 0.5;
+    // Just after a bounce: touching the face from above, moving up, under gravity.
+    const Path leaving{{1, r, 0}, {0, 4, 0}, gravity};
+    const auto again = sphere_triangle(leaving, r, A, B, C, 100.0);
+    REQUIRE(again); // it falls back onto the face after 2 v / G
+    CHECK(again->t == Approx(2.0 * 4.0 / G).epsilon(1e-12));
+    CHECK(again->normal == glm::dvec3(0, 1, 0));
+    // Far below the face, moving down: the face is behind it, no contact.
+    CHECK_FALSE(sphere_triangle({{1, -5, 0}, {0, -1, 0}, {0, 0, 0}}, r, A, B, C, 100.0));
+}

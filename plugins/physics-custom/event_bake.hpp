@@ -1,0 +1,18 @@
+// The event-driven bake (physics.md, "The two backends"): between events every free body follows
+// its closed form; the bake advances to the earliest time of impact, responds, and repeats, so
+// every contact is found at its exact time and no speed can tunnel.
+//
+// Covered: spheres (Dynamics or Gravity on) against each other and against the triangles of
+// static models (neither Dynamics nor Gravity, not re-keyed). A free model that is not a sphere
+// moves without collisions, and the host's log says so.
+#pragma once
+
+#include <animator/physics.h>
+
+namespace physics_custom {
+
+// Bakes [t_begin, t_end]: keyed spans, free flight, collisions. Throws ani::Failure.
+void bake_scene(const ani_physics_scene &scene, double t_begin, double t_end, const ani_bake_sink &sink,
+                const ani_host *host);
+
+} // namespace physics_custom

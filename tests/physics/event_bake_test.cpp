@@ -1,0 +1,161 @@
+// physics.custom's event-driven bake through the real timeline, on the generated meshes,
+// against the closed forms of physics.md's exact scenes.
+#include "assets/asset_paths.hpp"
+#include "io/document_io.hpp"
+#include "io/environment.hpp"
+#include "timeline/timeline.hpp"
+
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+using namespace animator;
+namespace fs = std::filesystem;
+
+namespace {
+
+const double G = 9.81;
+
+Environment &env() {
+    static Environment e({test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
+                         [](ani_log_level, const std::string &, const std::string &) {});
+    return e;
+}
+
+std::unique_ptr<Timeline> timeline_of(const Document &doc) {
+    auto t = std::make_unique<Timeline>(doc, env().plugins);
+    std::vector<std::string> ids, warnings;
+    for (const Model &m : doc.models()) ids.push_back(m.mesh);
+    t->set_meshes(load_meshes(ids, env().assets, {}, warnings));
+    REQUIRE(warnings.empty());
+    return t;
+}
+
+double sphere_radius() {
+    return load_mesh(env().assets.resolve(ANI_ASSET_MESH, "sphere").value()).mesh.bound_radius;
+}
+
+Model model(const std::string &name, const std::string &mesh, bool dynamics, bool gravity) {
+    Model m;
+    m.name = name;
+    m.mesh = mesh;
+    m.dynamics = dynamics;
+    m.gravity = gravity;
+    return m;
+}
+
+ModelState placed(glm::dvec3 center, double scale = 1.0) {
+    ModelState s;
+    s.center = center;
+    s.scale = glm::dvec3(scale);
+    return s;
+}
+
+} // namespace
+
+TEST_CASE("a ball dropped on a floor bounces 1000 times, every apex at the drop height") {
+    const double r = sphere_radius(), h = 1.5;
+    Document doc;
+    Settings s = doc.settings();
+    s.max_time_ms = 700000;
+    doc.set_settings(s);
+    doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, 10.0));
+    doc.add_model(model("ball", "sphere", true, true), placed({0.3, h, 0.2}));
+    auto timeline = timeline_of(doc);
+    const double first = std::sqrt(2.0 * (h - r) / G), period = 2.0 * first;
+    const double until = first + 1000.5 * period;
+    timeline->bake(until);
+    const auto &events = timeline->events();
+    REQUIRE(events.size() >= 1001);
+    for (size_t k = 0; k < 1001; ++k) {
+        CAPTURE(k);
+        // Bounce k at first + k * period (physics.md scene 1).
+        CHECK(events[k].t == Approx(first + static_cast<double>(k) * period).epsilon(1e-11));
+        CHECK(events[k].normal.y == Approx(1.0));
+        CHECK(events[k].speed == Approx(G * first).epsilon(1e-9));
+    }
+    // The apex after 1000 bounces, half a period after the last: at the drop height.
+    const double apex_time = events[999].t + first;
+    const double apex = timeline->evaluate(apex_time).models[1].center.y;
+    CHECK(std::abs(apex - h) / h < 1e-9);
+}
+
+TEST_CASE("Newton's cradle: after the exchanges only the last ball moves, with the striker's velocity") {
+    const Document doc = open_document(env().plugins, test::source_dir() / "assets/animations/cradle.ani").document;
+    auto timeline = timeline_of(doc);
+    timeline->bake(5.0);
+    const Frame end = timeline->evaluate(5.0);
+    const int striker = doc.find_model("striker"), last = doc.find_model("ball4");
+    for (int m = 0; m < static_cast<int>(doc.models().size()); ++m) {
+        CAPTURE(doc.models()[static_cast<size_t>(m)].name);
+        const glm::dvec3 v = end.models[static_cast<size_t>(m)].velocity;
+        if (m == last) {
+            CHECK(v.x == Approx(2.0).epsilon(1e-12));
+        } else if (doc.models()[static_cast<size_t>(m)].dynamics) {
+            CHECK(glm::length(v) < 1e-12);
+        }
+    }
+    CHECK(timeline->events().size() == 4); // striker -> 1 -> 2 -> 3 -> 4
+    (void)striker;
+}
+
+TEST_CASE("two equal spheres, one at rest, meeting off-centre leave at 90 degrees") {
+    const double r = sphere_radius();
+    Document doc;
+    Model a = model("a", "sphere", true, false);
+    a.initial_velocity = {3, 0, 0};
+    doc.add_model(a, placed({-5, 0.6 * r, 0}));
+    doc.add_model(model("b", "sphere", true, false), placed({0, 0, 0}));
+    auto timeline = timeline_of(doc);
+    timeline->bake(10.0);
+    REQUIRE(timeline->events().size() == 1);
+    const Frame f = timeline->evaluate(10.0);
+    const glm::dvec3 va = f.models[0].velocity, vb = f.models[1].velocity;
+    CHECK(glm::dot(va, vb) == Approx(0.0).margin(1e-12));
+    // Momentum and energy kept (equal masses).
+    CHECK(glm::length(va + vb - glm::dvec3(3, 0, 0)) < 1e-12);
+    CHECK(glm::dot(va, va) + glm::dot(vb, vb) == Approx(9.0).epsilon(1e-14));
+    // The contact normal at 0.6 r offset: sin = 0.6 r / 2 r = 0.3.
+    CHECK(std::abs(timeline->events()[0].normal.y) == Approx(0.3).epsilon(1e-9));
+}
+
+TEST_CASE("a model without Dynamics stops at the moment of contact") {
+    const double r = sphere_radius(), h = 3.0;
+    Document doc;
+    doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, 10.0));
+    doc.add_model(model("stone", "sphere", false, true), placed({0, h, 0}));
+    auto timeline = timeline_of(doc);
+    timeline->bake(5.0);
+    const double landing = std::sqrt(2.0 * (h - r) / G);
+    REQUIRE(timeline->events().size() == 1);
+    CHECK(timeline->events()[0].t == Approx(landing).epsilon(1e-12));
+    const Frame f = timeline->evaluate(4.0);
+    CHECK(f.models[1].center.y == Approx(r).epsilon(1e-12));
+    CHECK(f.models[1].velocity == glm::dvec3(0.0));
+}
+
+TEST_CASE("a small fast sphere reflects off a thin wall at any speed, never passing") {
+    const double r = sphere_radius() * 0.1;
+    for (double speed : {1.0, 100.0, 1e4, 1e6}) {
+        CAPTURE(speed);
+        Document doc;
+        // The plane stood up: rotated 90 degrees about Z, its face is the plane x = 0.
+        ModelState wall = placed({0, 0, 0}, 2.0);
+        wall.angles = {0, 0, 90};
+        doc.add_model(model("wall", "plane", false, false), wall);
+        Model ball = model("ball", "sphere", true, false);
+        ball.initial_velocity = {-speed, 0, 0};
+        doc.add_model(ball, placed({1, 0.1, 0.1}, 0.1));
+        auto timeline = timeline_of(doc);
+        const double hit = (1.0 - r) / speed;
+        timeline->bake(std::min(60.0, 3.0 * hit));
+        REQUIRE(!timeline->events().empty());
+        CHECK(timeline->events()[0].t == Approx(hit).epsilon(1e-9));
+        const Frame f = timeline->evaluate(timeline->baked_until());
+        CHECK(f.models[1].center.x > 0.0);
+        CHECK(f.models[1].velocity.x == Approx(speed).epsilon(1e-12));
+    }
+}
