@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,7 @@ struct Body {
 struct Obstacle {
     uint32_t model = 0;
     std::vector<glm::dvec3> corners; // 3 per triangle
+    std::vector<Box> boxes;          // 1 per triangle
     glm::dvec3 center{0.0};
     double radius = 0.0;
 };
@@ -81,6 +83,7 @@ class EventBake {
 
     void run() {
         classify();
+        find_overlaps(t_begin_);
         double now = t_begin_;
         std::size_t events_at_once = 0;
         double last_event = -kNever;
@@ -94,6 +97,8 @@ class EventBake {
                                                        " s without moving apart");
             now = hit.t;
             respond(hit);
+            if (hit.activation) find_overlaps(now);
+            if (!ignored_.empty()) release_separated(now);
             if (sink_.progress && ++reports_ % 1024 == 0 &&
                 !sink_.progress(sink_.context, (now - t_begin_) / std::max(t_end_ - t_begin_, 1e-300)))
                 throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
@@ -164,6 +169,14 @@ class EventBake {
         for (uint32_t k = 0; k < 3 * mesh.triangle_count; ++k) {
             const double *p = mesh.positions + 3 * mesh.triangles[k];
             o.corners.push_back(glm::dvec3(world * glm::dvec4(p[0], p[1], p[2], 1.0)));
+        }
+        for (size_t k = 0; k + 2 < o.corners.size(); k += 3) {
+            Box box{o.corners[k], o.corners[k]};
+            for (size_t j = 1; j < 3; ++j) {
+                box.lo = glm::min(box.lo, o.corners[k + j]);
+                box.hi = glm::max(box.hi, o.corners[k + j]);
+            }
+            o.boxes.push_back(box);
         }
         glm::dvec3 sum(0.0);
         for (const auto &c : o.corners) sum += c;
@@ -239,6 +252,54 @@ class EventBake {
         return Path{b.path.at(now - b.t0), b.path.velocity(now - b.t0), b.path.a};
     }
 
+    bool overlaps_obstacle(const Body &b, const Obstacle &o, double t) const {
+        const glm::dvec3 c = b.path.at(t - b.t0);
+        if (glm::length(c - o.center) > b.radius + o.radius) return false;
+        for (size_t k = 0; k + 2 < o.corners.size(); k += 3)
+            if (glm::length(c - closest_point_on_triangle(c, o.corners[k], o.corners[k + 1], o.corners[k + 2])) < b.radius)
+                return true;
+        return false;
+    }
+
+    bool overlaps_body(const Body &a, const Body &b, double t) const {
+        return glm::length(a.path.at(t - a.t0) - b.path.at(t - b.t0)) < a.radius + b.radius;
+    }
+
+    // Reports pairs that overlap at t (at the start, or when a body becomes free inside
+    // another) and ignores them until they separate.
+    void find_overlaps(double t) {
+        for (size_t i = 0; i < bodies_.size(); ++i) {
+            if (!bodies_[i].active) continue;
+            for (size_t o = 0; o < obstacles_.size(); ++o)
+                if (overlaps_obstacle(bodies_[i], obstacles_[o], t))
+                    ignore(static_cast<int>(i), -1 - static_cast<int>(o), bodies_[i].model, obstacles_[o].model, t);
+            for (size_t j = i + 1; j < bodies_.size(); ++j)
+                if (bodies_[j].active && overlaps_body(bodies_[i], bodies_[j], t))
+                    ignore(static_cast<int>(i), static_cast<int>(j), bodies_[i].model, bodies_[j].model, t);
+        }
+    }
+
+    void ignore(int a, int b, uint32_t model_a, uint32_t model_b, double t) {
+        if (!ignored_.insert({a, b}).second) return;
+        log_once("models '" + std::string(name_of(scene_.models[model_a])) + "' and '" +
+                 name_of(scene_.models[model_b]) + "' overlap at t = " + std::to_string(t) +
+                 " s; their contact is ignored until they separate");
+    }
+
+    // Forgets the ignored pairs that no longer overlap.
+    void release_separated(double t) {
+        for (auto it = ignored_.begin(); it != ignored_.end();) {
+            const Body &a = bodies_[static_cast<size_t>(it->first)];
+            const bool still = it->second >= 0 ? overlaps_body(a, bodies_[static_cast<size_t>(it->second)], t)
+                                               : overlaps_obstacle(a, obstacles_[static_cast<size_t>(-1 - it->second)], t);
+            it = still ? std::next(it) : ignored_.erase(it);
+        }
+    }
+
+    bool is_ignored(int a, int b) const {
+        return !ignored_.empty() && (ignored_.count({a, b}) || ignored_.count({b, a}));
+    }
+
     Hit earliest(double now) const {
         Hit best;
         const double horizon = t_end_ - now;
@@ -256,6 +317,7 @@ class EventBake {
             if (b.motion == ANI_MOTION_REST) continue; // resting bodies are hit, they do not hit
             const Path p = from_now(b, now);
             for (size_t o = 0; o < obstacles_.size(); ++o) {
+                if (is_ignored(static_cast<int>(i), -1 - static_cast<int>(o))) continue;
                 const Obstacle &ob = obstacles_[o];
                 // Broad phase: the swept sphere must reach the obstacle's bounding sphere.
                 const Path still{ob.center, glm::dvec3(0.0), glm::dvec3(0.0)};
@@ -263,7 +325,12 @@ class EventBake {
                 if (!(glm::length(p.p - ob.center) <= b.radius + ob.radius) &&
                     !sphere_sphere(p, b.radius, still, ob.radius, limit))
                     continue;
+                // Each triangle only if the swept sphere's box reaches the triangle's box.
+                Box reach = swept_box(p, limit);
+                reach.lo -= glm::dvec3(b.radius);
+                reach.hi += glm::dvec3(b.radius);
                 for (size_t k = 0; k + 2 < ob.corners.size(); k += 3) {
+                    if (!reach.overlaps(ob.boxes[k / 3])) continue;
                     const auto c = sphere_triangle(p, b.radius, ob.corners[k], ob.corners[k + 1], ob.corners[k + 2],
                                                    std::min(horizon, best.t - now));
                     if (c && now + c->t < best.t) {
@@ -278,6 +345,7 @@ class EventBake {
             for (size_t j = 0; j < bodies_.size(); ++j) {
                 const Body &other = bodies_[j];
                 if (j == i || !other.active || (other.motion != ANI_MOTION_REST && j < i)) continue;
+                if (is_ignored(static_cast<int>(i), static_cast<int>(j))) continue;
                 const auto c = sphere_sphere(p, b.radius, from_now(other, now), other.radius, std::min(horizon, best.t - now));
                 if (c && now + c->t < best.t) {
                     best = Hit{};
@@ -341,6 +409,9 @@ class EventBake {
     glm::dvec3 gravity_;
     std::vector<Body> bodies_;
     std::vector<Obstacle> obstacles_;
+    // Pairs that started overlapping (physics.md): reported once, ignored until they separate.
+    // Keys: (body, other body) or (body, -1 - obstacle).
+    std::set<std::pair<int, int>> ignored_;
     std::size_t reports_ = 0;
 };
 

@@ -56,6 +56,22 @@ std::optional<double> first_valid(const Quartic &f, double t_max, const std::fun
 
 } // namespace
 
+Box swept_box(const Path &path, double t) {
+    Box box{path.p, path.p};
+    auto include = [&](const glm::dvec3 &q) {
+        box.lo = glm::min(box.lo, q);
+        box.hi = glm::max(box.hi, q);
+    };
+    include(path.at(t));
+    for (int axis = 0; axis < 3; ++axis) {
+        // The vertex of p + v s + a s^2 / 2 is at s = -v / a.
+        if (path.a[axis] == 0.0) continue;
+        const double s = -path.v[axis] / path.a[axis];
+        if (s > 0.0 && s < t) include(path.at(s));
+    }
+    return box;
+}
+
 std::optional<Contact> sphere_sphere(const Path &a, double ra, const Path &b, double rb, double t_max) {
     const glm::dvec3 d = a.p - b.p, e = a.v - b.v, h = 0.5 * (a.a - b.a);
     const double reach = ra + rb;
@@ -125,6 +141,27 @@ std::optional<Contact> sphere_triangle(const Path &s, double r, const glm::dvec3
         if (auto t = first_valid(f, t_max, [](double) { return true; })) offer(*t, glm::normalize(s.at(*t) - corner));
     }
     return best;
+}
+
+glm::dvec3 closest_point_on_triangle(const glm::dvec3 &q, const glm::dvec3 &a, const glm::dvec3 &b,
+                                     const glm::dvec3 &c) {
+    const glm::dvec3 ab = b - a, ac = c - a, aq = q - a;
+    const double d1 = glm::dot(ab, aq), d2 = glm::dot(ac, aq);
+    if (d1 <= 0.0 && d2 <= 0.0) return a;
+    const glm::dvec3 bq = q - b;
+    const double d3 = glm::dot(ab, bq), d4 = glm::dot(ac, bq);
+    if (d3 >= 0.0 && d4 <= d3) return b;
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + ab * (d1 / (d1 - d3));
+    const glm::dvec3 cq = q - c;
+    const double d5 = glm::dot(ab, cq), d6 = glm::dot(ac, cq);
+    if (d6 >= 0.0 && d5 <= d6) return c;
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + ac * (d2 / (d2 - d6));
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    const double denom = 1.0 / (va + vb + vc);
+    return a + ab * (vb * denom) + ac * (vc * denom);
 }
 
 std::optional<double> ray_triangle(const glm::dvec3 &start, const glm::dvec3 &ray, const glm::dvec3 &v0,

@@ -17,6 +17,16 @@ struct Path {
     glm::dvec3 velocity(double t) const { return v + a * t; }
 };
 
+// The axis-aligned box a path sweeps over [0, t]: per axis, a parabola's extremes are at the
+// ends or at its vertex.
+struct Box {
+    glm::dvec3 lo{0.0}, hi{0.0};
+    bool overlaps(const Box &o) const {
+        return lo.x <= o.hi.x && o.lo.x <= hi.x && lo.y <= o.hi.y && o.lo.y <= hi.y && lo.z <= o.hi.z && o.lo.z <= hi.z;
+    }
+};
+Box swept_box(const Path &path, double t);
+
 struct Contact {
     double t = 0.0;            // time of first contact
     glm::dvec3 normal{0.0};    // unit, from the other body towards the sphere
@@ -32,6 +42,10 @@ std::optional<Contact> sphere_sphere(const Path &a, double ra, const Path &b, do
 // otherwise (a grazing edge or corner hit bounces off the rim, not the face).
 std::optional<Contact> sphere_triangle(const Path &sphere, double r, const glm::dvec3 &v0, const glm::dvec3 &v1,
                                        const glm::dvec3 &v2, double t_max);
+
+// The point of the triangle nearest to q (Ericson, Real-Time Collision Detection 5.1.5).
+glm::dvec3 closest_point_on_triangle(const glm::dvec3 &q, const glm::dvec3 &a, const glm::dvec3 &b,
+                                     const glm::dvec3 &c);
 
 // The seed's rayTriangleIntersection: the ray start + t * ray for t in [0, 1] against the
 // triangle, with the seed's inside test (dot(n, cross(edge, poi - corner)) >= 0 for all three

@@ -159,3 +159,76 @@ TEST_CASE("a small fast sphere reflects off a thin wall at any speed, never pass
         CHECK(f.models[1].velocity.x == Approx(speed).epsilon(1e-12));
     }
 }
+
+TEST_CASE("a ball in a closed box for 300000 s: each coordinate an exact triangle wave, energy kept") {
+    const double r = sphere_radius() * 0.5, half = 5.0, L = half - r;
+    Document doc;
+    Settings s = doc.settings();
+    s.max_time_ms = 300000000;
+    doc.set_settings(s);
+    doc.add_model(model("box", "cube", false, false), placed({0, 0, 0}, half)); // the inside of a cube
+    Model ball = model("ball", "sphere", true, false);
+    const glm::dvec3 v0(0.13, 0.07, 0.03); // a 300000 s run of 7,666 bounces
+    ball.initial_velocity = v0;
+    doc.add_model(ball, placed({0.5, -1.0, 2.0}, 0.5));
+    auto timeline = timeline_of(doc);
+    timeline->bake(300000.0);
+    // The closed form: unfold the motion along each axis onto a line of period 4 L.
+    auto wave = [&](double x0, double v, double t) {
+        const double period = 4.0 * L;
+        double u = std::fmod(x0 + L + v * t, period);
+        if (u < 0.0) u += period;
+        return -L + (u <= 2.0 * L ? u : period - u);
+    };
+    const glm::dvec3 p0(0.5, -1.0, 2.0);
+    for (double t : {0.0, 1234.5, 99999.0, 250000.25, 300000.0}) {
+        CAPTURE(t);
+        const ModelPose pose = timeline->evaluate(t).models[1];
+        for (int c = 0; c < 3; ++c) {
+            CHECK(pose.center[c] == Approx(wave(p0[c], v0[c], t)).margin(1e-9));
+            CHECK(std::abs(pose.center[c]) <= L + 1e-12); // inside the box
+        }
+        // Reflections off axis-aligned faces negate one component exactly: the speed is kept.
+        CHECK(glm::length(pose.velocity) == glm::length(v0));
+    }
+    // Wall hits per axis: the unfolded coordinate, from x0 + L, passes 2 L k for k = 1, 2, ...
+    size_t hits = 0;
+    for (int c = 0; c < 3; ++c) hits += static_cast<size_t>(std::floor((p0[c] + L + v0[c] * 300000.0) / (2.0 * L)));
+    CHECK(timeline->events().size() == hits);
+}
+
+TEST_CASE("models that start overlapping are reported once and ignored until they separate") {
+    std::vector<std::string> log;
+    Environment logged({test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
+                       [&](ani_log_level, const std::string &, const std::string &m) { log.push_back(m); });
+    const double r = sphere_radius();
+    Document doc;
+    Model a = model("a", "sphere", true, false), b = model("b", "sphere", true, false);
+    a.initial_velocity = {-1, 0, 0};
+    b.initial_velocity = {1, 0, 0};
+    doc.add_model(a, placed({-0.5 * r, 0, 0})); // centers r apart: overlapping by r
+    doc.add_model(b, placed({0.5 * r, 0, 0}));
+    // Walls at x = -4 and x = 4 send them back towards each other.
+    ModelState left = placed({-4, 0, 0}, 3.0), right = placed({4, 0, 0}, 3.0);
+    left.angles = right.angles = {0, 0, 90};
+    doc.add_model(model("left", "plane", false, false), left);
+    doc.add_model(model("right", "plane", false, false), right);
+    Timeline timeline(doc, logged.plugins);
+    std::vector<std::string> ids = {"sphere", "sphere", "plane", "plane"}, warnings;
+    timeline.set_meshes(load_meshes(ids, logged.assets, {}, warnings));
+    timeline.bake(10.0);
+
+    size_t reports = 0;
+    for (const std::string &m : log) reports += m.find("'a' and 'b' overlap at t = 0") != std::string::npos;
+    CHECK(reports == 1);
+    // No event at t = 0 between them; each hits its wall at (4 - r - 0.5 r) s; then they meet
+    // in the middle, centers 2 r apart, after travelling back.
+    const auto &events = timeline.events();
+    REQUIRE(events.size() >= 3);
+    const double wall = 4.0 - 1.5 * r;
+    CHECK(events[0].t == Approx(wall).epsilon(1e-12));
+    CHECK(events[1].t == Approx(wall).epsilon(1e-12));
+    const double meet = wall + (4.0 - r - r) / 1.0;
+    CHECK(events[2].t == Approx(meet).epsilon(1e-12));
+    CHECK(((events[2].a == 0 && events[2].b == 1) || (events[2].a == 1 && events[2].b == 0)));
+}
