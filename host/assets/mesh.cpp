@@ -34,7 +34,7 @@ void compute_bounding_sphere(Mesh &mesh) {
 
 bool approximates_sphere(const Mesh &mesh) {
     const double r = mesh.bound_radius;
-    if (!(r > 0.0) || mesh.triangles.size() < 3 * 20) return false;
+    if (!(r > 0.0) || mesh.triangles.size() < std::size_t{60} /* 20 triangles */) return false;
     for (const glm::dvec3 &p : mesh.positions)
         if (std::abs(glm::length(p - mesh.bound_center) - r) > 1e-6 * r) return false;
     for (size_t t = 0; t < mesh.triangles.size(); t += 3) {

@@ -38,7 +38,7 @@ std::string csv_field(const std::string &s) {
 
 std::string number(double x) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", x);
+    (void)std::snprintf(buf, sizeof buf, "%.17g", x);
     return buf;
 }
 

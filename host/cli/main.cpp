@@ -4,7 +4,9 @@
 
 #include <iostream>
 
-int main(int argc, char **argv) {
+namespace {
+
+int run_cli(int argc, char **argv) {
     using namespace animator::cli;
     CLI::App app{"animator: a 3D keyframe animator in which models obey physics", "animator"};
     app.set_version_flag("--version", "animator 0.1.0");
@@ -36,5 +38,16 @@ int main(int argc, char **argv) {
     } catch (const std::exception &e) {
         std::cerr << "animator: " << e.what() << "\n";
         return kBadInput;
+    }
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+    try {
+        return run_cli(argc, argv);
+    } catch (...) {
+        std::cerr << "animator: an unexpected error stopped the program\n";
+        return animator::cli::kBadInput;
     }
 }

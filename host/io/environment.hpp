@@ -14,7 +14,7 @@ struct Environment {
     // The default asset roots and plugin folders.
     Environment();
     Environment(std::vector<std::filesystem::path> asset_roots,
-                std::vector<std::filesystem::path> plugin_dirs, PluginRegistry::LogSink log = {});
+                const std::vector<std::filesystem::path> &plugin_dirs, PluginRegistry::LogSink log = {});
 };
 
 } // namespace animator

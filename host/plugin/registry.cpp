@@ -64,7 +64,7 @@ struct PluginRegistry::Library {
     }
 };
 
-PluginRegistry::PluginRegistry(std::vector<fs::path> dirs, LogSink log) : log_(std::move(log)) {
+PluginRegistry::PluginRegistry(const std::vector<fs::path> &dirs, LogSink log) : log_(std::move(log)) {
     if (!log_) {
         log_ = [](ani_log_level level, const std::string &plugin, const std::string &message) {
             static const char *names[] = {"debug", "info", "warning", "error"};

@@ -42,7 +42,7 @@ class PluginRegistry {
                                        const std::string &message)>;
 
     // Searches `dirs` in order. The log sink receives what plugins log (default: stderr).
-    explicit PluginRegistry(std::vector<std::filesystem::path> dirs, LogSink log = {});
+    explicit PluginRegistry(const std::vector<std::filesystem::path> &dirs, LogSink log = {});
     ~PluginRegistry();
     PluginRegistry(const PluginRegistry &) = delete;
     PluginRegistry &operator=(const PluginRegistry &) = delete;

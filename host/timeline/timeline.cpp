@@ -79,9 +79,9 @@ ani_body_state Timeline::state_at(int model, double t) const {
     return state;
 }
 
-void Timeline::set_meshes(std::vector<std::shared_ptr<const Mesh>> meshes) {
+void Timeline::set_meshes(const std::vector<std::shared_ptr<const Mesh>> &meshes) {
     meshes_.clear();
-    for (auto &mesh : meshes) {
+    for (const auto &mesh : meshes) {
         if (!mesh) {
             meshes_.push_back(nullptr);
             continue;

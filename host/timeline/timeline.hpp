@@ -47,7 +47,7 @@ class Timeline {
 
     // The meshes of the models (one per model, null for an empty), for collisions. Without them
     // the backend computes motion without contacts. Invalidates the bake.
-    void set_meshes(std::vector<std::shared_ptr<const Mesh>> meshes);
+    void set_meshes(const std::vector<std::shared_ptr<const Mesh>> &meshes);
 
     // Takes an edited document: the bake is kept up to the earliest time the edit can change
     // and redone from there to where it was.

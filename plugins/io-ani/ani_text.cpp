@@ -70,7 +70,7 @@ std::string quote(const std::string &s) {
 std::string number(double x) {
     char buf[64];
     for (int precision = 15; precision <= 17; ++precision) {
-        std::snprintf(buf, sizeof buf, "%.*g", precision, x);
+        (void)std::snprintf(buf, sizeof buf, "%.*g", precision, x);
         if (std::strtod(buf, nullptr) == x) break;
     }
     return buf;

@@ -167,7 +167,7 @@ class EventBake {
         Obstacle o;
         o.model = i;
         for (uint32_t k = 0; k < 3 * mesh.triangle_count; ++k) {
-            const double *p = mesh.positions + 3 * mesh.triangles[k];
+            const double *p = mesh.positions + 3 * static_cast<size_t>(mesh.triangles[k]);
             o.corners.push_back(glm::dvec3(world * glm::dvec4(p[0], p[1], p[2], 1.0)));
         }
         for (size_t k = 0; k + 2 < o.corners.size(); k += 3) {
