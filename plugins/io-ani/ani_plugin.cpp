@@ -11,6 +11,8 @@
 
 namespace {
 
+constexpr char kPluginId[] = "format.ani";
+
 struct AniInstance {
     const ani_host *host = nullptr;
     std::map<const ani_document_view *, std::unique_ptr<ani::OwnedDocument>> read_documents;
@@ -26,15 +28,6 @@ void *ani_create(const ani_host *host, ani_status *status) {
 }
 
 void ani_destroy(void *instance) { delete static_cast<AniInstance *>(instance); }
-
-ani_status_code ani_get_param(void *, const char *id, ani_param_value *, ani_status *status) {
-    return ani::set_status(status, ANI_ERR_UNKNOWN_PARAM,
-                           std::string("format.ani has no parameter '") + (id ? id : "") + "'");
-}
-
-ani_status_code ani_set_param(void *, const char *id, const ani_param_value *, ani_status *status) {
-    return ani_get_param(nullptr, id, nullptr, status);
-}
 
 int32_t ani_probe(void *, const char *path, const unsigned char *head, size_t head_size) {
     const size_t magic = std::strlen(ani_format::kMagic);
@@ -72,7 +65,7 @@ const char *const ani_extensions[] = {"ani"};
 
 const ani_file_format_api ani_api = {
     sizeof(ani_file_format_api),
-    {sizeof(ani_instance_api), ani_create, ani_destroy, ani_get_param, ani_set_param},
+    {sizeof(ani_instance_api), ani_create, ani_destroy, ani::no_param_get<kPluginId>, ani::no_param_set<kPluginId>},
     ANI_FORMAT_CAN_READ | ANI_FORMAT_CAN_WRITE,
     ani_extensions,
     1,
@@ -84,7 +77,7 @@ const ani_file_format_api ani_api = {
 
 const ani_plugin_descriptor ani_descriptor = {
     sizeof(ani_plugin_descriptor),
-    "format.ani",
+    kPluginId,
     ANI_KIND_FILE_FORMAT,
     "Animator animation (.ani)",
     {1, 0, 0},

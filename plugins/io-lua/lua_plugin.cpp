@@ -11,6 +11,8 @@
 
 namespace {
 
+constexpr char kPluginId[] = "format.lua";
+
 struct LuaInstance {
     const ani_host *host = nullptr;
     std::map<const ani_document_view *, std::unique_ptr<ani::OwnedDocument>> read_documents;
@@ -26,15 +28,6 @@ void *lua_create(const ani_host *host, ani_status *status) {
 }
 
 void lua_destroy(void *instance) { delete static_cast<LuaInstance *>(instance); }
-
-ani_status_code lua_get_param(void *, const char *id, ani_param_value *, ani_status *status) {
-    return ani::set_status(status, ANI_ERR_UNKNOWN_PARAM,
-                           std::string("format.lua has no parameter '") + (id ? id : "") + "'");
-}
-
-ani_status_code lua_set_param(void *, const char *id, const ani_param_value *, ani_status *status) {
-    return lua_get_param(nullptr, id, nullptr, status);
-}
 
 int32_t lua_probe(void *, const char *path, const unsigned char *head, size_t head_size) {
     const size_t n = path ? std::strlen(path) : 0;
@@ -64,7 +57,7 @@ const char *const lua_extensions[] = {"lua"};
 
 const ani_file_format_api lua_api = {
     sizeof(ani_file_format_api),
-    {sizeof(ani_instance_api), lua_create, lua_destroy, lua_get_param, lua_set_param},
+    {sizeof(ani_instance_api), lua_create, lua_destroy, ani::no_param_get<kPluginId>, ani::no_param_set<kPluginId>},
     ANI_FORMAT_CAN_READ,
     lua_extensions,
     1,
@@ -76,7 +69,7 @@ const ani_file_format_api lua_api = {
 
 const ani_plugin_descriptor lua_descriptor = {
     sizeof(ani_plugin_descriptor),
-    "format.lua",
+    kPluginId,
     ANI_KIND_FILE_FORMAT,
     "Lua scene (.lua)",
     {1, 0, 0},

@@ -10,6 +10,8 @@
 
 namespace {
 
+constexpr char kPluginId[] = "physics.custom";
+
 struct Instance {
     const ani_host *host = nullptr;
 };
@@ -24,15 +26,6 @@ void *create(const ani_host *host, ani_status *status) {
 }
 
 void destroy(void *instance) { delete static_cast<Instance *>(instance); }
-
-ani_status_code get_param(void *, const char *id, ani_param_value *, ani_status *status) {
-    return ani::set_status(status, ANI_ERR_UNKNOWN_PARAM,
-                           std::string("physics.custom has no parameter '") + (id ? id : "") + "'");
-}
-
-ani_status_code set_param(void *, const char *id, const ani_param_value *, ani_status *status) {
-    return get_param(nullptr, id, nullptr, status);
-}
 
 ani_status_code bake(void *instance, const ani_physics_scene *scene, double t_begin, double t_end,
                      const ani_bake_sink *sink, ani_status *status) {
@@ -52,13 +45,13 @@ ani_status_code bake(void *instance, const ani_physics_scene *scene, double t_be
 
 const ani_physics_api api = {
     sizeof(ani_physics_api),
-    {sizeof(ani_instance_api), create, destroy, get_param, set_param},
+    {sizeof(ani_instance_api), create, destroy, ani::no_param_get<kPluginId>, ani::no_param_set<kPluginId>},
     bake,
 };
 
 const ani_plugin_descriptor descriptor = {
     sizeof(ani_plugin_descriptor),
-    "physics.custom",
+    kPluginId,
     ANI_KIND_PHYSICS,
     "Custom (exact)",
     {0, 1, 0},

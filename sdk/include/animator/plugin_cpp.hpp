@@ -46,6 +46,18 @@ template <class Fn> ani_status_code guarded(ani_status *status, Fn &&fn) noexcep
     }
 }
 
+// get_param and set_param for a plugin without parameters: every id is unknown. PluginId is a
+// namespace-scope `constexpr char kId[] = "format.ani";`.
+template <const char *PluginId>
+ani_status_code no_param_get(void *, const char *id, ani_param_value *, ani_status *status) {
+    return set_status(status, ANI_ERR_UNKNOWN_PARAM,
+                      std::string(PluginId) + " has no parameter '" + (id ? id : "") + "'");
+}
+template <const char *PluginId>
+ani_status_code no_param_set(void *, const char *id, const ani_param_value *, ani_status *status) {
+    return no_param_get<PluginId>(nullptr, id, nullptr, status);
+}
+
 // The current values of a plugin instance's parameters, starting at their defaults.
 class ParamStore {
   public:
