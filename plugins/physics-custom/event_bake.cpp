@@ -119,6 +119,7 @@ class EventBake {
             if (keyed_until > t_begin_) emit_keyed(i, t_begin_, keyed_until);
             const bool free_now = span.end <= t_begin_;
             const bool free_in_range = free_now || span.end < t_end_;
+            if (!free_in_range) continue; // keyed throughout this bake
             const double free_at = free_now ? t_begin_ : keyed_until;
             // Where the host's cache knows the state (a resumed bake), it says; otherwise the
             // model leaves its keys now.
@@ -134,7 +135,7 @@ class EventBake {
                 continue;
             }
             const std::optional<double> radius = sphere_radius(i, free_at);
-            if (movable && radius && m.group == i && (free_now || free_in_range)) {
+            if (movable && radius && m.group == i) {
                 Body b;
                 b.model = i;
                 b.radius = *radius;
@@ -144,11 +145,11 @@ class EventBake {
                 if (free_now) activate(bodies_.back(), t_begin_, start);
                 continue;
             }
-            if (movable && m.mesh && !radius && free_in_range && m.group == i)
+            if (movable && m.mesh && !radius && m.group == i)
                 log_once("model '" + std::string(name_of(m)) +
                          "' is not a sphere: collisions of other shapes are not computed by physics.custom yet, "
                          "so it moves through other models");
-            if (free_in_range) emit_free(i, start, free_at);
+            emit_free(i, start, free_at);
         }
     }
 

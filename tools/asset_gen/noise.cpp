@@ -53,11 +53,16 @@ double tiled_noise2(double x, double y, int period_x, int period_y, std::uint32_
     return lerp(a, b, ty);
 }
 
-double tiled_fbm2(double x, double y, int period_x, int period_y, int octaves, std::uint32_t seed) {
+namespace {
+
+// Octaves of tiled noise, each at twice the frequency (and period) and half the amplitude of the
+// last, summed through `shape` and normalised by the total amplitude.
+template <class Shape>
+double tiled_octaves(double x, double y, int period_x, int period_y, int octaves, std::uint32_t seed,
+                     Shape shape) {
     double sum = 0.0, amplitude = 1.0, total = 0.0;
     for (int o = 0; o < octaves; ++o) {
-        sum += amplitude *
-               tiled_noise2(x, y, period_x, period_y, seed + static_cast<std::uint32_t>(o));
+        sum += amplitude * shape(tiled_noise2(x, y, period_x, period_y, seed + static_cast<std::uint32_t>(o)));
         total += amplitude;
         x *= 2.0;
         y *= 2.0;
@@ -68,21 +73,16 @@ double tiled_fbm2(double x, double y, int period_x, int period_y, int octaves, s
     return sum / total;
 }
 
+} // namespace
+
+double tiled_fbm2(double x, double y, int period_x, int period_y, int octaves, std::uint32_t seed) {
+    return tiled_octaves(x, y, period_x, period_y, octaves, seed, [](double n) { return n; });
+}
+
 double tiled_turbulence2(double x, double y, int period_x, int period_y, int octaves,
                          std::uint32_t seed) {
-    double sum = 0.0, amplitude = 1.0, total = 0.0;
-    for (int o = 0; o < octaves; ++o) {
-        const double n =
-            tiled_noise2(x, y, period_x, period_y, seed + static_cast<std::uint32_t>(o));
-        sum += amplitude * std::fabs(2.0 * n - 1.0);
-        total += amplitude;
-        x *= 2.0;
-        y *= 2.0;
-        period_x *= 2;
-        period_y *= 2;
-        amplitude *= 0.5;
-    }
-    return sum / total;
+    return tiled_octaves(x, y, period_x, period_y, octaves, seed,
+                         [](double n) { return std::fabs(2.0 * n - 1.0); });
 }
 
 double noise3(double x, double y, double z, std::uint32_t seed) {
