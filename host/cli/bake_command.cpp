@@ -150,6 +150,13 @@ void print_stats(const Timeline &timeline, double wall_seconds) {
               << "skipped:   interpolation for " << key_only_at_zero << " of " << models.size()
               << " models (keyed at t = 0 only); free flight for " << never_free << " of " << models.size()
               << " models (at rest or keyed throughout)\n";
+    for (const auto &[name, value] : st.backend_counts) {
+        std::cout << "  " << name << ": ";
+        if (value == std::floor(value) && std::abs(value) < 9e15)
+            std::cout << static_cast<long long>(value) << "\n";
+        else
+            std::cout << value << "\n";
+    }
 }
 
 int run_bake(const BakeOptions &o) {
@@ -205,7 +212,7 @@ void add_bake_command(CLI::App &app, std::function<int()> &run) {
     cmd->add_option("--trace", o->trace, "write every model's state as CSV: t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz");
     cmd->add_option("--events", o->events, "write collision events as CSV: t,a,b,nx,ny,nz,speed");
     cmd->add_option("--param", o->params, "a backend parameter, NAME=VALUE (repeatable)");
-    cmd->add_flag("--stats", o->stats, "print wall time, segments, events and skipped stages");
+    cmd->add_flag("--stats", o->stats, "print wall time, segments, events, skipped stages and the backend's counts (pair tests done and skipped)");
     cmd->callback([&run, o] { run = [o] { return run_bake(*o); }; });
 }
 

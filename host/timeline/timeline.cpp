@@ -46,6 +46,7 @@ struct BakeContext {
     std::vector<std::vector<ani_motion_segment>> *segments;
     std::vector<ani_collision_event> *events;
     const std::function<bool(double)> *progress;
+    std::map<std::string, double> *counts;
 };
 
 } // namespace
@@ -160,7 +161,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         }
     };
 
-    BakeContext context{this, &segments_, &events_, &progress};
+    BakeContext context{this, &segments_, &events_, &progress, &stats_.backend_counts};
     ani_bake_sink sink{};
     sink.context = &context;
     sink.segment = [](void *c, const ani_motion_segment *s) {
@@ -171,6 +172,9 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     sink.progress = [](void *c, double fraction) -> int32_t {
         auto *ctx = static_cast<BakeContext *>(c);
         return !*ctx->progress || (*ctx->progress)(fraction) ? 1 : 0;
+    };
+    sink.count = [](void *c, const char *name, double value) {
+        if (name && std::isfinite(value)) (*static_cast<BakeContext *>(c)->counts)[name] += value;
     };
 
     ani_status status{};

@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 namespace animator {
@@ -28,6 +29,7 @@ struct Frame {
 struct BakeStats {
     std::size_t bake_calls = 0;
     double seconds_baked = 0.0; // simulated time covered by all bake calls
+    std::map<std::string, double> backend_counts; // the backend's own counts, summed by name
 };
 
 class Timeline {

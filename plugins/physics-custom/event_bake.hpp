@@ -11,8 +11,14 @@
 
 namespace physics_custom {
 
+enum class BroadPhase { kAutomatic = 0, kGrid = 1, kAllPairs = 2 };
+
+struct BakeOptions {
+    BroadPhase broad_phase = BroadPhase::kAutomatic;
+};
+
 // Bakes [t_begin, t_end]: keyed spans, free flight, collisions. Throws ani::Failure.
 void bake_scene(const ani_physics_scene &scene, double t_begin, double t_end, const ani_bake_sink &sink,
-                const ani_host *host);
+                const ani_host *host, const BakeOptions &options = {});
 
 } // namespace physics_custom

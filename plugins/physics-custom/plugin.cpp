@@ -12,8 +12,18 @@ namespace {
 
 constexpr char kPluginId[] = "physics.custom";
 
+const char *const kBroadPhases[] = {"Automatic", "Grid", "All pairs"};
+
+const ani_param_descriptor kParams[] = {
+    {sizeof(ani_param_descriptor), "broad_phase", "Broad phase",
+     "How the bake finds the pairs of spheres that may meet: Automatic uses a uniform grid from 16 "
+     "moving spheres on, Grid always, All pairs tests every pair at every event (the oracle).",
+     ANI_PARAM_ENUM, 0.0, 2.0, {{0.0, 0.0, 0.0, 0.0}}, 0.0, kBroadPhases, 3},
+};
+
 struct Instance {
     const ani_host *host = nullptr;
+    ani::ParamStore params{kParams, sizeof(kParams) / sizeof(kParams[0])};
 };
 
 void *create(const ani_host *host, ani_status *status) {
@@ -27,6 +37,14 @@ void *create(const ani_host *host, ani_status *status) {
 
 void destroy(void *instance) { delete static_cast<Instance *>(instance); }
 
+ani_status_code get_param(void *instance, const char *id, ani_param_value *out, ani_status *status) {
+    return static_cast<Instance *>(instance)->params.get(id, out, status);
+}
+
+ani_status_code set_param(void *instance, const char *id, const ani_param_value *value, ani_status *status) {
+    return static_cast<Instance *>(instance)->params.set(id, value, status);
+}
+
 ani_status_code bake(void *instance, const ani_physics_scene *scene, double t_begin, double t_end,
                      const ani_bake_sink *sink, ani_status *status) {
     return ani::guarded(status, [&] {
@@ -37,7 +55,10 @@ ani_status_code bake(void *instance, const ani_physics_scene *scene, double t_be
         if (!std::isfinite(scene->gravity)) throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "gravity is not finite");
         if (sink->progress && !sink->progress(sink->context, 0.0))
             throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
-        physics_custom::bake_scene(*scene, t_begin, t_end, *sink, static_cast<Instance *>(instance)->host);
+        const Instance &self = *static_cast<Instance *>(instance);
+        physics_custom::BakeOptions options;
+        options.broad_phase = static_cast<physics_custom::BroadPhase>(static_cast<int>(self.params.number("broad_phase")));
+        physics_custom::bake_scene(*scene, t_begin, t_end, *sink, self.host, options);
         if (sink->progress && !sink->progress(sink->context, 1.0))
             throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
     });
@@ -45,7 +66,7 @@ ani_status_code bake(void *instance, const ani_physics_scene *scene, double t_be
 
 const ani_physics_api api = {
     sizeof(ani_physics_api),
-    {sizeof(ani_instance_api), create, destroy, ani::no_param_get<kPluginId>, ani::no_param_set<kPluginId>},
+    {sizeof(ani_instance_api), create, destroy, get_param, set_param},
     bake,
 };
 
@@ -57,8 +78,8 @@ const ani_plugin_descriptor descriptor = {
     {0, 1, 0},
     "The seed's physics, exact: keyed motion, then free fall, constant velocity or projectile "
     "motion after each model's last keyframe, with elastic collisions found at their exact times.",
-    nullptr,
-    0,
+    kParams,
+    sizeof(kParams) / sizeof(kParams[0]),
     &api,
 };
 

@@ -75,9 +75,27 @@ Box swept_box(const Path &path, double t) {
 std::optional<Contact> sphere_sphere(const Path &a, double ra, const Path &b, double rb, double t_max) {
     const glm::dvec3 d = a.p - b.p, e = a.v - b.v, h = 0.5 * (a.a - b.a);
     const double reach = ra + rb;
-    const Quartic f = minus(squared_length(d, e, h), reach * reach);
-    const auto t = first_valid(f, t_max, [](double) { return true; });
-    if (!t) return std::nullopt;
+    std::optional<double> t;
+    if (h == glm::dvec3(0.0)) {
+        // The same acceleration (both under gravity, or neither): the gap closes linearly and
+        // |d + e t|^2 = reach^2 is a quadratic, e.e t^2 + 2 (d.e) t + d.d - reach^2, with the
+        // numerically stable root. Only approaching (d.e < 0) pairs can meet.
+        const double qa = glm::dot(e, e), qb = glm::dot(d, e), qc = glm::dot(d, d) - reach * reach;
+        if (!(qb < 0.0)) return std::nullopt;
+        if (qc <= 0.0) {
+            t = 0.0; // touching (or overlapping) and approaching
+        } else {
+            const double disc = qb * qb - qa * qc;
+            if (disc < 0.0) return std::nullopt;
+            const double root = qc / (-qb + std::sqrt(disc));
+            if (root > t_max) return std::nullopt;
+            t = root;
+        }
+    } else {
+        const Quartic f = minus(squared_length(d, e, h), reach * reach);
+        t = first_valid(f, t_max, [](double) { return true; });
+        if (!t) return std::nullopt;
+    }
     Contact c;
     c.t = *t;
     const glm::dvec3 between = a.at(*t) - b.at(*t);

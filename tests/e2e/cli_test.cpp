@@ -34,7 +34,7 @@ TEST_CASE("animator plugins lists id, kind, version and library, and why any was
     CHECK(broken.exit_code == 0);
     CHECK_THAT(broken.out, Catch::Contains("format.ani"));
     CHECK_THAT(broken.out, Catch::Contains("interpolator.broken"));
-    CHECK_THAT(broken.out, Catch::Contains("refused ") && Catch::Contains("animator-test-wrong-major.so: was built for plugin ABI 2.0"));
+    CHECK_THAT(broken.out, Catch::Contains("refused ") && Catch::Contains("animator-test-wrong-major.so: was built for plugin ABI 2."));
 }
 
 TEST_CASE("animator info prints a document's settings, models and keyframes") {
@@ -148,6 +148,26 @@ TEST_CASE("animator bake runs on every example and reports its statistics") {
             CHECK_THAT(r.out, Catch::Contains("segments:  "));
             CHECK_THAT(r.out, Catch::Contains("skipped:   "));
         }
+}
+
+TEST_CASE("animator bake --stats reports the pair tests the broad phase did and skipped") {
+    const std::string gas = (test::source_dir() / "assets/animations/gas.ani").string();
+    auto count = [](const std::string &out, const std::string &name) {
+        const auto at = out.find("  " + name + ": ");
+        REQUIRE(at != std::string::npos);
+        return std::stod(out.substr(at + name.size() + 4));
+    };
+    const auto grid = test::run_animator("bake " + gas + " --until 5 --stats");
+    const auto pairs = test::run_animator("bake " + gas + " --until 5 --stats --param broad_phase=2");
+    REQUIRE(grid.exit_code == 0);
+    REQUIRE(pairs.exit_code == 0);
+    // 125 balls: the grid tests a few neighbours per prediction, all pairs every other ball.
+    CHECK(count(grid.out, "pair tests done") > 0);
+    CHECK(count(grid.out, "pair tests skipped") > 5 * count(grid.out, "pair tests done"));
+    CHECK(count(grid.out, "cell crossings") > 0);
+    CHECK(count(pairs.out, "pair tests done") > 3 * count(grid.out, "pair tests done"));
+    CHECK(count(pairs.out, "cell crossings") == 0);
+    CHECK(count(grid.out, "collisions") > 1000);
 }
 
 TEST_CASE("animator bake refuses a bad backend, time, step or parameter") {

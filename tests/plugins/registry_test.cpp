@@ -66,8 +66,9 @@ TEST_CASE("each kind of broken plugin is refused with its file and reason while 
     auto refused = refusals_by_file(registry);
 
     CHECK_THAT(refused["animator-test-wrong-major.so"],
-               Catch::Contains("ABI 2.0") && Catch::Contains("this host has ABI 1.0"));
-    CHECK_THAT(refused["animator-test-newer-minor.so"], Catch::Contains("ABI 1.1"));
+               Catch::Contains("ABI 2.") &&
+                   Catch::Contains("this host has ABI 1." + std::to_string(ANI_ABI_MINOR)));
+    CHECK_THAT(refused["animator-test-newer-minor.so"], Catch::Contains("ABI 1." + std::to_string(ANI_ABI_MINOR + 1)));
     CHECK_THAT(refused["animator-test-no-entry.so"], Catch::Contains("no entry symbol"));
     CHECK_THAT(refused["animator-test-duplicate-id.so"],
                Catch::Contains("'format.ani'") && Catch::Contains("already provided"));

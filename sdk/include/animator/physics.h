@@ -100,6 +100,10 @@ typedef struct ani_bake_sink {
     /* Reports progress in [0, 1]; returns 0 when the host asks the bake to stop, which then
      * returns ANI_ERR_CANCELLED. */
     int32_t (*progress)(void *context, double fraction);
+    /* Since ABI 1.1 (a backend built for 1.1 runs only in a host of 1.1 or newer, which always
+     * sets this field, possibly to NULL): a count of the backend's work, reported at the end of
+     * a bake, such as "pair tests done"; the host adds the counts of its bakes up by name. */
+    void (*count)(void *context, const char *name, double value);
 } ani_bake_sink;
 
 typedef struct ani_physics_api {

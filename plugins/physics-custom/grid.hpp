@@ -1,0 +1,68 @@
+// The broad phase of the event-driven bake for many bodies: a uniform grid of cells at least as
+// wide as the largest sphere, over the region where the scene happens. A body is filed under the
+// cell its center is in; two spheres can only touch when their cells are neighbours (of the 27
+// around either), and a body changes cell at an exact cell-crossing time, which is an event of
+// its own. Cells are hashed, so an empty region costs nothing.
+#pragma once
+
+#include "time_of_impact.hpp"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+namespace physics_custom {
+
+using Cell = std::array<int64_t, 3>;
+
+// The first time s in [0, t_max] at which the center on `path` crosses a wall of `box` outwards:
+// the time, the axis (0, 1, 2) and the direction (+1 through the upper wall, -1 the lower). A
+// center on a wall (or beyond it by rounding) and moving out crosses at 0; one moving in does not.
+struct Exit {
+    double t = 0.0;
+    int axis = 0;
+    int direction = 0;
+};
+std::optional<Exit> first_exit(const Path &path, const Box &box, double t_max);
+
+class UniformGrid {
+  public:
+    // Cells of side `cell` (widened if the region would need more than 2^20 per axis) covering
+    // `region`. Bodies outside the region are not filed.
+    UniformGrid(const Box &region, double cell);
+
+    double cell_size() const { return cell_; }
+    Cell cell_of(const glm::dvec3 &p) const;
+    bool inside(const Cell &c) const;
+    Box bounds(const Cell &c) const;
+
+    void insert(uint32_t body, const Cell &c);
+    void remove(uint32_t body, const Cell &c);
+
+    // Calls f(body) for every body filed in the 27 cells around c (c included).
+    template <class F> void for_neighbours(const Cell &c, F &&f) const {
+        for (int64_t dx = -1; dx <= 1; ++dx)
+            for (int64_t dy = -1; dy <= 1; ++dy)
+                for (int64_t dz = -1; dz <= 1; ++dz) {
+                    const auto it = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
+                    if (it == cells_.end()) continue;
+                    for (uint32_t body : it->second) f(body);
+                }
+    }
+
+  private:
+    uint64_t key(const Cell &c) const {
+        // Cells run from -1 to counts_ per axis (the neighbours of the edge cells), 21 bits each.
+        return static_cast<uint64_t>(c[0] + 1) | static_cast<uint64_t>(c[1] + 1) << 21 |
+               static_cast<uint64_t>(c[2] + 1) << 42;
+    }
+
+    glm::dvec3 origin_;
+    double cell_;
+    Cell counts_;
+    std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
+};
+
+} // namespace physics_custom
