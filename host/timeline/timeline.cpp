@@ -123,6 +123,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     std::vector<ani_physics_model> scene_models(models.size());
     std::vector<ani_time_span> spans(models.size());
     std::vector<ani_body_state> starts(models.size());
+    std::vector<std::vector<double>> key_times(models.size());
     for (size_t m = 0; m < models.size(); ++m) starts[m] = state_at(static_cast<int>(m), from);
     for (size_t m = 0; m < models.size(); ++m) {
         ani_physics_model &pm = scene_models[m];
@@ -138,6 +139,9 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         pm.keyed_spans = &spans[m];
         pm.keyed_span_count = 1;
         pm.start = starts[m];
+        for (const Keyframe *k : doc_.keys_of(static_cast<int>(m))) key_times[m].push_back(static_cast<double>(k->time_ms) / 1000.0);
+        pm.key_times = key_times[m].data();
+        pm.key_count = static_cast<uint32_t>(key_times[m].size());
     }
     ani_physics_scene scene{};
     scene.struct_size = sizeof scene;

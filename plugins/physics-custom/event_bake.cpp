@@ -3,6 +3,7 @@
 #include "event_queue.hpp"
 #include "free_motion.hpp"
 #include "grid.hpp"
+#include "keyed_contact.hpp"
 #include "polynomial.hpp"
 #include "response.hpp"
 #include "time_of_impact.hpp"
@@ -11,8 +12,11 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtx/euler_angles.hpp>
+#include <glm/mat3x3.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -31,22 +35,35 @@ ani_vec3 ani(const glm::dvec3 &v) { return {v.x, v.y, v.z}; }
 
 const char *name_of(const ani_physics_model &m) { return m.desc && m.desc->name ? m.desc->name : "?"; }
 
-// A movable sphere once it is free.
+// A model that takes part in collisions and moves: a sphere (Dynamics or Gravity on), or any
+// model with a mesh while its keys drive it (a moving wall). Over the bake a body is keyed (its
+// keys move it), free (a closed-form segment), or waiting (keyed, but with nothing to collide).
 struct Body {
+    enum class Mode { kKeyed, kFree };
     uint32_t model = 0;
-    double radius = 0.0;
+    bool sphere = false;       // the seed's sphere special case; otherwise the model's triangles
+    double radius = 0.0;       // for a sphere: its radius when free
+    double reach = 0.0;        // the farthest a vertex is from the model's origin, in model space
     bool dynamics = false;
-    bool active = false;  // free (past its keys) and colliding
-    double free_at = kNever;
-    double t0 = 0.0;      // start of the current segment
-    Path path;            // center(t) = path.at(t - t0)
+    Mode mode = Mode::kFree;
+    bool active = false;       // free and colliding, or keyed and colliding
+    double keys_end = kNever;  // when its last key passes (then it is free)
+    double resume_at = kNever; // released from its keys at a contact: the next key, where they resume
+    double keyed_from = 0.0;   // start of the current keyed stretch (to report it)
+    double t0 = 0.0;           // start of the current free segment
+    Path path;                 // free: center(t) = path.at(t - t0)
     int motion = ANI_MOTION_FREE;
-    uint64_t version = 0; // counts the changes of path: events predicted against an older path are stale
-    bool in_grid = false;
+    uint64_t version = 0;      // counts the changes of path: events predicted against an older one are stale
+    bool in_grid = false;      // free spheres only
     Cell cell{};
     int ignored_obstacles = 0; // obstacles it overlapped and does not collide with until apart
 
-    bool still() const { return motion == ANI_MOTION_REST || (path.v == glm::dvec3(0.0) && path.a == glm::dvec3(0.0)); }
+    bool keyed() const { return mode == Mode::kKeyed; }
+    bool free_sphere() const { return sphere && mode == Mode::kFree; }
+    bool still() const {
+        return mode == Mode::kFree &&
+               (motion == ANI_MOTION_REST || (path.v == glm::dvec3(0.0) && path.a == glm::dvec3(0.0)));
+    }
 };
 
 // The triangles of a static model, in world space, with their bounding sphere.
@@ -58,8 +75,14 @@ struct Obstacle {
     double radius = 0.0;
 };
 
+// Where a body is and how it is placed at one time: world = center + linear * model-space point.
+struct Pose {
+    glm::dvec3 center{0.0}, velocity{0.0};
+    glm::dmat3 linear{1.0};
+};
+
 // A body's earliest predicted event.
-enum class EventKind { kNone, kActivation, kBody, kObstacle, kCell, kRelease, kRecheck };
+enum class EventKind { kNone, kActivation, kResume, kBody, kObstacle, kCell, kRelease, kRecheck };
 struct Predicted {
     double t = kNever;
     EventKind kind = EventKind::kNone;
@@ -82,10 +105,9 @@ Predicted predicted(double t, EventKind kind, int other = -1, uint64_t other_ver
 // Bodies from which on the grid pays for its cell crossings.
 constexpr std::size_t kGridFrom = 16;
 
-glm::dmat4 model_matrix(const ani_model_state &s) {
-    return glm::translate(glm::dmat4(1.0), vec(s.center)) *
-           glm::eulerAngleXYZ(glm::radians(s.angles.x), glm::radians(s.angles.y), glm::radians(s.angles.z)) *
-           glm::scale(glm::dmat4(1.0), vec(s.scale));
+glm::dmat3 linear_part(const ani_model_state &s) {
+    return glm::dmat3(glm::eulerAngleXYZ(glm::radians(s.angles.x), glm::radians(s.angles.y), glm::radians(s.angles.z))) *
+           glm::dmat3(glm::scale(glm::dmat4(1.0), vec(s.scale)));
 }
 
 bool uniform(const ani_vec3 &s) { return s.x == s.y && s.y == s.z && s.x > 0.0; }
@@ -97,6 +119,12 @@ ani_model_state keyed_state(const ani_physics_scene &scene, uint32_t m, double t
         throw ani::Failure(ANI_ERR_FAILED, std::string("cannot evaluate the keys of model '") + name_of(scene.models[m]) + "'");
     if (velocity) *velocity = vec(v);
     return state;
+}
+
+double frobenius(const glm::dmat3 &m) {
+    double sum = 0.0;
+    for (int c = 0; c < 3; ++c) sum += glm::dot(m[c], m[c]);
+    return std::sqrt(sum);
 }
 
 class EventBake {
@@ -131,56 +159,90 @@ class EventBake {
                 !sink_.progress(sink_.context, (now - t_begin_) / std::max(t_end_ - t_begin_, 1e-300)))
                 throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
         }
-        for (Body &b : bodies_)
-            if (b.active) close_segment(b, t_end_);
+        for (Body &b : bodies_) {
+            if (b.keyed())
+                emit_keyed(b.model, b.keyed_from, t_end_);
+            else if (b.active)
+                close_segment(b, t_end_);
+        }
         report_counts();
     }
 
   private:
-    // Keyed spans are reported as they are; the rest of each model's time is free flight,
-    // with collisions for the spheres, and without for the others.
+    // Sorts the models: static ones with a mesh are obstacles; spheres that can move and models
+    // with a mesh that are keyed during the bake are bodies; the rest (jointed parts, models
+    // without a mesh, free models that are not spheres) move without collisions.
     void classify() {
         for (uint32_t i = 0; i < scene_.model_count; ++i) {
             const ani_physics_model &m = scene_.models[i];
             if (!m.desc) throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "a model has no description");
             const ani_time_span span = m.keyed_span_count ? m.keyed_spans[0] : ani_time_span{t_begin_, t_begin_};
             const double keyed_until = std::min(std::max(span.end, t_begin_), t_end_);
-            if (keyed_until > t_begin_) emit_keyed(i, t_begin_, keyed_until);
             const bool free_now = span.end <= t_begin_;
-            const bool free_in_range = free_now || span.end < t_end_;
-            if (!free_in_range) continue; // keyed throughout this bake
-            const double free_at = free_now ? t_begin_ : keyed_until;
-            // Where the host's cache knows the state (a resumed bake), it says; otherwise the
-            // model leaves its keys now.
-            const ani_body_state start =
-                free_now && m.start.motion != ANI_MOTION_KEYED ? m.start : leaving_keys(i, free_at);
+            // A model released from its keys in an earlier bake is still free where that bake
+            // left it (the host's cache says so), until its next key.
+            const bool released = !free_now && m.start.motion != ANI_MOTION_KEYED;
             const ani_model_desc &d = *m.desc;
             const bool movable = d.dynamics || d.gravity;
+            const bool solid = m.mesh && m.mesh->triangle_count > 0 && m.group == i;
+            const bool keyed_here = !free_now && span.end > t_begin_;
 
             // A static model (it never moves again) is an obstacle made of its triangles.
-            if (!movable && free_now && m.mesh && m.group == i) {
+            if (!movable && free_now && solid) {
                 add_obstacle(i, t_begin_);
-                emit_free(i, start, free_at);
+                emit_free(i, start_of(i, t_begin_), t_begin_);
                 continue;
             }
-            const std::optional<double> radius = sphere_radius(i, free_at);
-            if (movable && radius && m.group == i) {
+            const std::optional<double> radius = sphere_radius(i, free_now ? t_begin_ : keyed_until);
+            if (solid && ((movable && radius) || keyed_here)) {
                 Body b;
                 b.model = i;
-                b.radius = *radius;
+                b.sphere = radius.has_value();
+                b.radius = radius.value_or(0.0);
+                b.reach = mesh_reach(*m.mesh);
                 b.dynamics = d.dynamics != 0;
-                b.free_at = free_at;
-                b.path.p = vec(start.center); // where it will be free, for the grid's region
+                b.keys_end = free_now ? t_begin_ : span.end;
                 bodies_.push_back(b);
-                if (free_now) activate(bodies_.back(), t_begin_, start);
+                Body &body = bodies_.back();
+                if (released) {
+                    activate(body, t_begin_, m.start);
+                    if (!body.dynamics) stop(body);
+                    body.resume_at = next_key(i, t_begin_);
+                } else if (free_now) {
+                    activate(body, t_begin_, start_of(i, t_begin_));
+                } else {
+                    body.mode = Body::Mode::kKeyed;
+                    body.keyed_from = t_begin_;
+                    body.active = true;
+                }
+                body.path.p = body.keyed() ? vec(keyed_state(scene_, i, t_begin_, nullptr).center) : body.path.p;
+                if (!body.sphere)
+                    log_once("model '" + std::string(name_of(m)) +
+                             "' is not a sphere: physics.custom computes its contacts with spheres, but not yet with "
+                             "static models or other models that are not spheres, which it moves through");
                 continue;
             }
-            if (movable && m.mesh && !radius && m.group == i)
-                log_once("model '" + std::string(name_of(m)) +
-                         "' is not a sphere: collisions of other shapes are not computed by physics.custom yet, "
-                         "so it moves through other models");
-            emit_free(i, start, free_at);
+            if (keyed_until > t_begin_) emit_keyed(i, t_begin_, keyed_until);
+            if (!(free_now || span.end < t_end_)) continue; // keyed throughout this bake
+            emit_free(i, start_of(i, free_now ? t_begin_ : keyed_until), free_now ? t_begin_ : keyed_until);
         }
+    }
+
+    // The state a model is in at t: the host's cache where a resumed bake starts, otherwise its
+    // keys' (physics.md: where and how fast it leaves them).
+    ani_body_state start_of(uint32_t i, double t) {
+        const ani_physics_model &m = scene_.models[i];
+        if (t == t_begin_ && m.start.motion != ANI_MOTION_KEYED) return m.start;
+        return leaving_keys(i, t);
+    }
+
+    // The first of the model's keys after t (the end of its keys if none is in between).
+    double next_key(uint32_t i, double t) const {
+        const ani_physics_model &m = scene_.models[i];
+        if (m.struct_size >= offsetof(ani_physics_model, key_count) + sizeof(m.key_count) && m.key_times)
+            for (uint32_t k = 0; k < m.key_count; ++k)
+                if (m.key_times[k] > t) return m.key_times[k];
+        return m.keyed_span_count ? m.keyed_spans[0].end : t;
     }
 
     std::optional<double> sphere_radius(uint32_t i, double t) {
@@ -194,12 +256,13 @@ class EventBake {
 
     void add_obstacle(uint32_t i, double t) {
         const ani_mesh_view &mesh = *scene_.models[i].mesh;
-        const glm::dmat4 world = model_matrix(keyed_state(scene_, i, t, nullptr));
+        const ani_model_state state = keyed_state(scene_, i, t, nullptr);
+        const glm::dmat3 linear = linear_part(state);
         Obstacle o;
         o.model = i;
         for (uint32_t k = 0; k < 3 * mesh.triangle_count; ++k) {
             const double *p = mesh.positions + 3 * static_cast<size_t>(mesh.triangles[k]);
-            o.corners.push_back(glm::dvec3(world * glm::dvec4(p[0], p[1], p[2], 1.0)));
+            o.corners.push_back(vec(state.center) + linear * glm::dvec3(p[0], p[1], p[2]));
         }
         for (size_t k = 0; k + 2 < o.corners.size(); k += 3) {
             Box box{o.corners[k], o.corners[k]};
@@ -217,9 +280,10 @@ class EventBake {
         obstacles_.push_back(std::move(o));
     }
 
-    // With many bodies, a grid over the region where they start and the obstacles are; bodies
-    // that leave it are tested against every body. With few, every body is tested against
-    // every other (the grid's crossings would cost more than they save).
+    // With many bodies, a grid over the region where they start and the obstacles are; free
+    // spheres that leave it, keyed bodies and meshes are tested against every body. With few,
+    // every body is tested against every other (the grid's crossings would cost more than they
+    // save).
     void build_broad_phase() {
         if (bodies_.empty() || options_.broad_phase == BroadPhase::kAllPairs ||
             (options_.broad_phase == BroadPhase::kAutomatic && bodies_.size() < kGridFrom))
@@ -227,10 +291,12 @@ class EventBake {
         double widest = 0.0;
         Box region{bodies_[0].path.p, bodies_[0].path.p};
         for (const Body &b : bodies_) {
+            if (!b.sphere) continue;
             widest = std::max(widest, 2.0 * b.radius);
             region.lo = glm::min(region.lo, b.path.p);
             region.hi = glm::max(region.hi, b.path.p);
         }
+        if (!(widest > 0.0)) return;
         for (const Obstacle &o : obstacles_)
             for (const Box &box : o.boxes) {
                 region.lo = glm::min(region.lo, box.lo);
@@ -245,10 +311,11 @@ class EventBake {
             if (bodies_[i].active) file(static_cast<int>(i), t_begin_);
     }
 
-    // Files an active body under its cell, or among the bodies outside the grid.
+    // Files an active body: a free sphere under its cell, any other among the bodies outside
+    // the grid.
     void file(int i, double t) {
         Body &b = bodies_[static_cast<size_t>(i)];
-        if (grid_) {
+        if (grid_ && b.free_sphere()) {
             b.cell = grid_->cell_of(b.path.at(t - b.t0));
             b.in_grid = grid_->inside(b.cell);
             if (b.in_grid) {
@@ -259,13 +326,34 @@ class EventBake {
         outside_.push_back(i);
     }
 
+    void unfile(int i) {
+        Body &b = bodies_[static_cast<size_t>(i)];
+        if (b.in_grid) {
+            grid_->remove(static_cast<uint32_t>(i), b.cell);
+            b.in_grid = false;
+            return;
+        }
+        const auto at = std::find(outside_.begin(), outside_.end(), i);
+        if (at != outside_.end()) outside_.erase(at);
+    }
+
+    // Free from t with the given state: the closed form of physics.md's four cases.
     void activate(Body &b, double t, const ani_body_state &start) {
         const ani_motion_segment s = free_segment(b.model, *scene_.models[b.model].desc, start, t, t_end_, ani(gravity_));
+        b.mode = Body::Mode::kFree;
         b.active = true;
+        if (b.sphere)
+            if (auto r = sphere_radius(b.model, t)) b.radius = *r; // its keys may have scaled it
         b.t0 = t;
         b.path = Path{vec(s.p0), vec(s.v0), vec(s.a)};
         b.motion = s.motion;
         ++b.version;
+    }
+
+    // Without Dynamics, a model released from its keys rests where the contact left it.
+    static void stop(Body &b) {
+        b.path = Path{b.path.p, glm::dvec3(0.0), glm::dvec3(0.0)};
+        b.motion = ANI_MOTION_REST;
     }
 
     // The state a model leaves its keys with at time t (physics.md: where and how fast).
@@ -288,6 +376,7 @@ class EventBake {
     }
 
     void emit_keyed(uint32_t i, double t0, double t1) {
+        if (!(t1 > t0)) return;
         ani_motion_segment s{};
         s.model = i;
         s.motion = ANI_MOTION_KEYED;
@@ -323,23 +412,181 @@ class EventBake {
         ++b.version;
     }
 
-    // The path of a body from `now`, for time-of-impact queries over [0, t_end - now].
+    // ---- where bodies are ------------------------------------------------------------------
+
+    // The path of a free body from `now`, for time-of-impact queries over [0, t_end - now].
     Path from_now(const Body &b, double now) const {
         return Path{b.path.at(now - b.t0), b.path.velocity(now - b.t0), b.path.a};
     }
 
+    // A body's pose at t: its keys', or its free path's center with its keys' rotation and
+    // scale (which always come from the keys).
+    Pose pose(const Body &b, double t) const {
+        glm::dvec3 v;
+        const ani_model_state s = keyed_state(scene_, b.model, t, &v);
+        Pose p;
+        p.linear = linear_part(s);
+        if (b.keyed()) {
+            p.center = vec(s.center);
+            p.velocity = v;
+        } else {
+            p.center = b.path.at(t - b.t0);
+            p.velocity = b.path.velocity(t - b.t0);
+        }
+        return p;
+    }
+
+    const ani_mesh_view &mesh_of(const Body &b) const { return *scene_.models[b.model].mesh; }
+
+    glm::dvec3 vertex(const ani_mesh_view &mesh, uint32_t k) const {
+        const double *p = mesh.positions + 3 * static_cast<size_t>(k);
+        return {p[0], p[1], p[2]};
+    }
+
+    // The farthest a vertex of the mesh is from the model's origin, in model space.
+    static double mesh_reach(const ani_mesh_view &mesh) {
+        double r = 0.0;
+        for (uint32_t k = 0; k < mesh.vertex_count; ++k) {
+            const double *p = mesh.positions + 3 * static_cast<size_t>(k);
+            r = std::max(r, glm::length(glm::dvec3(p[0], p[1], p[2])));
+        }
+        return r;
+    }
+
+    // The nearest point of a mesh body (at pose p) to q.
+    glm::dvec3 nearest_on_mesh(const Body &b, const Pose &p, const glm::dvec3 &q) const {
+        const ani_mesh_view &mesh = mesh_of(b);
+        glm::dvec3 best = p.center;
+        double best_d = kNever;
+        for (uint32_t k = 0; k < mesh.triangle_count; ++k) {
+            const uint32_t *tri = mesh.triangles + 3 * static_cast<size_t>(k);
+            const glm::dvec3 c = closest_point_on_triangle(q, p.center + p.linear * vertex(mesh, tri[0]),
+                                                           p.center + p.linear * vertex(mesh, tri[1]),
+                                                           p.center + p.linear * vertex(mesh, tri[2]));
+            const double d = glm::length(q - c);
+            if (d < best_d) {
+                best_d = d;
+                best = c;
+            }
+        }
+        return best;
+    }
+
+    glm::dvec3 nearest_on_obstacle(const Obstacle &o, const glm::dvec3 &q) const {
+        glm::dvec3 best = o.center;
+        double best_d = kNever;
+        for (size_t k = 0; k + 2 < o.corners.size(); k += 3) {
+            const glm::dvec3 c = closest_point_on_triangle(q, o.corners[k], o.corners[k + 1], o.corners[k + 2]);
+            const double d = glm::length(q - c);
+            if (d < best_d) {
+                best_d = d;
+                best = c;
+            }
+        }
+        return best;
+    }
+
+    // How fast any point of a body can move around time t, from its pose and one a moment
+    // later (the speed of its center plus the rate of its rotation and scale times its reach).
+    double point_speed(const Body &b, double t, double dt) const {
+        if (b.free_sphere()) return glm::length(b.path.velocity(t - b.t0)) + glm::length(b.path.a) * dt;
+        const double h = std::max(1e-6, dt);
+        const Pose p = pose(b, t), q = pose(b, t + h);
+        const double reach = b.sphere ? 0.0 : b.reach;
+        const double turning = frobenius(q.linear - p.linear) / h * reach;
+        const double speed = std::max(glm::length(p.velocity), glm::length(q.velocity)) + turning;
+        // Keyed motion is known only by evaluation: a margin for its changes within the step.
+        return b.keyed() ? 1.5 * speed + 1e-12 : speed + glm::length(b.path.a) * dt;
+    }
+
+    // The velocity of the material point of body b at `point` at time t (a keyed model turning
+    // or scaling moves each of its points differently).
+    glm::dvec3 point_velocity(const Body &b, const glm::dvec3 &point, double t) const {
+        const Pose p = pose(b, t);
+        if (b.sphere || !b.keyed()) return p.velocity;
+        const glm::dvec3 local = glm::inverse(p.linear) * (point - p.center);
+        const double h = 1e-6 * std::max(1.0, std::abs(t));
+        const Pose before = pose(b, t - h), after = pose(b, t + h);
+        return ((after.center + after.linear * local) - (before.center + before.linear * local)) / (2.0 * h);
+    }
+
+    // ---- overlaps at the start -------------------------------------------------------------
+
+    double gap_between(const Body &a, const Body &b, double t, Contact *contact = nullptr) const {
+        // At least one of them is a sphere (mesh against mesh is not computed).
+        const Body &s = a.sphere ? a : b, &o = a.sphere ? b : a;
+        const Pose ps = pose(s, t), po = pose(o, t);
+        glm::dvec3 nearest;
+        double gap;
+        const double rs = radius_at(s, ps);
+        if (o.sphere) {
+            const double ro = radius_at(o, po);
+            nearest = po.center + (glm::length(ps.center - po.center) > 0.0 ? glm::normalize(ps.center - po.center) * ro
+                                                                            : glm::dvec3(0.0));
+            gap = glm::length(ps.center - po.center) - rs - ro;
+        } else {
+            const double reach = o.reach * frobenius(po.linear);
+            const double far = glm::length(ps.center - po.center) - rs - reach;
+            // While far apart, the bounding spheres' gap is a lower bound that is enough.
+            if (far > 0.25 * (rs + reach) && !contact) return far;
+            nearest = nearest_on_mesh(o, po, ps.center);
+            gap = glm::length(ps.center - nearest) - rs;
+        }
+        if (contact) {
+            glm::dvec3 n = ps.center - nearest;
+            n = glm::length(n) > 0.0 ? glm::normalize(n) : glm::dvec3(0, 1, 0);
+            if (&s != &a) n = -n; // from b towards a
+            contact->normal = n;
+            contact->point = nearest;
+            contact->t = t;
+        }
+        return gap;
+    }
+
+    double gap_to_obstacle(const Body &b, const Obstacle &o, double t, Contact *contact = nullptr) const {
+        const Pose p = pose(b, t);
+        const glm::dvec3 c = p.center;
+        const double r = radius_at(b, p);
+        const double far = glm::length(c - o.center) - r - o.radius;
+        if (far > 0.25 * (r + o.radius) && !contact) return far;
+        const glm::dvec3 nearest = nearest_on_obstacle(o, c);
+        if (contact) {
+            const glm::dvec3 n = c - nearest;
+            contact->normal = glm::length(n) > 0.0 ? glm::normalize(n) : glm::dvec3(0, 1, 0);
+            contact->point = nearest;
+            contact->t = t;
+        }
+        return glm::length(c - nearest) - r;
+    }
+
+    // A sphere's radius at a pose: a keyed sphere's scale may change under its keys.
+    double radius_at(const Body &b, const Pose &p) const {
+        if (!b.keyed()) return b.radius;
+        return scene_.models[b.model].mesh->bound_radius * frobenius(p.linear) / std::sqrt(3.0);
+    }
+
     bool overlaps_obstacle(const Body &b, const Obstacle &o, double t) const {
-        const glm::dvec3 c = b.path.at(t - b.t0);
-        if (glm::length(c - o.center) > b.radius + o.radius) return false;
-        for (size_t k = 0; k + 2 < o.corners.size(); k += 3)
-            if (glm::length(c - closest_point_on_triangle(c, o.corners[k], o.corners[k + 1], o.corners[k + 2])) < b.radius)
-                return true;
-        return false;
+        if (!b.sphere) return false;
+        if (b.free_sphere()) {
+            const glm::dvec3 c = b.path.at(t - b.t0);
+            if (glm::length(c - o.center) > b.radius + o.radius) return false;
+            for (size_t k = 0; k + 2 < o.corners.size(); k += 3)
+                if (glm::length(c - closest_point_on_triangle(c, o.corners[k], o.corners[k + 1], o.corners[k + 2])) < b.radius)
+                    return true;
+            return false;
+        }
+        return gap_to_obstacle(b, o, t) < -tolerance(b);
     }
 
     bool overlaps_body(const Body &a, const Body &b, double t) const {
-        return glm::length(a.path.at(t - a.t0) - b.path.at(t - b.t0)) < a.radius + b.radius;
+        if (!a.sphere && !b.sphere) return false;
+        if (a.free_sphere() && b.free_sphere())
+            return glm::length(a.path.at(t - a.t0) - b.path.at(t - b.t0)) < a.radius + b.radius;
+        return gap_between(a, b, t) < -std::max(tolerance(a), tolerance(b));
     }
+
+    // How close counts as touching for conservative advancement: a trillionth of the size.
+    static double tolerance(const Body &b) { return 1e-12 * std::max(1.0, b.sphere ? b.radius : b.reach); }
 
     // Calls f(j) for every active body that body i could meet: its grid neighbours and the
     // bodies outside the grid, or every body when i itself is outside.
@@ -358,7 +605,8 @@ class EventBake {
     }
 
     // Reports the pairs with body i that overlap at t (at the start, or when i becomes free
-    // inside another) and ignores them until they separate (physics.md).
+    // inside another, or its keys take it back inside one) and ignores them until they
+    // separate (physics.md).
     void find_overlaps(int i, double t) {
         Body &b = bodies_[static_cast<size_t>(i)];
         for (size_t o = 0; o < obstacles_.size(); ++o)
@@ -386,26 +634,30 @@ class EventBake {
 
     bool is_ignored(int a, int b) const { return !ignored_.empty() && ignored_.count(pair_key(a, b)); }
 
-    // Predicts body i's earliest event after `now`: becoming free, leaving its cell, meeting a
-    // body or an obstacle, or separating from a body it overlapped.
+    // ---- predictions -----------------------------------------------------------------------
+
+    // Predicts body i's earliest event after `now`: leaving or resuming its keys, leaving its
+    // cell, meeting a body or an obstacle, or separating from one it overlapped.
     void predict(int i, double now) {
         Body &b = bodies_[static_cast<size_t>(i)];
         Predicted next;
+        if (b.keyed())
+            next = predicted(b.keys_end, EventKind::kActivation);
+        else if (b.resume_at < kNever)
+            next = predicted(b.resume_at, EventKind::kResume);
         if (!b.active) {
-            if (b.free_at >= now) next = predicted(b.free_at, EventKind::kActivation);
             set_prediction(i, next);
             return;
         }
         ++count_.predictions;
         if (b.ignored_obstacles > 0) recheck_obstacles(i, now, next);
-        if (b.still()) { // still bodies are met, they do not meet: the movers predict
+        if (b.still() && b.sphere) { // still spheres are met, they do not meet: the movers predict
             set_prediction(i, next);
             return;
         }
-        const Path path = from_now(b, now);
         double limit = std::min(t_end_, next.t) - now;
         if (b.in_grid)
-            if (auto exit = first_exit(path, grid_->bounds(b.cell), limit)) {
+            if (auto exit = first_exit(from_now(b, now), grid_->bounds(b.cell), limit)) {
                 limit = exit->t;
                 next = predicted(now + exit->t, EventKind::kCell);
                 next.exit = *exit;
@@ -413,39 +665,112 @@ class EventBake {
         std::size_t tested = 0;
         for_candidates(i, [&](int j) {
             const Body &o = bodies_[static_cast<size_t>(j)];
-            if (!o.active) return;
-            const Path other = from_now(o, now);
-            if (is_ignored(i, j)) {
-                // They overlap: the moment they are apart again (|d|^2 - R^2 turns non-negative).
-                const glm::dvec3 d = path.p - other.p, e = path.v - other.v, h = 0.5 * (path.a - other.a);
-                const double reach = b.radius + o.radius;
-                Quartic gap = {glm::dot(d, d) - reach * reach, 2.0 * glm::dot(d, e), glm::dot(e, e) + 2.0 * glm::dot(d, h),
-                               2.0 * glm::dot(e, h), glm::dot(h, h)};
-                for (double &c : gap) c = -c;
-                if (auto s = first_contact(gap, 0.0, limit); s && now + *s < next.t) {
-                    next = predicted(now + *s, EventKind::kRelease, j);
-                    limit = *s;
+            if (!o.active || (!b.sphere && !o.sphere)) return;
+            if (!is_ignored(i, j)) {
+                ++tested;
+                std::optional<Contact> c;
+                if (b.free_sphere() && o.free_sphere())
+                    c = sphere_sphere(from_now(b, now), b.radius, from_now(o, now), o.radius, limit);
+                else if (!(b.still() && o.still()))
+                    c = advance(i, j, -1, now, limit); // may find them overlapping, and ignore them
+                if (c) {
+                    next = predicted(now + c->t, EventKind::kBody, j, o.version, *c);
+                    limit = c->t;
                 }
-                return;
             }
-            ++tested;
-            if (auto c = sphere_sphere(path, b.radius, other, o.radius, limit)) {
-                next = predicted(now + c->t, EventKind::kBody, j, o.version, *c);
-                limit = c->t;
-            }
+            if (is_ignored(i, j)) predict_release(i, j, now, limit, next);
         });
         count_.done += tested;
         count_.skipped += (bodies_.size() - 1) - tested;
-        predict_obstacles(i, path, now, limit, next);
+        if (b.sphere) predict_obstacles(i, now, limit, next);
+        if (b.ignored_obstacles > 0) recheck_obstacles(i, now, next);
         set_prediction(i, next);
     }
 
-    void predict_obstacles(int i, const Path &path, double now, double limit, Predicted &next) {
+    // Two overlapping bodies: the moment they are apart again.
+    void predict_release(int i, int j, double now, double &limit, Predicted &next) {
+        const Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
+        std::optional<double> s;
+        if (b.free_sphere() && o.free_sphere()) {
+            // |d|^2 - R^2 turns non-negative.
+            const Path path = from_now(b, now), other = from_now(o, now);
+            const glm::dvec3 d = path.p - other.p, e = path.v - other.v, h = 0.5 * (path.a - other.a);
+            const double reach = b.radius + o.radius;
+            Quartic gap = {glm::dot(d, d) - reach * reach, 2.0 * glm::dot(d, e), glm::dot(e, e) + 2.0 * glm::dot(d, h),
+                           2.0 * glm::dot(e, h), glm::dot(h, h)};
+            for (double &c : gap) c = -c;
+            s = first_contact(gap, 0.0, limit);
+        } else if (!overlaps_body(b, o, now)) {
+            s = 0.0;
+        } else {
+            // Looked at again after either has moved a quarter of the smaller size.
+            const double size = std::min(b.sphere ? b.radius : b.reach, o.sphere ? o.radius : o.reach);
+            const double speed = point_speed(b, now, 0.0) + point_speed(o, now, 0.0);
+            if (speed > 0.0) s = std::min(limit, 0.25 * size / speed);
+        }
+        if (s && now + *s < next.t) {
+            next = predicted(now + *s, EventKind::kRelease, j);
+            limit = *s;
+        }
+    }
+
+    // Conservative advancement (keyed_contact.hpp) between body i and body j, or obstacle
+    // `obstacle` when j < 0, over [now, now + limit]. Returns the contact, times from now.
+    std::optional<Contact> advance(int i, int j, int obstacle, double now, double limit) {
+        const Body &b = bodies_[static_cast<size_t>(i)];
+        const Body *o = j >= 0 ? &bodies_[static_cast<size_t>(j)] : nullptr;
+        const Obstacle *ob = obstacle >= 0 ? &obstacles_[static_cast<size_t>(obstacle)] : nullptr;
+        Approach approach;
+        approach.gap = [&](double t) { return o ? gap_between(b, *o, t) : gap_to_obstacle(b, *ob, t); };
+        approach.closing_speed = [&](double t, double dt) {
+            return point_speed(b, t, dt) + (o ? point_speed(*o, t, dt) : 0.0);
+        };
+        const double tol = std::max(tolerance(b), o ? tolerance(*o) : 0.0);
+        const ApproachOutcome out = advance_to_contact(approach, now, now + limit, tol);
+        ++count_.advancements;
+        switch (out.kind) {
+        case ApproachOutcome::kContact: {
+            Contact c;
+            if (o)
+                gap_between(b, *o, out.t, &c);
+            else
+                gap_to_obstacle(b, *ob, out.t, &c);
+            c.t = out.t - now;
+            return c;
+        }
+        case ApproachOutcome::kOverlapping:
+            ignore(i, o ? j : -1 - obstacle, out.t);
+            return std::nullopt;
+        case ApproachOutcome::kUndecided:
+            // Too long within a hair of each other: look again from there.
+            if (out.t > now) {
+                Contact c;
+                c.t = out.t - now;
+                c.normal = glm::dvec3(0.0);
+                return c;
+            }
+            return std::nullopt;
+        case ApproachOutcome::kNone:
+            break;
+        }
+        return std::nullopt;
+    }
+
+    void predict_obstacles(int i, double now, double limit, Predicted &next) {
         const Body &b = bodies_[static_cast<size_t>(i)];
         std::size_t tested = 0;
         for (size_t o = 0; o < obstacles_.size(); ++o) {
             if (b.ignored_obstacles > 0 && is_ignored(i, -1 - static_cast<int>(o))) continue;
             const Obstacle &ob = obstacles_[o];
+            if (!b.free_sphere()) {
+                ++tested;
+                if (auto c = advance(i, -1, static_cast<int>(o), now, limit)) {
+                    next = predicted(now + c->t, EventKind::kObstacle, static_cast<int>(o), 0, *c);
+                    limit = c->t;
+                }
+                continue;
+            }
+            const Path path = from_now(b, now);
             // Broad phase: the swept sphere must reach the obstacle's bounding sphere.
             const Path fixed{ob.center, glm::dvec3(0.0), glm::dvec3(0.0)};
             if (!(glm::length(path.p - ob.center) <= b.radius + ob.radius) &&
@@ -465,7 +790,7 @@ class EventBake {
             }
         }
         count_.done += tested;
-        count_.skipped += triangle_count_ - tested;
+        count_.skipped += triangle_count_ - std::min(tested, triangle_count_);
     }
 
     // A body overlapping an obstacle is checked again after it has moved by a fraction of its
@@ -476,9 +801,9 @@ class EventBake {
             if (is_ignored(i, -1 - static_cast<int>(o)) && !overlaps_obstacle(b, obstacles_[o], now))
                 unignore(i, -1 - static_cast<int>(o));
         if (b.ignored_obstacles == 0 || b.still()) return;
-        const Path path = from_now(b, now);
-        const double speed = glm::length(path.v) + std::sqrt(glm::length(path.a) * b.radius);
-        next = predicted(now + 0.25 * b.radius / speed, EventKind::kRecheck);
+        const double speed = point_speed(b, now, 0.0) + std::sqrt(glm::length(b.path.a) * b.radius);
+        if (speed > 0.0 && now + 0.25 * b.radius / speed < next.t)
+            next = predicted(now + 0.25 * b.radius / speed, EventKind::kRecheck);
     }
 
     void set_prediction(int i, const Predicted &p) {
@@ -486,13 +811,28 @@ class EventBake {
         queue_->set(static_cast<size_t>(i), p.t);
     }
 
+    // ---- events ----------------------------------------------------------------------------
+
     void handle(int i, const Predicted &event, double now) {
         Body &b = bodies_[static_cast<size_t>(i)];
         switch (event.kind) {
         case EventKind::kNone:
             break;
-        case EventKind::kActivation:
+        case EventKind::kActivation: // its last key: free from here, as physics.md says
+            if (b.keyed()) emit_keyed(b.model, b.keyed_from, now);
+            unfile(i);
             activate(b, now, leaving_keys(b.model, now));
+            b.resume_at = kNever;
+            file(i, now);
+            find_overlaps(i, now);
+            break;
+        case EventKind::kResume: // released at a contact, its next key takes it back
+            close_segment(b, now);
+            unfile(i);
+            b.mode = Body::Mode::kKeyed;
+            b.keyed_from = now;
+            b.resume_at = kNever;
+            ++b.version;
             file(i, now);
             find_overlaps(i, now);
             break;
@@ -514,12 +854,14 @@ class EventBake {
                 ++count_.stale; // the other body changed course since: predict again
                 break;
             }
-            collide_bodies(b, o, event.contact, now);
+            if (event.contact.normal == glm::dvec3(0.0)) break; // undecided: look again
+            collide_bodies(i, event.other, event.contact, now);
             predict(event.other, now);
             break;
         }
         case EventKind::kObstacle:
-            collide_obstacle(b, obstacles_[static_cast<size_t>(event.other)], event.contact, now);
+            if (event.contact.normal == glm::dvec3(0.0)) break;
+            collide_obstacle(i, obstacles_[static_cast<size_t>(event.other)], event.contact, now);
             break;
         case EventKind::kRelease:
             unignore(i, event.other);
@@ -530,7 +872,23 @@ class EventBake {
         predict(i, now);
     }
 
-    void collide_obstacle(Body &b, const Obstacle &o, const Contact &contact, double t) {
+    // A keyed body that collides is released from its keys (physics.md): free from the contact
+    // until its next key, with the velocity its keys gave it, or at rest without Dynamics.
+    void release(int i, double t) {
+        Body &b = bodies_[static_cast<size_t>(i)];
+        emit_keyed(b.model, b.keyed_from, t);
+        unfile(i);
+        const ani_body_state start = leaving_keys(b.model, t);
+        activate(b, t, start);
+        if (!b.dynamics) stop(b);
+        b.resume_at = next_key(b.model, t);
+        file(i, t);
+        ++count_.releases;
+    }
+
+    void collide_obstacle(int i, const Obstacle &o, const Contact &contact, double t) {
+        Body &b = bodies_[static_cast<size_t>(i)];
+        if (b.keyed()) release(i, t);
         const glm::dvec3 n = contact.normal;
         const glm::dvec3 v = b.path.velocity(t - b.t0);
         ani_collision_event e{};
@@ -545,9 +903,15 @@ class EventBake {
         report(e);
     }
 
-    void collide_bodies(Body &b, Body &o, const Contact &contact, double t) {
+    void collide_bodies(int i, int j, const Contact &contact, double t) {
+        Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
         const glm::dvec3 n = contact.normal;
-        const glm::dvec3 v = b.path.velocity(t - b.t0), vo = o.path.velocity(t - o.t0);
+        // A keyed body is a wall of infinite mass moving as its keys say, for the free body it
+        // meets: that one reflects off it with the relative velocity (physics.md).
+        const glm::dvec3 v = point_velocity(b, contact.point, t), vo = point_velocity(o, contact.point, t);
+        const bool b_wall = b.keyed() && !o.keyed(), o_wall = o.keyed() && !b.keyed();
+        if (b.keyed()) release(i, t);
+        if (o.keyed()) release(j, t);
         ani_collision_event e{};
         e.t = t;
         e.a = b.model;
@@ -555,7 +919,12 @@ class EventBake {
         e.normal = ani(n);
         e.point = ani(contact.point);
         e.speed = std::max(0.0, -glm::dot(v - vo, n));
-        if (b.dynamics && o.dynamics) {
+        if (b_wall || o_wall) {
+            Body &free = b_wall ? o : b;
+            const glm::dvec3 v_free = b_wall ? vo : v, v_wall = b_wall ? v : vo, n_free = b_wall ? -n : n;
+            restart(free, t, free.dynamics ? reflect_off_moving_wall(v_free, v_wall, n_free) : glm::dvec3(0.0),
+                    !free.dynamics);
+        } else if (b.dynamics && o.dynamics) {
             const double ma = scene_.models[b.model].desc->mass, mb = scene_.models[o.model].desc->mass;
             const auto [va, vb] = elastic_exchange(ma, v, mb, vo, n);
             restart(b, t, va, false);
@@ -581,6 +950,7 @@ class EventBake {
             {"pair tests done", count_.done},       {"pair tests skipped", count_.skipped},
             {"predictions", count_.predictions},    {"stale predictions", count_.stale},
             {"cell crossings", count_.crossings},   {"collisions", count_.collisions},
+            {"conservative advancements", count_.advancements}, {"releases from keys", count_.releases},
         };
         for (const auto &[name, value] : counts) sink_.count(sink_.context, name, static_cast<double>(value));
     }
@@ -606,7 +976,8 @@ class EventBake {
     // Keys: (body, other body) with the lower first, or (body, -1 - obstacle).
     std::set<std::pair<int, int>> ignored_;
     struct {
-        std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0, collisions = 0;
+        std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0, collisions = 0,
+                    advancements = 0, releases = 0;
     } count_;
     std::size_t reports_ = 0;
 };

@@ -61,6 +61,10 @@ typedef struct ani_physics_model {
     const ani_time_span *keyed_spans; /* spans driven by keyframes, sorted, disjoint */
     uint32_t keyed_span_count;
     ani_body_state start;             /* the state at t_begin */
+    /* Since ABI 1.1: the times of the model's own keys, sorted (a keyed model released from its
+     * keys at a contact takes them up again at the next one). */
+    const double *key_times;
+    uint32_t key_count;
 } ani_physics_model;
 
 typedef struct ani_physics_scene {

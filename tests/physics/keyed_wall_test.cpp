@@ -1,0 +1,250 @@
+// Keyed models as moving walls (physics.md): conservative advancement on its own against
+// closed forms, then through the real timeline: a free ball reflects off a keyed model with the
+// relative velocity of the point it touches, and the keyed model is released from its keys at
+// the contact and takes them up again at its next key.
+#include "assets/asset_paths.hpp"
+#include "io/environment.hpp"
+#include "keyed_contact.hpp"
+#include "timeline/timeline.hpp"
+
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+using namespace animator;
+using physics_custom::Approach;
+using physics_custom::ApproachOutcome;
+using physics_custom::advance_to_contact;
+
+namespace {
+
+const double kPi = 3.14159265358979323846;
+
+Environment &env() {
+    static Environment e({test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
+                         [](ani_log_level, const std::string &, const std::string &) {});
+    return e;
+}
+
+double unit_radius() {
+    return load_mesh(env().assets.resolve(ANI_ASSET_MESH, "sphere").value()).mesh.bound_radius;
+}
+
+std::unique_ptr<Timeline> timeline_of(const Document &doc) {
+    auto t = std::make_unique<Timeline>(doc, env().plugins);
+    std::vector<std::string> ids, warnings;
+    for (const Model &m : doc.models()) ids.push_back(m.mesh);
+    t->set_meshes(load_meshes(ids, env().assets, {}, warnings));
+    REQUIRE(warnings.empty());
+    return t;
+}
+
+Model model(const std::string &name, const std::string &mesh, bool dynamics, bool gravity) {
+    Model m;
+    m.name = name;
+    m.mesh = mesh;
+    m.dynamics = dynamics;
+    m.gravity = gravity;
+    return m;
+}
+
+ModelState placed(glm::dvec3 center, glm::dvec3 scale = glm::dvec3(1.0), glm::dvec3 angles = glm::dvec3(0.0)) {
+    ModelState s;
+    s.center = center;
+    s.scale = scale;
+    s.angles = angles;
+    return s;
+}
+
+void key(Document &doc, std::int64_t ms, int model, const ModelState &state) {
+    if (doc.find_keyframe(ms) < 0) {
+        Keyframe k;
+        k.time_ms = ms;
+        k.states.assign(doc.models().size(), std::nullopt);
+        doc.insert_keyframe(k);
+    }
+    doc.set_state(ms, model, state);
+}
+
+const ani_motion_segment *segment_at(const Timeline &t, int model, double time) {
+    for (const auto &s : t.segments(model))
+        if (s.t0 <= time && time < s.t1) return &s;
+    return nullptr;
+}
+
+} // namespace
+
+TEST_CASE("conservative advancement finds the first contact of a closing gap") {
+    Approach linear;
+    linear.gap = [](double t) { return 5.0 - 2.0 * t; };
+    SECTION("with an exact bound") {
+        linear.closing_speed = [](double, double) { return 2.0; };
+        const auto out = advance_to_contact(linear, 0.0, 10.0, 1e-13);
+        REQUIRE(out.kind == ApproachOutcome::kContact);
+        CHECK(out.t == Approx(2.5).epsilon(1e-12));
+    }
+    SECTION("with a bound ten times too large") {
+        linear.closing_speed = [](double, double) { return 20.0; };
+        const auto out = advance_to_contact(linear, 0.0, 10.0, 1e-13);
+        REQUIRE(out.kind == ApproachOutcome::kContact);
+        CHECK(out.t == Approx(2.5).epsilon(1e-12));
+    }
+    SECTION("with a bound three times too small: the overshoot is bisected back") {
+        linear.closing_speed = [](double, double) { return 2.0 / 3.0; };
+        const auto out = advance_to_contact(linear, 0.0, 10.0, 1e-13);
+        REQUIRE(out.kind == ApproachOutcome::kContact);
+        CHECK(out.t == Approx(2.5).epsilon(1e-12));
+    }
+    SECTION("not within the window") {
+        linear.closing_speed = [](double, double) { return 2.0; };
+        CHECK(advance_to_contact(linear, 0.0, 2.4, 1e-13).kind == ApproachOutcome::kNone);
+    }
+}
+
+TEST_CASE("conservative advancement: a turning bar reaches a point at the angle the geometry says") {
+    // A bar through the origin turning at w rad/s; a ball of radius r at distance d and polar
+    // angle a0: the gap is d sin(a0 - w t) - r while the bar has not passed it.
+    const double w = 2.0, d = 1.5, a0 = 1.0, r = 0.2, half_length = 2.0;
+    Approach bar;
+    bar.gap = [&](double t) { return d * std::sin(a0 - w * t) - r; };
+    bar.closing_speed = [&](double, double) { return w * half_length; };
+    const auto out = advance_to_contact(bar, 0.0, 1.0, 1e-13);
+    REQUIRE(out.kind == ApproachOutcome::kContact);
+    CHECK(out.t == Approx((a0 - std::asin(r / d)) / w).epsilon(1e-12));
+}
+
+TEST_CASE("conservative advancement: touching and moving apart is no contact, overlapping is said") {
+    Approach leaving;
+    leaving.gap = [](double t) { return 3.0 * t; };
+    leaving.closing_speed = [](double, double) { return 3.0; };
+    CHECK(advance_to_contact(leaving, 0.0, 5.0, 1e-13).kind == ApproachOutcome::kNone);
+    Approach inside;
+    inside.gap = [](double t) { return -1.0 + t; };
+    inside.closing_speed = [](double, double) { return 1.0; };
+    CHECK(advance_to_contact(inside, 0.0, 5.0, 1e-13).kind == ApproachOutcome::kOverlapping);
+}
+
+TEST_CASE("a ball reflects off a keyed paddle with the relative velocity, and the paddle rests until its next key") {
+    // The paddle: a cube 0.2 wide (scale 0.1), keyed from x = -3 to x = 1 over 2 s (2 m/s,
+    // linear: Dynamics off), then to x = 3 at 4 s. The ball, at rest at x = 0.
+    const double r = unit_radius() * 0.5, u = 2.0;
+    Document doc;
+    Settings s = doc.settings();
+    s.gravity = 0.0;
+    doc.set_settings(s);
+    doc.add_model(model("paddle", "cube", false, false), placed({-3, 0, 0}, {0.1, 1, 1}));
+    doc.add_model(model("ball", "sphere", true, false), placed({0, 0, 0}, glm::dvec3(0.5)));
+    key(doc, 2000, 0, placed({1, 0, 0}, {0.1, 1, 1}));
+    key(doc, 4000, 0, placed({3, 0, 0}, {0.1, 1, 1}));
+    auto timeline = timeline_of(doc);
+    timeline->bake(6.0);
+    // The paddle's face (x = center + 0.1) reaches the ball's surface at x = -r.
+    const double contact = (-r - 0.1 + 3.0) / u;
+    const auto &events = timeline->events();
+    REQUIRE(events.size() == 1);
+    CHECK(events[0].t == Approx(contact).epsilon(1e-11));
+    CHECK(std::abs(std::abs(events[0].normal.x) - 1.0) < 1e-12);
+    CHECK(events[0].speed == Approx(u).epsilon(1e-9));
+    // The ball leaves at 2u (v1 = v0 - 2 ((v0 - vB) . n) n with v0 = 0); the paddle rests
+    // where it touched until its next key at 2 s, then follows its keys again.
+    const Frame after = timeline->evaluate(contact + 0.5);
+    CHECK(after.models[1].velocity.x == Approx(2.0 * u).epsilon(1e-9));
+    CHECK(after.models[1].center.x == Approx(0.5 * 2.0 * u).epsilon(1e-9));
+    const auto *rest = segment_at(*timeline, 0, 1.9);
+    REQUIRE(rest);
+    CHECK(rest->motion == ANI_MOTION_REST);
+    CHECK(rest->t0 == Approx(contact).epsilon(1e-11));
+    CHECK(rest->p0.x == Approx(-r - 0.1).epsilon(1e-11));
+    const auto *resumed = segment_at(*timeline, 0, 3.0);
+    REQUIRE(resumed);
+    CHECK(resumed->motion == ANI_MOTION_KEYED);
+    CHECK(resumed->t0 == 2.0);
+    CHECK(timeline->evaluate(3.0).models[0].center.x == Approx(2.0).epsilon(1e-12));
+    CHECK(timeline->evaluate(5.0).models[0].center.x == Approx(3.0).epsilon(1e-12)); // held after its last key
+}
+
+TEST_CASE("a turning bar strikes a ball with the velocity of the point that touches it") {
+    // A bar 4 long and 0.2 thick (cube scaled 2 x 0.1 x 1) turning about Z through its center,
+    // from 0 to 90 degrees in 1 s (linear: w = pi/2 rad/s). A ball of radius r at rest at
+    // distance d, polar angle a0: the bar's face touches it when d sin(a0 - phi) = r + 0.1, and
+    // the point of contact, sqrt(d^2 - (r + 0.1)^2) along the bar, moves at w times that.
+    const double r = unit_radius() * 0.2, d = 1.4, a0 = 60.0 * kPi / 180.0, w = 0.5 * kPi;
+    Document doc;
+    Settings s = doc.settings();
+    s.gravity = 0.0;
+    doc.set_settings(s);
+    doc.add_model(model("bar", "cube", false, false), placed({0, 0, 0}, {2, 0.1, 1}));
+    doc.add_model(model("ball", "sphere", true, false), placed({d * std::cos(a0), d * std::sin(a0), 0}, glm::dvec3(0.2)));
+    key(doc, 1000, 0, placed({0, 0, 0}, {2, 0.1, 1}, {0, 0, 90}));
+    auto timeline = timeline_of(doc);
+    timeline->bake(2.0);
+    const double phi = a0 - std::asin((r + 0.1) / d), contact = phi / w;
+    const auto &events = timeline->events();
+    REQUIRE(events.size() >= 1);
+    CHECK(events[0].t == Approx(contact).epsilon(1e-9));
+    const glm::dvec3 n(-std::sin(phi), std::cos(phi), 0.0); // the bar's upper face, at angle phi
+    const double lever = std::sqrt(d * d - (r + 0.1) * (r + 0.1));
+    const glm::dvec3 v = timeline->evaluate(contact + 0.01).models[1].velocity;
+    CHECK(glm::length(v - 2.0 * w * lever * n) < 1e-6 * w * lever);
+}
+
+TEST_CASE("a keyed ball released at a floor bounces, flies to its next key, and its keys take it back there") {
+    // Dynamics on: kinematic keys from y = 5 at 0 s (initial velocity -2 m/s) to y = 0.25 at
+    // 3 s, so y(t) = 5 - 2 t + a t^2 / 2 with a = 5/18; then y = 4 at 4 s. Gravity off. The
+    // floor at y = 0 is met when y(t) = r, before 3 s.
+    const double r = unit_radius() * 0.5, a = 5.0 / 18.0;
+    Document doc;
+    Settings s = doc.settings();
+    s.gravity = 0.0;
+    doc.set_settings(s);
+    doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, glm::dvec3(10.0)));
+    Model ball = model("ball", "sphere", true, false);
+    ball.initial_velocity = {0, -2, 0};
+    doc.add_model(ball, placed({0, 5, 0}, glm::dvec3(0.5)));
+    key(doc, 3000, 1, placed({0, 0.25, 0}, glm::dvec3(0.5)));
+    key(doc, 4000, 1, placed({0, 4, 0}, glm::dvec3(0.5)));
+    auto timeline = timeline_of(doc);
+    timeline->bake(5.0);
+    // 0.5 a t^2 - 2 t + (5 - r) = 0, the smaller root.
+    const double contact = (2.0 - std::sqrt(4.0 - 2.0 * a * (5.0 - r))) / a;
+    const double v_in = -2.0 + a * contact;
+    REQUIRE(timeline->events().size() >= 1);
+    CHECK(timeline->events()[0].t == Approx(contact).epsilon(1e-10));
+    CHECK(timeline->events()[0].speed == Approx(-v_in).epsilon(1e-8));
+    const auto *flight = segment_at(*timeline, 1, 0.5 * (contact + 3.0));
+    REQUIRE(flight);
+    CHECK(flight->motion == ANI_MOTION_FREE);
+    CHECK(flight->v0.y == Approx(-v_in).epsilon(1e-8));
+    // At 3 s its keys take it back (into the floor, which is then ignored until they are apart),
+    // and after its last key at 4 s it is free.
+    CHECK(timeline->evaluate(3.0).models[1].center.y == Approx(0.25).epsilon(1e-12));
+    CHECK(timeline->evaluate(3.5).motion[1] == ANI_MOTION_KEYED);
+    CHECK(timeline->evaluate(4.5).motion[1] == ANI_MOTION_FREE);
+}
+
+TEST_CASE("a bake resumed after a release continues exactly as one bake") {
+    const double r = unit_radius() * 0.5;
+    (void)r;
+    Document doc;
+    Settings s = doc.settings();
+    s.gravity = 0.0;
+    doc.set_settings(s);
+    doc.add_model(model("paddle", "cube", false, false), placed({-3, 0, 0}, {0.1, 1, 1}));
+    doc.add_model(model("ball", "sphere", true, false), placed({0, 0, 0}, glm::dvec3(0.5)));
+    key(doc, 2000, 0, placed({1, 0, 0}, {0.1, 1, 1}));
+    key(doc, 4000, 0, placed({3, 0, 0}, {0.1, 1, 1}));
+    auto whole = timeline_of(doc), parts = timeline_of(doc);
+    whole->bake(6.0);
+    parts->bake(1.7); // after the contact, before the paddle's next key
+    parts->bake(6.0);
+    for (double t : {1.0, 1.8, 2.5, 3.9, 5.5})
+        for (int m = 0; m < 2; ++m) {
+            CAPTURE(t, m);
+            CHECK(glm::length(whole->evaluate(t).models[static_cast<size_t>(m)].center -
+                              parts->evaluate(t).models[static_cast<size_t>(m)].center) < 1e-12);
+            CHECK(whole->evaluate(t).motion[static_cast<size_t>(m)] == parts->evaluate(t).motion[static_cast<size_t>(m)]);
+        }
+}
