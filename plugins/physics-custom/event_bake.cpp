@@ -15,6 +15,7 @@
 #include <glm/mat3x3.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -57,6 +58,14 @@ struct Body {
     bool in_grid = false;      // free spheres only
     Cell cell{};
     int ignored_obstacles = 0; // obstacles it overlapped and does not collide with until apart
+    glm::dvec3 free_a{0.0};    // its acceleration when nothing holds it up (gravity, or none)
+    // Resting or sliding on a flat part of a static model: that model, the plane of the face
+    // (n . x = d), and the boundary of the flat region it is on (edge start, end, and outward
+    // normal in the plane), where it leaves the support.
+    int support = -1;
+    glm::dvec3 support_n{0.0};
+    double support_d = 0.0;
+    std::vector<std::array<glm::dvec3, 3>> support_edges;
 
     bool keyed() const { return mode == Mode::kKeyed; }
     bool free_sphere() const { return sphere && mode == Mode::kFree; }
@@ -71,6 +80,8 @@ struct Obstacle {
     uint32_t model = 0;
     std::vector<glm::dvec3> corners; // 3 per triangle
     std::vector<Box> boxes;          // 1 per triangle
+    std::vector<glm::dvec3> normals; // 1 per triangle, unit (0 for a triangle without area)
+    std::vector<double> offsets;     // 1 per triangle: its plane is normal . x = offset
     glm::dvec3 center{0.0};
     double radius = 0.0;
 };
@@ -82,7 +93,7 @@ struct Pose {
 };
 
 // A body's earliest predicted event.
-enum class EventKind { kNone, kActivation, kResume, kBody, kObstacle, kCell, kRelease, kRecheck };
+enum class EventKind { kNone, kActivation, kResume, kBody, kObstacle, kCell, kRelease, kRecheck, kLeave };
 struct Predicted {
     double t = kNever;
     EventKind kind = EventKind::kNone;
@@ -140,7 +151,10 @@ class EventBake {
         queue_ = std::make_unique<EventQueue>(bodies_.size());
         predicted_.assign(bodies_.size(), Predicted{});
         for (size_t i = 0; i < bodies_.size(); ++i)
-            if (bodies_[i].active) find_overlaps(static_cast<int>(i), t_begin_);
+            if (bodies_[i].active) {
+                find_overlaps(static_cast<int>(i), t_begin_);
+                try_settle(static_cast<int>(i), t_begin_);
+            }
         for (size_t i = 0; i < bodies_.size(); ++i) predict(static_cast<int>(i), t_begin_);
 
         std::size_t events_at_once = 0;
@@ -271,7 +285,13 @@ class EventBake {
                 box.hi = glm::max(box.hi, o.corners[k + j]);
             }
             o.boxes.push_back(box);
+            const glm::dvec3 n = glm::cross(o.corners[k + 1] - o.corners[k], o.corners[k + 2] - o.corners[k]);
+            o.normals.push_back(glm::length(n) > 0.0 ? glm::normalize(n) : glm::dvec3(0.0));
+            o.offsets.push_back(glm::dot(o.normals.back(), o.corners[k]));
         }
+        if (!o.boxes.empty() && std::all_of(o.normals.begin(), o.normals.end(), [](const glm::dvec3 &n) { return n == glm::dvec3(0.0); }))
+            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, std::string("model '") + name_of(scene_.models[i]) +
+                                                             "' has a mesh without area (every triangle is degenerate)");
         glm::dvec3 sum(0.0);
         for (const auto &c : o.corners) sum += c;
         o.center = o.corners.empty() ? glm::dvec3(0.0) : sum / static_cast<double>(o.corners.size());
@@ -346,13 +366,17 @@ class EventBake {
             if (auto r = sphere_radius(b.model, t)) b.radius = *r; // its keys may have scaled it
         b.t0 = t;
         b.path = Path{vec(s.p0), vec(s.v0), vec(s.a)};
+        b.free_a = b.path.a;
         b.motion = s.motion;
+        b.support = -1;
+        b.support_edges.clear();
         ++b.version;
     }
 
     // Without Dynamics, a model released from its keys rests where the contact left it.
     static void stop(Body &b) {
         b.path = Path{b.path.p, glm::dvec3(0.0), glm::dvec3(0.0)};
+        b.free_a = glm::dvec3(0.0);
         b.motion = ANI_MOTION_REST;
     }
 
@@ -565,25 +589,53 @@ class EventBake {
         return scene_.models[b.model].mesh->bound_radius * frobenius(p.linear) / std::sqrt(3.0);
     }
 
-    bool overlaps_obstacle(const Body &b, const Obstacle &o, double t) const {
+    // Whether a sphere is closer to an obstacle than `gap` (negative: overlapping by more).
+    bool within_obstacle(const Body &b, const Obstacle &o, double t, double gap) const {
         if (!b.sphere) return false;
         if (b.free_sphere()) {
             const glm::dvec3 c = b.path.at(t - b.t0);
-            if (glm::length(c - o.center) > b.radius + o.radius) return false;
+            if (glm::length(c - o.center) > b.radius + o.radius + gap) return false;
             for (size_t k = 0; k + 2 < o.corners.size(); k += 3)
-                if (glm::length(c - closest_point_on_triangle(c, o.corners[k], o.corners[k + 1], o.corners[k + 2])) < b.radius)
+                if (glm::length(c - closest_point_on_triangle(c, o.corners[k], o.corners[k + 1], o.corners[k + 2])) <
+                    b.radius + gap)
                     return true;
             return false;
         }
-        return gap_to_obstacle(b, o, t) < -tolerance(b);
+        return gap_to_obstacle(b, o, t) < gap;
     }
 
-    bool overlaps_body(const Body &a, const Body &b, double t) const {
+    bool within_body(const Body &a, const Body &b, double t, double gap) const {
         if (!a.sphere && !b.sphere) return false;
         if (a.free_sphere() && b.free_sphere())
-            return glm::length(a.path.at(t - a.t0) - b.path.at(t - b.t0)) < a.radius + b.radius;
-        return gap_between(a, b, t) < -std::max(tolerance(a), tolerance(b));
+            return glm::length(a.path.at(t - a.t0) - b.path.at(t - b.t0)) < a.radius + b.radius + gap;
+        return gap_between(a, b, t) < gap;
     }
+
+    // Overlapping: closer than touching (which allows for the single precision of meshes).
+    bool overlaps_obstacle(const Body &b, const Obstacle &o, double t) const {
+        return within_obstacle(b, o, t, -touching(b));
+    }
+    bool overlaps_body(const Body &a, const Body &b, double t) const {
+        return within_body(a, b, t, -touching(a) - touching(b));
+    }
+    // Apart: farther than touching, so that a pair left alone is not met again at once.
+    bool apart_from_obstacle(const Body &b, const Obstacle &o, double t) const {
+        return !within_obstacle(b, o, t, touching(b));
+    }
+    bool apart_from_body(const Body &a, const Body &b, double t) const {
+        return !within_body(a, b, t, touching(a) + touching(b));
+    }
+
+    // A contact met with no speed along its normal (a sphere rolling over the rim of a table,
+    // grazing an edge) is not a collision: reflecting would change nothing and find the same
+    // contact again at once. The pair is left alone until they are apart.
+    static bool grazing(const glm::dvec3 &relative_velocity, const glm::dvec3 &n) {
+        return -glm::dot(relative_velocity, n) <= 1e-9 * std::max(1.0, glm::length(relative_velocity));
+    }
+
+    // Meshes are read in single precision, so a sphere placed on a face can be inside it by a
+    // few 1e-8 of its radius: that much is touching, not overlapping.
+    static double touching(const Body &b) { return 1e-6 * b.radius; }
 
     // How close counts as touching for conservative advancement: a trillionth of the size.
     static double tolerance(const Body &b) { return 1e-12 * std::max(1.0, b.sphere ? b.radius : b.reach); }
@@ -618,12 +670,13 @@ class EventBake {
 
     static std::pair<int, int> pair_key(int a, int b) { return b >= 0 && b < a ? std::make_pair(b, a) : std::make_pair(a, b); }
 
-    void ignore(int i, int other, double t) {
+    void ignore(int i, int other, double t, bool report = true) {
         if (!ignored_.insert(pair_key(i, other)).second) return;
         const uint32_t model_b = other >= 0 ? bodies_[static_cast<size_t>(other)].model
                                             : obstacles_[static_cast<size_t>(-1 - other)].model;
         if (other < 0) ++bodies_[static_cast<size_t>(i)].ignored_obstacles;
-        log_once("models '" + std::string(name_of(scene_.models[bodies_[static_cast<size_t>(i)].model])) + "' and '" +
+        if (report)
+            log_once("models '" + std::string(name_of(scene_.models[bodies_[static_cast<size_t>(i)].model])) + "' and '" +
                  name_of(scene_.models[model_b]) + "' overlap at t = " + std::to_string(t) +
                  " s; their contact is ignored until they separate");
     }
@@ -682,6 +735,7 @@ class EventBake {
         });
         count_.done += tested;
         count_.skipped += (bodies_.size() - 1) - tested;
+        if (b.support >= 0) predict_leave(i, now, limit, next);
         if (b.sphere) predict_obstacles(i, now, limit, next);
         if (b.ignored_obstacles > 0) recheck_obstacles(i, now, next);
         set_prediction(i, next);
@@ -695,12 +749,12 @@ class EventBake {
             // |d|^2 - R^2 turns non-negative.
             const Path path = from_now(b, now), other = from_now(o, now);
             const glm::dvec3 d = path.p - other.p, e = path.v - other.v, h = 0.5 * (path.a - other.a);
-            const double reach = b.radius + o.radius;
+            const double reach = b.radius + o.radius + touching(b) + touching(o);
             Quartic gap = {glm::dot(d, d) - reach * reach, 2.0 * glm::dot(d, e), glm::dot(e, e) + 2.0 * glm::dot(d, h),
                            2.0 * glm::dot(e, h), glm::dot(h, h)};
             for (double &c : gap) c = -c;
             s = first_contact(gap, 0.0, limit);
-        } else if (!overlaps_body(b, o, now)) {
+        } else if (apart_from_body(b, o, now)) {
             s = 0.0;
         } else {
             // Looked at again after either has moved a quarter of the smaller size.
@@ -780,8 +834,10 @@ class EventBake {
             Box reach = swept_box(path, limit);
             reach.lo -= glm::dvec3(b.radius);
             reach.hi += glm::dvec3(b.radius);
+            const bool on_it = b.support == static_cast<int>(o);
             for (size_t k = 0; k + 2 < ob.corners.size(); k += 3) {
                 if (!reach.overlaps(ob.boxes[k / 3])) continue;
+                if (on_it && in_support_plane(b, ob, k / 3)) continue; // it slides on these
                 ++tested;
                 if (auto c = sphere_triangle(path, b.radius, ob.corners[k], ob.corners[k + 1], ob.corners[k + 2], limit)) {
                     next = predicted(now + c->t, EventKind::kObstacle, static_cast<int>(o), 0, *c);
@@ -793,12 +849,144 @@ class EventBake {
         count_.skipped += triangle_count_ - std::min(tested, triangle_count_);
     }
 
+    // ---- resting and sliding on static models ---------------------------------------------
+
+    static bool in_support_plane(const Body &b, const Obstacle &o, size_t k) {
+        return glm::dot(o.normals[k], b.support_n) > 1.0 - 1e-9 &&
+               std::abs(o.offsets[k] - b.support_d) <= 1e-9 * (1.0 + std::abs(b.support_d));
+    }
+
+    // A free sphere touching the face of a static model, not moving into or out of it, with its
+    // acceleration not pulling it away, rests or slides on it: the face holds it up (the part of
+    // its acceleration into the face is cancelled) until it slides off the flat region the face
+    // belongs to. Without this a ball placed on a floor under gravity would meet the floor with
+    // zero speed at every instant.
+    bool try_settle(int i, double t) {
+        Body &b = bodies_[static_cast<size_t>(i)];
+        if (!b.free_sphere() || b.support >= 0 || b.motion == ANI_MOTION_REST) return false;
+        const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
+        const double tol = touching(b);
+        for (size_t o = 0; o < obstacles_.size(); ++o) {
+            const Obstacle &ob = obstacles_[o];
+            if (glm::length(c - ob.center) > b.radius + ob.radius + tol) continue;
+            if (b.ignored_obstacles > 0 && is_ignored(i, -1 - static_cast<int>(o))) continue;
+            Box near{c - glm::dvec3(b.radius + tol), c + glm::dvec3(b.radius + tol)};
+            for (size_t k = 0; k < ob.boxes.size(); ++k) {
+                const glm::dvec3 n = ob.normals[k];
+                if (n == glm::dvec3(0.0) || !near.overlaps(ob.boxes[k])) continue;
+                const double h = glm::dot(n, c) - ob.offsets[k]; // height of the center above the face's plane
+                if (std::abs(h - b.radius) > tol) continue;
+                const glm::dvec3 q =
+                    closest_point_on_triangle(c, ob.corners[3 * k], ob.corners[3 * k + 1], ob.corners[3 * k + 2]);
+                if (glm::length((c - q) - h * n) > tol) continue; // nearest to an edge or a corner, not the face
+                if (glm::dot(b.free_a, n) > 0.0) continue;          // pulled away from it
+                if (std::abs(glm::dot(v, n)) > 1e-9 * std::max(1.0, glm::length(v))) continue; // bouncing
+                Body held = b;
+                held.t0 = t;
+                held.path = Path{c - (h - b.radius) * n, v - glm::dot(v, n) * n, b.free_a - glm::dot(b.free_a, n) * n};
+                held.support = static_cast<int>(o);
+                held.support_n = n;
+                held.support_d = ob.offsets[k];
+                held.support_edges = support_boundary(ob, held);
+                if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t))))
+                    continue; // on the rim of the flat region, on its way off
+                close_segment(b, t);
+                held.motion = ANI_MOTION_FREE;
+                ++held.version;
+                b = std::move(held);
+                return true;
+            }
+        }
+        return false;
+    }
+
+    // The edges that bound the flat region of an obstacle in a body's support plane: those of
+    // its triangles in that plane that only one of them has, with their outward normal.
+    static std::vector<std::array<glm::dvec3, 3>> support_boundary(const Obstacle &o, const Body &b) {
+        auto less = [](const glm::dvec3 &x, const glm::dvec3 &y) {
+            return x.x != y.x ? x.x < y.x : x.y != y.y ? x.y < y.y : x.z < y.z;
+        };
+        struct Edge {
+            glm::dvec3 a, b, third;
+            int count;
+        };
+        std::vector<Edge> edges;
+        for (size_t k = 0; k < o.boxes.size(); ++k) {
+            if (!in_support_plane(b, o, k)) continue;
+            for (int e = 0; e < 3; ++e) {
+                glm::dvec3 p = o.corners[3 * k + static_cast<size_t>(e)], q = o.corners[3 * k + static_cast<size_t>((e + 1) % 3)];
+                if (less(q, p)) std::swap(p, q);
+                edges.push_back({p, q, o.corners[3 * k + static_cast<size_t>((e + 2) % 3)], 1});
+            }
+        }
+        std::sort(edges.begin(), edges.end(), [&](const Edge &x, const Edge &y) {
+            return less(x.a, y.a) || (x.a == y.a && less(x.b, y.b));
+        });
+        std::vector<std::array<glm::dvec3, 3>> boundary;
+        for (size_t k = 0; k < edges.size();) {
+            size_t same = k + 1;
+            while (same < edges.size() && edges[same].a == edges[k].a && edges[same].b == edges[k].b) ++same;
+            if (same == k + 1) {
+                const Edge &e = edges[k];
+                glm::dvec3 m = glm::normalize(glm::cross(e.b - e.a, b.support_n));
+                if (glm::dot(m, e.third - e.a) > 0.0) m = -m; // away from the triangle
+                boundary.push_back({e.a, e.b, m});
+            }
+            k = same;
+        }
+        return boundary;
+    }
+
+    // When the point it touches the support with leaves the flat region, within [now, now + limit].
+    std::optional<double> leaves_support(const Body &b, double now, double limit) const {
+        const Path c = from_now(b, now);
+        const Path p{c.p - b.radius * b.support_n, c.v, c.a}; // the point of contact
+        std::optional<double> first;
+        for (const auto &[ea, eb, m] : b.support_edges) {
+            const auto s = upward_root(glm::dot(m, p.p - ea), glm::dot(m, p.v), 0.5 * glm::dot(m, p.a), limit);
+            if (!s || (first && *s >= *first)) continue;
+            const glm::dvec3 e = eb - ea;
+            const double along = glm::dot(p.at(*s) - ea, e) / glm::dot(e, e);
+            if (along < -1e-9 || along > 1.0 + 1e-9) continue; // it passes the line beyond this edge
+            first = s;
+        }
+        return first;
+    }
+
+    void predict_leave(int i, double now, double limit, Predicted &next) {
+        if (auto s = leaves_support(bodies_[static_cast<size_t>(i)], now, limit); s && now + *s < next.t)
+            next = predicted(now + *s, EventKind::kLeave);
+    }
+
+    // Nothing holds it up any more: its own acceleration again.
+    void unsupport(Body &b, double t) {
+        if (b.support < 0) return;
+        const glm::dvec3 v = b.path.velocity(t - b.t0);
+        close_segment(b, t);
+        b.path = Path{b.path.at(t - b.t0), v, b.free_a};
+        b.t0 = t;
+        b.support = -1;
+        b.support_edges.clear();
+        ++b.version;
+    }
+
+    // After a contact: a body knocked off its support loses it; one that comes to slide on a
+    // face gains one.
+    void after_contact(int i, double t) {
+        Body &b = bodies_[static_cast<size_t>(i)];
+        if (b.support >= 0) {
+            const glm::dvec3 v = b.path.velocity(t - b.t0);
+            if (std::abs(glm::dot(v, b.support_n)) > 1e-9 * std::max(1.0, glm::length(v))) unsupport(b, t);
+        }
+        try_settle(i, t);
+    }
+
     // A body overlapping an obstacle is checked again after it has moved by a fraction of its
     // radius (or at its next event, if sooner), and collides with it again once apart.
     void recheck_obstacles(int i, double now, Predicted &next) {
         const Body &b = bodies_[static_cast<size_t>(i)];
         for (size_t o = 0; o < obstacles_.size(); ++o)
-            if (is_ignored(i, -1 - static_cast<int>(o)) && !overlaps_obstacle(b, obstacles_[o], now))
+            if (is_ignored(i, -1 - static_cast<int>(o)) && apart_from_obstacle(b, obstacles_[o], now))
                 unignore(i, -1 - static_cast<int>(o));
         if (b.ignored_obstacles == 0 || b.still()) return;
         const double speed = point_speed(b, now, 0.0) + std::sqrt(glm::length(b.path.a) * b.radius);
@@ -825,6 +1013,7 @@ class EventBake {
             b.resume_at = kNever;
             file(i, now);
             find_overlaps(i, now);
+            try_settle(i, now);
             break;
         case EventKind::kResume: // released at a contact, its next key takes it back
             close_segment(b, now);
@@ -855,12 +1044,21 @@ class EventBake {
                 break;
             }
             if (event.contact.normal == glm::dvec3(0.0)) break; // undecided: look again
+            if (grazing(point_velocity(b, event.contact.point, now) - point_velocity(o, event.contact.point, now),
+                        event.contact.normal)) {
+                ignore(i, event.other, now, false);
+                break;
+            }
             collide_bodies(i, event.other, event.contact, now);
             predict(event.other, now);
             break;
         }
         case EventKind::kObstacle:
             if (event.contact.normal == glm::dvec3(0.0)) break;
+            if (grazing(point_velocity(b, event.contact.point, now), event.contact.normal)) {
+                ignore(i, -1 - event.other, now, false);
+                break;
+            }
             collide_obstacle(i, obstacles_[static_cast<size_t>(event.other)], event.contact, now);
             break;
         case EventKind::kRelease:
@@ -868,6 +1066,9 @@ class EventBake {
             break;
         case EventKind::kRecheck:
             break; // predict() rechecks
+        case EventKind::kLeave:
+            unsupport(b, now);
+            break;
         }
         predict(i, now);
     }
@@ -900,6 +1101,7 @@ class EventBake {
         e.speed = std::max(0.0, -glm::dot(v, n));
         // Off a model without Dynamics: a reflection; without Dynamics itself it stops.
         restart(b, t, reflect(v, n), !b.dynamics);
+        after_contact(i, t);
         report(e);
     }
 
@@ -935,6 +1137,8 @@ class EventBake {
             restart(b, t, b.dynamics ? reflect_off_moving_wall(v, vo, n) : glm::dvec3(0.0), !b.dynamics);
             restart(o, t, o.dynamics ? reflect_off_moving_wall(vo, v, -n) : glm::dvec3(0.0), !o.dynamics);
         }
+        after_contact(i, t);
+        after_contact(j, t);
         report(e);
     }
 

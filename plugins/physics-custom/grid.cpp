@@ -9,8 +9,8 @@ namespace {
 
 constexpr int64_t kMaxCells = int64_t{1} << 20;
 
-// The first s in [0, t_max] at which g(s) = g0 + g1 s + g2 s^2 crosses zero upwards (the center
-// passing a wall outwards, g being its signed distance beyond the wall).
+} // namespace
+
 std::optional<double> upward_root(double g0, double g1, double g2, double t_max) {
     if (g0 >= 0.0 && (g1 > 0.0 || (g1 == 0.0 && g2 > 0.0))) return 0.0; // on or past the wall, leaving
     double root;
@@ -31,8 +31,6 @@ std::optional<double> upward_root(double g0, double g1, double g2, double t_max)
     if (!(root > 0.0) || root > t_max) return std::nullopt;
     return root;
 }
-
-} // namespace
 
 std::optional<Exit> first_exit(const Path &path, const Box &box, double t_max) {
     std::optional<Exit> best;

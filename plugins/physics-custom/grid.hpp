@@ -27,6 +27,10 @@ struct Exit {
 };
 std::optional<Exit> first_exit(const Path &path, const Box &box, double t_max);
 
+// The first s in [0, t_max] at which g(s) = g0 + g1 s + g2 s^2 crosses zero upwards (0 if it is
+// already >= 0 and rising), with the numerically stable roots of the quadratic.
+std::optional<double> upward_root(double g0, double g1, double g2, double t_max);
+
 class UniformGrid {
   public:
     // Cells of side `cell` (widened if the region would need more than 2^20 per axis) covering

@@ -248,3 +248,61 @@ TEST_CASE("a bake resumed after a release continues exactly as one bake") {
             CHECK(whole->evaluate(t).motion[static_cast<size_t>(m)] == parts->evaluate(t).motion[static_cast<size_t>(m)]);
         }
 }
+
+TEST_CASE("a ball placed on a floor under gravity rests there, and one struck by a keyed paddle slides on it") {
+    // Meshes are single precision, so a ball of scale 0.5 placed at y = 0.5 is in the floor by
+    // ~2e-8: touching, not overlapping. Resting on the floor holds it up.
+    const double r = unit_radius() * 0.5, u = 1.5;
+    Document doc;
+    doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, glm::dvec3(20.0)));
+    doc.add_model(model("ball", "sphere", true, true), placed({0, 0.5, 0}, glm::dvec3(0.5)));
+    // A paddle (0.2 wide) keyed at 1.5 m/s along x, from x = -4 at 0 s to x = 2 at 4 s.
+    doc.add_model(model("paddle", "cube", false, false), placed({-4, 0.5, 0}, {0.1, 0.4, 1}));
+    key(doc, 4000, 2, placed({2, 0.5, 0}, {0.1, 0.4, 1}));
+    auto timeline = timeline_of(doc);
+    timeline->bake(10.0);
+    const auto &events = timeline->events();
+    REQUIRE(events.size() == 1); // the paddle, nothing from the floor
+    const double contact = (-r - 0.1 + 4.0) / u;
+    CHECK(events[0].t == Approx(contact).epsilon(1e-10));
+    for (double t : {0.5, 1.0, contact - 1e-3}) {
+        const ModelPose ball = timeline->evaluate(t).models[1];
+        CHECK(ball.center == glm::dvec3(0.0, ball.center.y, 0.0));
+        CHECK(std::abs(ball.center.y - 0.5) < 1e-7);
+        CHECK(ball.velocity == glm::dvec3(0.0));
+    }
+    for (double t : {contact + 0.1, 4.0, 6.0}) { // it reaches the rim at x = 20 after 9 s
+        CAPTURE(t);
+        const ModelPose ball = timeline->evaluate(t).models[1];
+        CHECK(ball.velocity.x == Approx(2.0 * u).epsilon(1e-9));
+        CHECK(ball.velocity.y == 0.0);
+        CHECK(std::abs(ball.center.y - 0.5) < 1e-7);
+    }
+}
+
+TEST_CASE("a sphere sliding across a finely tessellated floor never bumps on its inner edges, and leaves it at its rim") {
+    // physics.md scene 6: floor_fine (8192 triangles) scaled 10 spans x in [-10, 10]. The ball
+    // slides at 1 m/s along x under gravity; its point of contact passes the rim at x = 10.
+    Document doc;
+    Settings s = doc.settings();
+    s.max_time_ms = 12000;
+    doc.set_settings(s);
+    doc.add_model(model("floor", "floor_fine", false, false), placed({0, 0, 0}, {10, 1, 10}));
+    Model ball = model("ball", "sphere", true, true);
+    ball.initial_velocity = {1.0, 0.0, 0.3};
+    doc.add_model(ball, placed({0.123, 0.5, 0.456}, glm::dvec3(0.5)));
+    auto timeline = timeline_of(doc);
+    timeline->bake(12.0);
+    const double leave = 10.0 - 0.123;
+    for (double t = 0.0; t < leave; t += 0.37) {
+        CAPTURE(t);
+        const ModelPose p = timeline->evaluate(t).models[1];
+        CHECK(p.velocity.y == 0.0);
+        CHECK(std::abs(p.center.y - 0.5) < 1e-7);
+        CHECK(p.center.x == Approx(0.123 + t).epsilon(1e-12));
+    }
+    CHECK(timeline->events().empty());
+    // Then it falls: half a second after the rim, it is G t^2 / 2 lower.
+    const ModelPose later = timeline->evaluate(leave + 0.5).models[1];
+    CHECK(later.velocity.y == Approx(-9.81 * 0.5).epsilon(1e-9));
+}
