@@ -112,11 +112,13 @@ std::optional<Contact> sphere_triangle(const Path &s, double r, const glm::dvec3
         best = Contact{t, normal, s.at(t) - normal * r};
     };
     const glm::dvec3 corners[3] = {v0, v1, v2};
-    const glm::dvec3 n = glm::normalize(glm::cross(v1 - v0, v2 - v0));
+    const glm::dvec3 area = glm::cross(v1 - v0, v2 - v0);
+    const glm::dvec3 n = glm::length(area) > 0.0 ? glm::normalize(area) : glm::dvec3(0.0);
 
     // The face, from either side: signed distance n . (c(t) - v0) = +-r, a quadratic, with the
-    // touching point inside the triangle.
+    // touching point inside the triangle. A triangle without area has only edges and corners.
     for (double side : {1.0, -1.0}) {
+        if (n == glm::dvec3(0.0)) break;
         const glm::dvec3 d = s.p - v0;
         // Only the side the center is on can be met: from the other side the function is below
         // zero all along, which is not a contact.

@@ -166,3 +166,14 @@ TEST_CASE("a sphere leaving a face it bounced off does not meet it again from be
     // Far below the face, moving down: the face is behind it, no contact.
     CHECK_FALSE(sphere_triangle({{1, -5, 0}, {0, -1, 0}, {0, 0, 0}}, r, A, B, C, 100.0));
 }
+
+TEST_CASE("a triangle without area is met on its edges, never with a normal that is not finite") {
+    // Three points on the X axis: a segment. A ball falling onto it lands on it as on an edge.
+    const double r = 0.5, h = 5.0;
+    const glm::dvec3 p0(-1, 0, 0), p1(0, 0, 0), p2(1, 0, 0);
+    const auto c = sphere_triangle(falling_from({0.2, h, 0}), r, p0, p1, p2, 100.0);
+    REQUIRE(c);
+    CHECK(c->t == Approx(std::sqrt(2.0 * (h - r) / G)).epsilon(1e-12));
+    CHECK(std::isfinite(c->normal.x));
+    CHECK(c->normal.y == Approx(1.0).epsilon(1e-12));
+}
