@@ -232,3 +232,60 @@ TEST_CASE("models that start overlapping are reported once and ignored until the
     CHECK(events[2].t == Approx(meet).epsilon(1e-12));
     CHECK(((events[2].a == 0 && events[2].b == 1) || (events[2].a == 1 && events[2].b == 0)));
 }
+
+TEST_CASE("Newton's cradle with touching balls: the exchanges pass along at once, deterministically") {
+    // Five balls of radius r in a row, centers exactly 2 r apart (touching), the striker at
+    // 2 m/s meeting the first: the contacts are simultaneous, resolved one after the other.
+    const double r = sphere_radius();
+    Document doc;
+    Settings s = doc.settings();
+    s.gravity = 0.0;
+    doc.set_settings(s);
+    Model striker = model("striker", "sphere", true, false);
+    striker.initial_velocity = {2, 0, 0};
+    doc.add_model(striker, placed({-3.0, 0, 0}));
+    for (int k = 0; k < 4; ++k) doc.add_model(model("ball" + std::to_string(k), "sphere", true, false), placed({2.0 * r * k, 0, 0}));
+    auto one = timeline_of(doc), two = timeline_of(doc);
+    one->bake(4.0);
+    two->bake(4.0);
+    const auto &events = one->events();
+    REQUIRE(events.size() == 4);
+    const double meet = (3.0 - 2.0 * r) / 2.0;
+    for (const auto &e : events) CHECK(e.t == Approx(meet).epsilon(1e-12));
+    const Frame end = one->evaluate(4.0);
+    double energy = 0.0;
+    for (size_t m = 0; m < 5; ++m) energy += 0.5 * glm::dot(end.models[m].velocity, end.models[m].velocity);
+    CHECK(energy == Approx(0.5 * 4.0).epsilon(1e-12)); // no energy gained or lost
+    CHECK(end.models[4].velocity.x == Approx(2.0).epsilon(1e-12));
+    for (size_t m = 0; m < 4; ++m) CHECK(glm::length(end.models[m].velocity) < 1e-12);
+    // The same bake twice gives the same events in the same order.
+    REQUIRE(two->events().size() == events.size());
+    for (size_t k = 0; k < events.size(); ++k) {
+        CHECK(two->events()[k].a == events[k].a);
+        CHECK(two->events()[k].b == events[k].b);
+        CHECK(two->events()[k].t == events[k].t);
+    }
+}
+
+TEST_CASE("a ball flying into the inside corner of a box meets both walls at once and comes straight back") {
+    const double r = sphere_radius() * 0.5, half = 3.0;
+    Document doc;
+    Settings s = doc.settings();
+    s.gravity = 0.0;
+    doc.set_settings(s);
+    doc.add_model(model("box", "cube", false, false), placed({0, 0, 0}, half));
+    Model ball = model("ball", "sphere", true, false);
+    ball.initial_velocity = {1, 1, 0};
+    doc.add_model(ball, placed({0, 0, 0}, 0.5));
+    auto timeline = timeline_of(doc);
+    timeline->bake(10.0);
+    const double corner = half - r; // the center reaches x = y = half - r at the same time
+    const auto &events = timeline->events();
+    REQUIRE(events.size() >= 2);
+    CHECK(events[0].t == Approx(corner).epsilon(1e-12));
+    CHECK(events[1].t == Approx(corner).epsilon(1e-12));
+    const ModelPose back = timeline->evaluate(corner + 1.0).models[1];
+    CHECK(back.velocity.x == Approx(-1.0).epsilon(1e-12));
+    CHECK(back.velocity.y == Approx(-1.0).epsilon(1e-12));
+    CHECK(back.center.x == Approx(corner - 1.0).epsilon(1e-12));
+}
