@@ -4,6 +4,7 @@
 #include "free_motion.hpp"
 #include "grid.hpp"
 #include "keyed_contact.hpp"
+#include "mesh_contact.hpp"
 #include "polynomial.hpp"
 #include "response.hpp"
 #include "time_of_impact.hpp"
@@ -31,10 +32,16 @@ namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
 
-glm::dvec3 vec(const ani_vec3 &v) { return {v.x, v.y, v.z}; }
-ani_vec3 ani(const glm::dvec3 &v) { return {v.x, v.y, v.z}; }
+glm::dvec3 vec(const ani_vec3 &v) {
+    return {v.x, v.y, v.z};
+}
+ani_vec3 ani(const glm::dvec3 &v) {
+    return {v.x, v.y, v.z};
+}
 
-const char *name_of(const ani_physics_model &m) { return m.desc && m.desc->name ? m.desc->name : "?"; }
+const char *name_of(const ani_physics_model &m) {
+    return m.desc && m.desc->name ? m.desc->name : "?";
+}
 
 // A model that takes part in collisions and moves: a sphere (Dynamics or Gravity on), or any
 // model with a mesh while its keys drive it (a moving wall). Over the bake a body is keyed (its
@@ -42,20 +49,22 @@ const char *name_of(const ani_physics_model &m) { return m.desc && m.desc->name 
 struct Body {
     enum class Mode { kKeyed, kFree };
     uint32_t model = 0;
-    bool sphere = false;       // the seed's sphere special case; otherwise the model's triangles
-    double radius = 0.0;       // for a sphere: its radius when free
-    double reach = 0.0;        // the farthest a vertex is from the model's origin, in model space
+    bool sphere = false; // the seed's sphere special case; otherwise the model's triangles
+    double radius = 0.0; // for a sphere: its radius when free
+    double reach = 0.0;  // the farthest a vertex is from the model's origin, in model space
     bool dynamics = false;
     Mode mode = Mode::kFree;
-    bool active = false;       // free and colliding, or keyed and colliding
-    double keys_end = kNever;  // when its last key passes (then it is free)
-    double resume_at = kNever; // released from its keys at a contact: the next key, where they resume
-    double keyed_from = 0.0;   // start of the current keyed stretch (to report it)
-    double t0 = 0.0;           // start of the current free segment
-    Path path;                 // free: center(t) = path.at(t - t0)
+    bool active = false;      // free and colliding, or keyed and colliding
+    double keys_end = kNever; // when its last key passes (then it is free)
+    double resume_at =
+        kNever;              // released from its keys at a contact: the next key, where they resume
+    double keyed_from = 0.0; // start of the current keyed stretch (to report it)
+    double t0 = 0.0;         // start of the current free segment
+    Path path;               // free: center(t) = path.at(t - t0)
     int motion = ANI_MOTION_FREE;
-    uint64_t version = 0;      // counts the changes of path: events predicted against an older one are stale
-    bool in_grid = false;      // free spheres only
+    uint64_t version =
+        0; // counts the changes of path: events predicted against an older one are stale
+    bool in_grid = false; // free spheres only
     Cell cell{};
     int ignored_obstacles = 0; // obstacles it overlapped and does not collide with until apart
     glm::dvec3 free_a{0.0};    // its acceleration when nothing holds it up (gravity, or none)
@@ -64,24 +73,32 @@ struct Body {
     // normal in the plane), where it leaves the support.
     int support = -1;
     glm::dvec3 support_n{0.0};
+    // A model that is not a sphere, free after its last key: its triangles, turned and scaled as
+    // its last key left them, relative to its center (the seed's mesh-mesh tests).
+    std::shared_ptr<const MeshShape> shape;
     double support_d = 0.0;
     std::vector<std::array<glm::dvec3, 3>> support_edges;
+    // Where it touches the support, relative to its center: a sphere's lowest point, or the
+    // vertices of a mesh in the support's plane. It leaves the support when all have left it.
+    std::vector<glm::dvec3> support_feet;
+    double grazed_until = -kNever; // not a sphere: when the obstacles it grazed count again
 
     bool keyed() const { return mode == Mode::kKeyed; }
     bool free_sphere() const { return sphere && mode == Mode::kFree; }
     bool still() const {
-        return mode == Mode::kFree &&
-               (motion == ANI_MOTION_REST || (path.v == glm::dvec3(0.0) && path.a == glm::dvec3(0.0)));
+        return mode == Mode::kFree && (motion == ANI_MOTION_REST ||
+                                       (path.v == glm::dvec3(0.0) && path.a == glm::dvec3(0.0)));
     }
 };
 
 // The triangles of a static model, in world space, with their bounding sphere.
 struct Obstacle {
     uint32_t model = 0;
-    std::vector<glm::dvec3> corners; // 3 per triangle
-    std::vector<Box> boxes;          // 1 per triangle
-    std::vector<glm::dvec3> normals; // 1 per triangle, unit (0 for a triangle without area)
-    std::vector<double> offsets;     // 1 per triangle: its plane is normal . x = offset
+    std::vector<glm::dvec3> corners;        // 3 per triangle
+    std::vector<Box> boxes;                 // 1 per triangle
+    std::vector<glm::dvec3> normals;        // 1 per triangle, unit (0 for a triangle without area)
+    std::vector<double> offsets;            // 1 per triangle: its plane is normal . x = offset
+    std::shared_ptr<const MeshShape> shape; // in world space, for the mesh-mesh tests
     glm::dvec3 center{0.0};
     double radius = 0.0;
 };
@@ -93,17 +110,28 @@ struct Pose {
 };
 
 // A body's earliest predicted event.
-enum class EventKind { kNone, kActivation, kResume, kBody, kObstacle, kCell, kRelease, kRecheck, kLeave };
+enum class EventKind {
+    kNone,
+    kActivation,
+    kResume,
+    kBody,
+    kObstacle,
+    kCell,
+    kRelease,
+    kRecheck,
+    kLeave
+};
 struct Predicted {
     double t = kNever;
     EventKind kind = EventKind::kNone;
     int other = -1;             // the other body, or the obstacle
     uint64_t other_version = 0; // the other body's version when predicted
     Contact contact;
-    Exit exit;                  // for kCell
+    Exit exit; // for kCell
 };
 
-Predicted predicted(double t, EventKind kind, int other = -1, uint64_t other_version = 0, const Contact &contact = {}) {
+Predicted predicted(double t, EventKind kind, int other = -1, uint64_t other_version = 0,
+                    const Contact &contact = {}) {
     Predicted p;
     p.t = t;
     p.kind = kind;
@@ -117,17 +145,22 @@ Predicted predicted(double t, EventKind kind, int other = -1, uint64_t other_ver
 constexpr std::size_t kGridFrom = 16;
 
 glm::dmat3 linear_part(const ani_model_state &s) {
-    return glm::dmat3(glm::eulerAngleXYZ(glm::radians(s.angles.x), glm::radians(s.angles.y), glm::radians(s.angles.z))) *
+    return glm::dmat3(glm::eulerAngleXYZ(glm::radians(s.angles.x), glm::radians(s.angles.y),
+                                         glm::radians(s.angles.z))) *
            glm::dmat3(glm::scale(glm::dmat4(1.0), vec(s.scale)));
 }
 
-bool uniform(const ani_vec3 &s) { return s.x == s.y && s.y == s.z && s.x > 0.0; }
+bool uniform(const ani_vec3 &s) {
+    return s.x == s.y && s.y == s.z && s.x > 0.0;
+}
 
-ani_model_state keyed_state(const ani_physics_scene &scene, uint32_t m, double t, glm::dvec3 *velocity) {
+ani_model_state keyed_state(const ani_physics_scene &scene, uint32_t m, double t,
+                            glm::dvec3 *velocity) {
     ani_model_state state{};
     ani_vec3 v{};
     if (scene.evaluate_keyed(scene.host_context, m, t, &state, &v) != ANI_OK)
-        throw ani::Failure(ANI_ERR_FAILED, std::string("cannot evaluate the keys of model '") + name_of(scene.models[m]) + "'");
+        throw ani::Failure(ANI_ERR_FAILED, std::string("cannot evaluate the keys of model '") +
+                                               name_of(scene.models[m]) + "'");
     if (velocity) *velocity = vec(v);
     return state;
 }
@@ -140,10 +173,10 @@ double frobenius(const glm::dmat3 &m) {
 
 class EventBake {
   public:
-    EventBake(const ani_physics_scene &scene, double t_begin, double t_end, const ani_bake_sink &sink,
-              const ani_host *host, const BakeOptions &options)
-        : scene_(scene), t_begin_(t_begin), t_end_(t_end), sink_(sink), host_(host), options_(options),
-          gravity_(vec(gravity_vector(scene.gravity, scene.down_axis))) {}
+    EventBake(const ani_physics_scene &scene, double t_begin, double t_end,
+              const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options)
+        : scene_(scene), t_begin_(t_begin), t_end_(t_end), sink_(sink), host_(host),
+          options_(options), gravity_(vec(gravity_vector(scene.gravity, scene.down_axis))) {}
 
     void run() {
         classify();
@@ -166,11 +199,13 @@ class EventBake {
             events_at_once = now == last_event ? events_at_once + 1 : 0;
             last_event = now;
             if (events_at_once > 100000 + 10 * bodies_.size())
-                throw ani::Failure(ANI_ERR_FAILED, "models keep colliding at t = " + std::to_string(now) +
-                                                       " s without moving apart");
+                throw ani::Failure(ANI_ERR_FAILED,
+                                   "models keep colliding at t = " + std::to_string(now) +
+                                       " s without moving apart");
             handle(i, event, now);
             if (sink_.progress && ++reports_ % 1024 == 0 &&
-                !sink_.progress(sink_.context, (now - t_begin_) / std::max(t_end_ - t_begin_, 1e-300)))
+                !sink_.progress(sink_.context,
+                                (now - t_begin_) / std::max(t_end_ - t_begin_, 1e-300)))
                 throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
         }
         for (Body &b : bodies_) {
@@ -190,7 +225,8 @@ class EventBake {
         for (uint32_t i = 0; i < scene_.model_count; ++i) {
             const ani_physics_model &m = scene_.models[i];
             if (!m.desc) throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "a model has no description");
-            const ani_time_span span = m.keyed_span_count ? m.keyed_spans[0] : ani_time_span{t_begin_, t_begin_};
+            const ani_time_span span =
+                m.keyed_span_count ? m.keyed_spans[0] : ani_time_span{t_begin_, t_begin_};
             const double keyed_until = std::min(std::max(span.end, t_begin_), t_end_);
             const bool free_now = span.end <= t_begin_;
             // A model released from its keys in an earlier bake is still free where that bake
@@ -207,8 +243,9 @@ class EventBake {
                 emit_free(i, start_of(i, t_begin_), t_begin_);
                 continue;
             }
-            const std::optional<double> radius = sphere_radius(i, free_now ? t_begin_ : keyed_until);
-            if (solid && ((movable && radius) || keyed_here)) {
+            const std::optional<double> radius =
+                sphere_radius(i, free_now ? t_begin_ : keyed_until);
+            if (solid && (movable || keyed_here)) {
                 Body b;
                 b.model = i;
                 b.sphere = radius.has_value();
@@ -229,16 +266,19 @@ class EventBake {
                     body.keyed_from = t_begin_;
                     body.active = true;
                 }
-                body.path.p = body.keyed() ? vec(keyed_state(scene_, i, t_begin_, nullptr).center) : body.path.p;
-                if (!body.sphere)
+                body.path.p = body.keyed() ? vec(keyed_state(scene_, i, t_begin_, nullptr).center)
+                                           : body.path.p;
+                if (!body.sphere && keyed_here && movable)
                     log_once("model '" + std::string(name_of(m)) +
-                             "' is not a sphere: physics.custom computes its contacts with spheres, but not yet with "
-                             "static models or other models that are not spheres, which it moves through");
+                             "' is not a sphere: while its keys move it, physics.custom computes "
+                             "its contacts with "
+                             "spheres only, and it moves through other models until its last key");
                 continue;
             }
             if (keyed_until > t_begin_) emit_keyed(i, t_begin_, keyed_until);
             if (!(free_now || span.end < t_end_)) continue; // keyed throughout this bake
-            emit_free(i, start_of(i, free_now ? t_begin_ : keyed_until), free_now ? t_begin_ : keyed_until);
+            emit_free(i, start_of(i, free_now ? t_begin_ : keyed_until),
+                      free_now ? t_begin_ : keyed_until);
         }
     }
 
@@ -253,7 +293,8 @@ class EventBake {
     // The first of the model's keys after t (the end of its keys if none is in between).
     double next_key(uint32_t i, double t) const {
         const ani_physics_model &m = scene_.models[i];
-        if (m.struct_size >= offsetof(ani_physics_model, key_count) + sizeof(m.key_count) && m.key_times)
+        if (m.struct_size >= offsetof(ani_physics_model, key_count) + sizeof(m.key_count) &&
+            m.key_times)
             for (uint32_t k = 0; k < m.key_count; ++k)
                 if (m.key_times[k] > t) return m.key_times[k];
         return m.keyed_span_count ? m.keyed_spans[0].end : t;
@@ -262,7 +303,8 @@ class EventBake {
     std::optional<double> sphere_radius(uint32_t i, double t) {
         const ani_physics_model &m = scene_.models[i];
         if (!m.mesh || !m.mesh->is_sphere) return std::nullopt;
-        if (glm::length(vec(m.mesh->bound_center)) > 1e-9 * m.mesh->bound_radius) return std::nullopt;
+        if (glm::length(vec(m.mesh->bound_center)) > 1e-9 * m.mesh->bound_radius)
+            return std::nullopt;
         const ani_model_state s = keyed_state(scene_, i, t, nullptr);
         if (!uniform(s.scale)) return std::nullopt;
         return m.mesh->bound_radius * s.scale.x;
@@ -285,19 +327,51 @@ class EventBake {
                 box.hi = glm::max(box.hi, o.corners[k + j]);
             }
             o.boxes.push_back(box);
-            const glm::dvec3 n = glm::cross(o.corners[k + 1] - o.corners[k], o.corners[k + 2] - o.corners[k]);
+            const glm::dvec3 n =
+                glm::cross(o.corners[k + 1] - o.corners[k], o.corners[k + 2] - o.corners[k]);
             o.normals.push_back(glm::length(n) > 0.0 ? glm::normalize(n) : glm::dvec3(0.0));
             o.offsets.push_back(glm::dot(o.normals.back(), o.corners[k]));
         }
-        if (!o.boxes.empty() && std::all_of(o.normals.begin(), o.normals.end(), [](const glm::dvec3 &n) { return n == glm::dvec3(0.0); }))
-            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, std::string("model '") + name_of(scene_.models[i]) +
-                                                             "' has a mesh without area (every triangle is degenerate)");
+        if (!o.boxes.empty() &&
+            std::all_of(o.normals.begin(), o.normals.end(),
+                        [](const glm::dvec3 &n) { return n == glm::dvec3(0.0); }))
+            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT,
+                               std::string("model '") + name_of(scene_.models[i]) +
+                                   "' has a mesh without area (every triangle is degenerate)");
         glm::dvec3 sum(0.0);
         for (const auto &c : o.corners) sum += c;
-        o.center = o.corners.empty() ? glm::dvec3(0.0) : sum / static_cast<double>(o.corners.size());
+        o.center =
+            o.corners.empty() ? glm::dvec3(0.0) : sum / static_cast<double>(o.corners.size());
         for (const auto &c : o.corners) o.radius = std::max(o.radius, glm::length(c - o.center));
+        o.shape = build_shape(i, state.center, linear, glm::dvec3(0.0));
         triangle_count_ += o.boxes.size();
         obstacles_.push_back(std::move(o));
+    }
+
+    // Model i's triangles as a MeshShape: model-space vertices turned and scaled by `linear`,
+    // relative to `origin` (its center for a body, the world's origin for an obstacle).
+    std::shared_ptr<const MeshShape> build_shape(uint32_t i, const ani_vec3 &center,
+                                                 const glm::dmat3 &linear,
+                                                 const glm::dvec3 &origin) const {
+        const ani_mesh_view &mesh = *scene_.models[i].mesh;
+        std::vector<glm::dvec3> vertices;
+        vertices.reserve(mesh.vertex_count);
+        for (uint32_t k = 0; k < mesh.vertex_count; ++k) {
+            const double *p = mesh.positions + 3 * static_cast<size_t>(k);
+            vertices.push_back(vec(center) - origin + linear * glm::dvec3(p[0], p[1], p[2]));
+        }
+        std::vector<std::array<uint32_t, 3>> triangles(mesh.triangle_count);
+        for (uint32_t k = 0; k < mesh.triangle_count; ++k)
+            for (uint32_t c = 0; c < 3; ++c)
+                triangles[k][c] = mesh.triangles[3 * static_cast<size_t>(k) + c];
+        try {
+            return std::make_shared<const MeshShape>(
+                MeshShape::build(std::move(vertices), std::move(triangles)));
+        } catch (const std::exception &e) {
+            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, std::string("model '") +
+                                                             name_of(scene_.models[i]) +
+                                                             "': " + e.what());
+        }
     }
 
     // With many bodies, a grid over the region where they start and the obstacles are; free
@@ -359,7 +433,8 @@ class EventBake {
 
     // Free from t with the given state: the closed form of physics.md's four cases.
     void activate(Body &b, double t, const ani_body_state &start) {
-        const ani_motion_segment s = free_segment(b.model, *scene_.models[b.model].desc, start, t, t_end_, ani(gravity_));
+        const ani_motion_segment s =
+            free_segment(b.model, *scene_.models[b.model].desc, start, t, t_end_, ani(gravity_));
         b.mode = Body::Mode::kFree;
         b.active = true;
         if (b.sphere)
@@ -370,6 +445,12 @@ class EventBake {
         b.motion = s.motion;
         b.support = -1;
         b.support_edges.clear();
+        b.shape.reset();
+        if (!b.sphere && t >= b.keys_end) { // its keys no longer turn or scale it
+            const ani_model_state state = keyed_state(scene_, b.model, t, nullptr);
+            b.shape =
+                build_shape(b.model, ani(glm::dvec3(0.0)), linear_part(state), glm::dvec3(0.0));
+        }
         ++b.version;
     }
 
@@ -392,9 +473,13 @@ class EventBake {
     }
 
     void emit(const ani_motion_segment &s) {
-        auto finite = [](const ani_vec3 &v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
-        if (!finite(s.p0) || !finite(s.v0) || !finite(s.a) || !std::isfinite(s.t0) || !std::isfinite(s.t1))
-            throw ani::Failure(ANI_ERR_FAILED, std::string("model '") + name_of(scene_.models[s.model]) +
+        auto finite = [](const ani_vec3 &v) {
+            return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+        };
+        if (!finite(s.p0) || !finite(s.v0) || !finite(s.a) || !std::isfinite(s.t0) ||
+            !std::isfinite(s.t1))
+            throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
+                                                   name_of(scene_.models[s.model]) +
                                                    "' would move to a value that is not finite");
         sink_.segment(sink_.context, &s);
     }
@@ -484,9 +569,10 @@ class EventBake {
         double best_d = kNever;
         for (uint32_t k = 0; k < mesh.triangle_count; ++k) {
             const uint32_t *tri = mesh.triangles + 3 * static_cast<size_t>(k);
-            const glm::dvec3 c = closest_point_on_triangle(q, p.center + p.linear * vertex(mesh, tri[0]),
-                                                           p.center + p.linear * vertex(mesh, tri[1]),
-                                                           p.center + p.linear * vertex(mesh, tri[2]));
+            const glm::dvec3 c =
+                closest_point_on_triangle(q, p.center + p.linear * vertex(mesh, tri[0]),
+                                          p.center + p.linear * vertex(mesh, tri[1]),
+                                          p.center + p.linear * vertex(mesh, tri[2]));
             const double d = glm::length(q - c);
             if (d < best_d) {
                 best_d = d;
@@ -500,7 +586,8 @@ class EventBake {
         glm::dvec3 best = o.center;
         double best_d = kNever;
         for (size_t k = 0; k + 2 < o.corners.size(); k += 3) {
-            const glm::dvec3 c = closest_point_on_triangle(q, o.corners[k], o.corners[k + 1], o.corners[k + 2]);
+            const glm::dvec3 c =
+                closest_point_on_triangle(q, o.corners[k], o.corners[k + 1], o.corners[k + 2]);
             const double d = glm::length(q - c);
             if (d < best_d) {
                 best_d = d;
@@ -513,7 +600,8 @@ class EventBake {
     // How fast any point of a body can move around time t, from its pose and one a moment
     // later (the speed of its center plus the rate of its rotation and scale times its reach).
     double point_speed(const Body &b, double t, double dt) const {
-        if (b.free_sphere()) return glm::length(b.path.velocity(t - b.t0)) + glm::length(b.path.a) * dt;
+        if (b.free_sphere())
+            return glm::length(b.path.velocity(t - b.t0)) + glm::length(b.path.a) * dt;
         const double h = std::max(1e-6, dt);
         const Pose p = pose(b, t), q = pose(b, t + h);
         const double reach = b.sphere ? 0.0 : b.reach;
@@ -531,7 +619,8 @@ class EventBake {
         const glm::dvec3 local = glm::inverse(p.linear) * (point - p.center);
         const double h = 1e-6 * std::max(1.0, std::abs(t));
         const Pose before = pose(b, t - h), after = pose(b, t + h);
-        return ((after.center + after.linear * local) - (before.center + before.linear * local)) / (2.0 * h);
+        return ((after.center + after.linear * local) - (before.center + before.linear * local)) /
+               (2.0 * h);
     }
 
     // ---- overlaps at the start -------------------------------------------------------------
@@ -545,8 +634,9 @@ class EventBake {
         const double rs = radius_at(s, ps);
         if (o.sphere) {
             const double ro = radius_at(o, po);
-            nearest = po.center + (glm::length(ps.center - po.center) > 0.0 ? glm::normalize(ps.center - po.center) * ro
-                                                                            : glm::dvec3(0.0));
+            nearest = po.center + (glm::length(ps.center - po.center) > 0.0
+                                       ? glm::normalize(ps.center - po.center) * ro
+                                       : glm::dvec3(0.0));
             gap = glm::length(ps.center - po.center) - rs - ro;
         } else {
             const double reach = o.reach * frobenius(po.linear);
@@ -567,7 +657,8 @@ class EventBake {
         return gap;
     }
 
-    double gap_to_obstacle(const Body &b, const Obstacle &o, double t, Contact *contact = nullptr) const {
+    double gap_to_obstacle(const Body &b, const Obstacle &o, double t,
+                           Contact *contact = nullptr) const {
         const Pose p = pose(b, t);
         const glm::dvec3 c = p.center;
         const double r = radius_at(b, p);
@@ -596,8 +687,8 @@ class EventBake {
             const glm::dvec3 c = b.path.at(t - b.t0);
             if (glm::length(c - o.center) > b.radius + o.radius + gap) return false;
             for (size_t k = 0; k + 2 < o.corners.size(); k += 3)
-                if (glm::length(c - closest_point_on_triangle(c, o.corners[k], o.corners[k + 1], o.corners[k + 2])) <
-                    b.radius + gap)
+                if (glm::length(c - closest_point_on_triangle(c, o.corners[k], o.corners[k + 1],
+                                                              o.corners[k + 2])) < b.radius + gap)
                     return true;
             return false;
         }
@@ -607,7 +698,8 @@ class EventBake {
     bool within_body(const Body &a, const Body &b, double t, double gap) const {
         if (!a.sphere && !b.sphere) return false;
         if (a.free_sphere() && b.free_sphere())
-            return glm::length(a.path.at(t - a.t0) - b.path.at(t - b.t0)) < a.radius + b.radius + gap;
+            return glm::length(a.path.at(t - a.t0) - b.path.at(t - b.t0)) <
+                   a.radius + b.radius + gap;
         return gap_between(a, b, t) < gap;
     }
 
@@ -620,6 +712,9 @@ class EventBake {
     }
     // Apart: farther than touching, so that a pair left alone is not met again at once.
     bool apart_from_obstacle(const Body &b, const Obstacle &o, double t) const {
+        // A model that is not a sphere has no distance to an obstacle here: the pair it grazed
+        // is left alone while it moves a quarter of its size.
+        if (!b.sphere) return t >= b.grazed_until;
         return !within_obstacle(b, o, t, touching(b));
     }
     bool apart_from_body(const Body &a, const Body &b, double t) const {
@@ -630,7 +725,8 @@ class EventBake {
     // grazing an edge) is not a collision: reflecting would change nothing and find the same
     // contact again at once. The pair is left alone until they are apart.
     static bool grazing(const glm::dvec3 &relative_velocity, const glm::dvec3 &n) {
-        return -glm::dot(relative_velocity, n) <= 1e-9 * std::max(1.0, glm::length(relative_velocity));
+        return -glm::dot(relative_velocity, n) <=
+               1e-9 * std::max(1.0, glm::length(relative_velocity));
     }
 
     // Meshes are read in single precision, so a sphere placed on a face can be inside it by a
@@ -638,7 +734,9 @@ class EventBake {
     static double touching(const Body &b) { return 1e-6 * b.radius; }
 
     // How close counts as touching for conservative advancement: a trillionth of the size.
-    static double tolerance(const Body &b) { return 1e-12 * std::max(1.0, b.sphere ? b.radius : b.reach); }
+    static double tolerance(const Body &b) {
+        return 1e-12 * std::max(1.0, b.sphere ? b.radius : b.reach);
+    }
 
     // Calls f(j) for every active body that body i could meet: its grid neighbours and the
     // bodies outside the grid, or every body when i itself is outside.
@@ -668,24 +766,34 @@ class EventBake {
         });
     }
 
-    static std::pair<int, int> pair_key(int a, int b) { return b >= 0 && b < a ? std::make_pair(b, a) : std::make_pair(a, b); }
+    static std::pair<int, int> pair_key(int a, int b) {
+        return b >= 0 && b < a ? std::make_pair(b, a) : std::make_pair(a, b);
+    }
 
     void ignore(int i, int other, double t, bool report = true) {
         if (!ignored_.insert(pair_key(i, other)).second) return;
         const uint32_t model_b = other >= 0 ? bodies_[static_cast<size_t>(other)].model
                                             : obstacles_[static_cast<size_t>(-1 - other)].model;
-        if (other < 0) ++bodies_[static_cast<size_t>(i)].ignored_obstacles;
+        if (other < 0) {
+            Body &b = bodies_[static_cast<size_t>(i)];
+            ++b.ignored_obstacles;
+            if (!b.sphere) b.grazed_until = t + recheck_after(b, t);
+        }
         if (report)
-            log_once("models '" + std::string(name_of(scene_.models[bodies_[static_cast<size_t>(i)].model])) + "' and '" +
-                 name_of(scene_.models[model_b]) + "' overlap at t = " + std::to_string(t) +
-                 " s; their contact is ignored until they separate");
+            log_once("models '" +
+                     std::string(name_of(scene_.models[bodies_[static_cast<size_t>(i)].model])) +
+                     "' and '" + name_of(scene_.models[model_b]) + "' overlap at t = " +
+                     std::to_string(t) + " s; their contact is ignored until they separate");
     }
 
     void unignore(int i, int other) {
-        if (ignored_.erase(pair_key(i, other)) && other < 0) --bodies_[static_cast<size_t>(i)].ignored_obstacles;
+        if (ignored_.erase(pair_key(i, other)) && other < 0)
+            --bodies_[static_cast<size_t>(i)].ignored_obstacles;
     }
 
-    bool is_ignored(int a, int b) const { return !ignored_.empty() && ignored_.count(pair_key(a, b)); }
+    bool is_ignored(int a, int b) const {
+        return !ignored_.empty() && ignored_.count(pair_key(a, b));
+    }
 
     // ---- predictions -----------------------------------------------------------------------
 
@@ -718,13 +826,18 @@ class EventBake {
         std::size_t tested = 0;
         for_candidates(i, [&](int j) {
             const Body &o = bodies_[static_cast<size_t>(j)];
-            if (!o.active || (!b.sphere && !o.sphere)) return;
+            if (!o.active || (!b.sphere && !o.sphere && !(b.shape && o.shape))) return;
             if (!is_ignored(i, j)) {
                 ++tested;
                 std::optional<Contact> c;
-                if (b.free_sphere() && o.free_sphere())
-                    c = sphere_sphere(from_now(b, now), b.radius, from_now(o, now), o.radius, limit);
-                else if (!(b.still() && o.still()))
+                if (b.free_sphere() && o.free_sphere()) {
+                    c = sphere_sphere(from_now(b, now), b.radius, from_now(o, now), o.radius,
+                                      limit);
+                } else if (b.shape && o.shape) {
+                    if (!(b.still() && o.still()))
+                        c = mesh_pair(*b.shape, from_now(b, now), *o.shape, from_now(o, now),
+                                      limit);
+                } else if (!(b.still() && o.still()))
                     c = advance(i, j, -1, now, limit); // may find them overlapping, and ignore them
                 if (c) {
                     next = predicted(now + c->t, EventKind::kBody, j, o.version, *c);
@@ -736,7 +849,10 @@ class EventBake {
         count_.done += tested;
         count_.skipped += (bodies_.size() - 1) - tested;
         if (b.support >= 0) predict_leave(i, now, limit, next);
-        if (b.sphere) predict_obstacles(i, now, limit, next);
+        if (b.sphere)
+            predict_obstacles(i, now, limit, next);
+        else if (b.shape)
+            predict_mesh_obstacles(i, now, limit, next);
         if (b.ignored_obstacles > 0) recheck_obstacles(i, now, next);
         set_prediction(i, next);
     }
@@ -748,17 +864,20 @@ class EventBake {
         if (b.free_sphere() && o.free_sphere()) {
             // |d|^2 - R^2 turns non-negative.
             const Path path = from_now(b, now), other = from_now(o, now);
-            const glm::dvec3 d = path.p - other.p, e = path.v - other.v, h = 0.5 * (path.a - other.a);
+            const glm::dvec3 d = path.p - other.p, e = path.v - other.v,
+                             h = 0.5 * (path.a - other.a);
             const double reach = b.radius + o.radius + touching(b) + touching(o);
-            Quartic gap = {glm::dot(d, d) - reach * reach, 2.0 * glm::dot(d, e), glm::dot(e, e) + 2.0 * glm::dot(d, h),
-                           2.0 * glm::dot(e, h), glm::dot(h, h)};
+            Quartic gap = {glm::dot(d, d) - reach * reach, 2.0 * glm::dot(d, e),
+                           glm::dot(e, e) + 2.0 * glm::dot(d, h), 2.0 * glm::dot(e, h),
+                           glm::dot(h, h)};
             for (double &c : gap) c = -c;
             s = first_contact(gap, 0.0, limit);
         } else if (apart_from_body(b, o, now)) {
             s = 0.0;
         } else {
             // Looked at again after either has moved a quarter of the smaller size.
-            const double size = std::min(b.sphere ? b.radius : b.reach, o.sphere ? o.radius : o.reach);
+            const double size =
+                std::min(b.sphere ? b.radius : b.reach, o.sphere ? o.radius : o.reach);
             const double speed = point_speed(b, now, 0.0) + point_speed(o, now, 0.0);
             if (speed > 0.0) s = std::min(limit, 0.25 * size / speed);
         }
@@ -775,7 +894,9 @@ class EventBake {
         const Body *o = j >= 0 ? &bodies_[static_cast<size_t>(j)] : nullptr;
         const Obstacle *ob = obstacle >= 0 ? &obstacles_[static_cast<size_t>(obstacle)] : nullptr;
         Approach approach;
-        approach.gap = [&](double t) { return o ? gap_between(b, *o, t) : gap_to_obstacle(b, *ob, t); };
+        approach.gap = [&](double t) {
+            return o ? gap_between(b, *o, t) : gap_to_obstacle(b, *ob, t);
+        };
         approach.closing_speed = [&](double t, double dt) {
             return point_speed(b, t, dt) + (o ? point_speed(*o, t, dt) : 0.0);
         };
@@ -839,7 +960,8 @@ class EventBake {
                 if (!reach.overlaps(ob.boxes[k / 3])) continue;
                 if (on_it && in_support_plane(b, ob, k / 3)) continue; // it slides on these
                 ++tested;
-                if (auto c = sphere_triangle(path, b.radius, ob.corners[k], ob.corners[k + 1], ob.corners[k + 2], limit)) {
+                if (auto c = sphere_triangle(path, b.radius, ob.corners[k], ob.corners[k + 1],
+                                             ob.corners[k + 2], limit)) {
                     next = predicted(now + c->t, EventKind::kObstacle, static_cast<int>(o), 0, *c);
                     limit = c->t;
                 }
@@ -847,6 +969,29 @@ class EventBake {
         }
         count_.done += tested;
         count_.skipped += triangle_count_ - std::min(tested, triangle_count_);
+    }
+
+    // The seed's mesh-mesh tests (mesh_contact.hpp), counted.
+    std::optional<Contact> mesh_pair(const MeshShape &a, const Path &pa, const MeshShape &b,
+                                     const Path &pb, double limit) {
+        PairStats stats;
+        auto c = mesh_mesh(a, pa, b, pb, limit, &stats);
+        count_.mesh_tests += stats.primitive_tests;
+        return c;
+    }
+
+    // A free model that is not a sphere against the static models.
+    void predict_mesh_obstacles(int i, double now, double limit, Predicted &next) {
+        const Body &b = bodies_[static_cast<size_t>(i)];
+        if (b.still()) return;
+        const Path path = from_now(b, now), fixed{};
+        for (size_t o = 0; o < obstacles_.size(); ++o) {
+            if (b.ignored_obstacles > 0 && is_ignored(i, -1 - static_cast<int>(o))) continue;
+            if (auto c = mesh_pair(*b.shape, path, *obstacles_[o].shape, fixed, limit)) {
+                next = predicted(now + c->t, EventKind::kObstacle, static_cast<int>(o), 0, *c);
+                limit = c->t;
+            }
+        }
     }
 
     // ---- resting and sliding on static models ---------------------------------------------
@@ -874,20 +1019,25 @@ class EventBake {
             for (size_t k = 0; k < ob.boxes.size(); ++k) {
                 const glm::dvec3 n = ob.normals[k];
                 if (n == glm::dvec3(0.0) || !near.overlaps(ob.boxes[k])) continue;
-                const double h = glm::dot(n, c) - ob.offsets[k]; // height of the center above the face's plane
+                const double h =
+                    glm::dot(n, c) - ob.offsets[k]; // height of the center above the face's plane
                 if (std::abs(h - b.radius) > tol) continue;
-                const glm::dvec3 q =
-                    closest_point_on_triangle(c, ob.corners[3 * k], ob.corners[3 * k + 1], ob.corners[3 * k + 2]);
-                if (glm::length((c - q) - h * n) > tol) continue; // nearest to an edge or a corner, not the face
-                if (glm::dot(b.free_a, n) > 0.0) continue;          // pulled away from it
-                if (std::abs(glm::dot(v, n)) > 1e-9 * std::max(1.0, glm::length(v))) continue; // bouncing
+                const glm::dvec3 q = closest_point_on_triangle(
+                    c, ob.corners[3 * k], ob.corners[3 * k + 1], ob.corners[3 * k + 2]);
+                if (glm::length((c - q) - h * n) > tol)
+                    continue; // nearest to an edge or a corner, not the face
+                if (glm::dot(b.free_a, n) > 0.0) continue; // pulled away from it
+                if (std::abs(glm::dot(v, n)) > 1e-9 * std::max(1.0, glm::length(v)))
+                    continue; // bouncing
                 Body held = b;
                 held.t0 = t;
-                held.path = Path{c - (h - b.radius) * n, v - glm::dot(v, n) * n, b.free_a - glm::dot(b.free_a, n) * n};
+                held.path = Path{c - (h - b.radius) * n, v - glm::dot(v, n) * n,
+                                 b.free_a - glm::dot(b.free_a, n) * n};
                 held.support = static_cast<int>(o);
                 held.support_n = n;
                 held.support_d = ob.offsets[k];
                 held.support_edges = support_boundary(ob, held);
+                held.support_feet = {-b.radius * n};
                 if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t))))
                     continue; // on the rim of the flat region, on its way off
                 close_segment(b, t);
@@ -900,9 +1050,56 @@ class EventBake {
         return false;
     }
 
+    // A free model that is not a sphere, meeting a face of a static model with no speed along its
+    // normal and pulled into it, rests or slides on the flat region of that face's plane.
+    bool settle_on(int i, int o, const glm::dvec3 &n, double t) {
+        Body &b = bodies_[static_cast<size_t>(i)];
+        if (!b.shape || b.support >= 0 || b.motion == ANI_MOTION_REST ||
+            !(glm::dot(b.free_a, n) < 0.0))
+            return false;
+        const Obstacle &ob = obstacles_[static_cast<size_t>(o)];
+        const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
+        // The face: one of the obstacle's, in the plane through the contact with normal n.
+        int face = -1;
+        for (size_t k = 0; k < ob.normals.size() && face < 0; ++k)
+            if (glm::dot(ob.normals[k], n) > 1.0 - 1e-9) face = static_cast<int>(k);
+        if (face < 0) return false;
+        Body held = b;
+        held.support = o;
+        held.support_n = n;
+        // Of the faces facing that way, the plane the body touches: the nearest below its center.
+        double best = kNever;
+        for (size_t k = 0; k < ob.normals.size(); ++k)
+            if (glm::dot(ob.normals[k], n) > 1.0 - 1e-9) {
+                const double below = glm::dot(n, c) - ob.offsets[k];
+                if (below >= 0.0 && below < best) {
+                    best = below;
+                    held.support_d = ob.offsets[k];
+                }
+            }
+        if (!(best < kNever)) return false;
+        held.support_edges = support_boundary(ob, held);
+        if (held.support_edges.empty()) return false;
+        held.support_feet.clear();
+        const double size = std::max(1.0, glm::length(b.shape->bounds().hi - b.shape->bounds().lo));
+        for (const glm::dvec3 &corner : b.shape->vertices)
+            if (std::abs(glm::dot(n, c + corner) - held.support_d) <= 1e-9 * size)
+                held.support_feet.push_back(corner);
+        if (held.support_feet.empty()) return false;
+        held.t0 = t;
+        held.path = Path{c, v - glm::dot(v, n) * n, b.free_a - glm::dot(b.free_a, n) * n};
+        if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t)))) return false;
+        close_segment(b, t);
+        held.motion = ANI_MOTION_FREE;
+        ++held.version;
+        b = std::move(held);
+        return true;
+    }
+
     // The edges that bound the flat region of an obstacle in a body's support plane: those of
     // its triangles in that plane that only one of them has, with their outward normal.
-    static std::vector<std::array<glm::dvec3, 3>> support_boundary(const Obstacle &o, const Body &b) {
+    static std::vector<std::array<glm::dvec3, 3>> support_boundary(const Obstacle &o,
+                                                                   const Body &b) {
         auto less = [](const glm::dvec3 &x, const glm::dvec3 &y) {
             return x.x != y.x ? x.x < y.x : x.y != y.y ? x.y < y.y : x.z < y.z;
         };
@@ -914,7 +1111,8 @@ class EventBake {
         for (size_t k = 0; k < o.boxes.size(); ++k) {
             if (!in_support_plane(b, o, k)) continue;
             for (int e = 0; e < 3; ++e) {
-                glm::dvec3 p = o.corners[3 * k + static_cast<size_t>(e)], q = o.corners[3 * k + static_cast<size_t>((e + 1) % 3)];
+                glm::dvec3 p = o.corners[3 * k + static_cast<size_t>(e)],
+                           q = o.corners[3 * k + static_cast<size_t>((e + 1) % 3)];
                 if (less(q, p)) std::swap(p, q);
                 edges.push_back({p, q, o.corners[3 * k + static_cast<size_t>((e + 2) % 3)], 1});
             }
@@ -925,7 +1123,9 @@ class EventBake {
         std::vector<std::array<glm::dvec3, 3>> boundary;
         for (size_t k = 0; k < edges.size();) {
             size_t same = k + 1;
-            while (same < edges.size() && edges[same].a == edges[k].a && edges[same].b == edges[k].b) ++same;
+            while (same < edges.size() && edges[same].a == edges[k].a &&
+                   edges[same].b == edges[k].b)
+                ++same;
             if (same == k + 1) {
                 const Edge &e = edges[k];
                 glm::dvec3 m = glm::normalize(glm::cross(e.b - e.a, b.support_n));
@@ -937,24 +1137,34 @@ class EventBake {
         return boundary;
     }
 
-    // When the point it touches the support with leaves the flat region, within [now, now + limit].
+    // When the last of the points it touches the support with leaves the flat region, within
+    // [now, now + limit]. (A model that cannot turn tips over nothing: it is held until it is
+    // wholly past the rim.)
     std::optional<double> leaves_support(const Body &b, double now, double limit) const {
         const Path c = from_now(b, now);
-        const Path p{c.p - b.radius * b.support_n, c.v, c.a}; // the point of contact
-        std::optional<double> first;
-        for (const auto &[ea, eb, m] : b.support_edges) {
-            const auto s = upward_root(glm::dot(m, p.p - ea), glm::dot(m, p.v), 0.5 * glm::dot(m, p.a), limit);
-            if (!s || (first && *s >= *first)) continue;
-            const glm::dvec3 e = eb - ea;
-            const double along = glm::dot(p.at(*s) - ea, e) / glm::dot(e, e);
-            if (along < -1e-9 || along > 1.0 + 1e-9) continue; // it passes the line beyond this edge
-            first = s;
+        std::optional<double> last;
+        for (const glm::dvec3 &foot : b.support_feet) {
+            const Path p{c.p + foot, c.v, c.a};
+            std::optional<double> first;
+            for (const auto &[ea, eb, m] : b.support_edges) {
+                const auto s = upward_root(glm::dot(m, p.p - ea), glm::dot(m, p.v),
+                                           0.5 * glm::dot(m, p.a), limit);
+                if (!s || (first && *s >= *first)) continue;
+                const glm::dvec3 e = eb - ea;
+                const double along = glm::dot(p.at(*s) - ea, e) / glm::dot(e, e);
+                if (along < -1e-9 || along > 1.0 + 1e-9)
+                    continue; // it passes the line beyond this edge
+                first = s;
+            }
+            if (!first) return std::nullopt; // this one stays on within the window
+            last = last ? std::max(*last, *first) : *first;
         }
-        return first;
+        return last;
     }
 
     void predict_leave(int i, double now, double limit, Predicted &next) {
-        if (auto s = leaves_support(bodies_[static_cast<size_t>(i)], now, limit); s && now + *s < next.t)
+        if (auto s = leaves_support(bodies_[static_cast<size_t>(i)], now, limit);
+            s && now + *s < next.t)
             next = predicted(now + *s, EventKind::kLeave);
     }
 
@@ -967,6 +1177,7 @@ class EventBake {
         b.t0 = t;
         b.support = -1;
         b.support_edges.clear();
+        b.support_feet.clear();
         ++b.version;
     }
 
@@ -976,7 +1187,8 @@ class EventBake {
         Body &b = bodies_[static_cast<size_t>(i)];
         if (b.support >= 0) {
             const glm::dvec3 v = b.path.velocity(t - b.t0);
-            if (std::abs(glm::dot(v, b.support_n)) > 1e-9 * std::max(1.0, glm::length(v))) unsupport(b, t);
+            if (std::abs(glm::dot(v, b.support_n)) > 1e-9 * std::max(1.0, glm::length(v)))
+                unsupport(b, t);
         }
         try_settle(i, t);
     }
@@ -986,12 +1198,26 @@ class EventBake {
     void recheck_obstacles(int i, double now, Predicted &next) {
         const Body &b = bodies_[static_cast<size_t>(i)];
         for (size_t o = 0; o < obstacles_.size(); ++o)
-            if (is_ignored(i, -1 - static_cast<int>(o)) && apart_from_obstacle(b, obstacles_[o], now))
+            if (is_ignored(i, -1 - static_cast<int>(o)) &&
+                apart_from_obstacle(b, obstacles_[o], now))
                 unignore(i, -1 - static_cast<int>(o));
         if (b.ignored_obstacles == 0 || b.still()) return;
-        const double speed = point_speed(b, now, 0.0) + std::sqrt(glm::length(b.path.a) * b.radius);
-        if (speed > 0.0 && now + 0.25 * b.radius / speed < next.t)
-            next = predicted(now + 0.25 * b.radius / speed, EventKind::kRecheck);
+        const double wait = recheck_after(b, now);
+        if (wait < kNever && now + wait < next.t) next = predicted(now + wait, EventKind::kRecheck);
+    }
+
+    // How long a body takes to move a quarter of its size (about), to look again at an obstacle
+    // it overlaps or grazed.
+    double recheck_after(const Body &b, double now) const {
+        const double size = body_size(b);
+        const double speed = point_speed(b, now, 0.0) + std::sqrt(glm::length(b.path.a) * size);
+        return speed > 0.0 ? 0.25 * size / speed : kNever;
+    }
+
+    double body_size(const Body &b) const {
+        if (b.sphere) return b.radius;
+        if (b.shape) return 0.5 * glm::length(b.shape->bounds().hi - b.shape->bounds().lo);
+        return b.reach;
     }
 
     void set_prediction(int i, const Predicted &p) {
@@ -1044,7 +1270,8 @@ class EventBake {
                 break;
             }
             if (event.contact.normal == glm::dvec3(0.0)) break; // undecided: look again
-            if (grazing(point_velocity(b, event.contact.point, now) - point_velocity(o, event.contact.point, now),
+            if (grazing(point_velocity(b, event.contact.point, now) -
+                            point_velocity(o, event.contact.point, now),
                         event.contact.normal)) {
                 ignore(i, event.other, now, false);
                 break;
@@ -1056,7 +1283,8 @@ class EventBake {
         case EventKind::kObstacle:
             if (event.contact.normal == glm::dvec3(0.0)) break;
             if (grazing(point_velocity(b, event.contact.point, now), event.contact.normal)) {
-                ignore(i, -1 - event.other, now, false);
+                if (!settle_on(i, event.other, event.contact.normal, now))
+                    ignore(i, -1 - event.other, now, false);
                 break;
             }
             collide_obstacle(i, obstacles_[static_cast<size_t>(event.other)], event.contact, now);
@@ -1110,7 +1338,8 @@ class EventBake {
         const glm::dvec3 n = contact.normal;
         // A keyed body is a wall of infinite mass moving as its keys say, for the free body it
         // meets: that one reflects off it with the relative velocity (physics.md).
-        const glm::dvec3 v = point_velocity(b, contact.point, t), vo = point_velocity(o, contact.point, t);
+        const glm::dvec3 v = point_velocity(b, contact.point, t),
+                         vo = point_velocity(o, contact.point, t);
         const bool b_wall = b.keyed() && !o.keyed(), o_wall = o.keyed() && !b.keyed();
         if (b.keyed()) release(i, t);
         if (o.keyed()) release(j, t);
@@ -1123,19 +1352,25 @@ class EventBake {
         e.speed = std::max(0.0, -glm::dot(v - vo, n));
         if (b_wall || o_wall) {
             Body &free = b_wall ? o : b;
-            const glm::dvec3 v_free = b_wall ? vo : v, v_wall = b_wall ? v : vo, n_free = b_wall ? -n : n;
-            restart(free, t, free.dynamics ? reflect_off_moving_wall(v_free, v_wall, n_free) : glm::dvec3(0.0),
+            const glm::dvec3 v_free = b_wall ? vo : v, v_wall = b_wall ? v : vo,
+                             n_free = b_wall ? -n : n;
+            restart(free, t,
+                    free.dynamics ? reflect_off_moving_wall(v_free, v_wall, n_free)
+                                  : glm::dvec3(0.0),
                     !free.dynamics);
         } else if (b.dynamics && o.dynamics) {
-            const double ma = scene_.models[b.model].desc->mass, mb = scene_.models[o.model].desc->mass;
+            const double ma = scene_.models[b.model].desc->mass,
+                         mb = scene_.models[o.model].desc->mass;
             const auto [va, vb] = elastic_exchange(ma, v, mb, vo, n);
             restart(b, t, va, false);
             restart(o, t, vb, false);
         } else {
             // A model without Dynamics stops at the contact; one with Dynamics reflects off it as
             // off a wall moving at its velocity then.
-            restart(b, t, b.dynamics ? reflect_off_moving_wall(v, vo, n) : glm::dvec3(0.0), !b.dynamics);
-            restart(o, t, o.dynamics ? reflect_off_moving_wall(vo, v, -n) : glm::dvec3(0.0), !o.dynamics);
+            restart(b, t, b.dynamics ? reflect_off_moving_wall(v, vo, n) : glm::dvec3(0.0),
+                    !b.dynamics);
+            restart(o, t, o.dynamics ? reflect_off_moving_wall(vo, v, -n) : glm::dvec3(0.0),
+                    !o.dynamics);
         }
         after_contact(i, t);
         after_contact(j, t);
@@ -1151,16 +1386,23 @@ class EventBake {
     void report_counts() {
         if (!sink_.count) return;
         const std::pair<const char *, std::size_t> counts[] = {
-            {"pair tests done", count_.done},       {"pair tests skipped", count_.skipped},
-            {"predictions", count_.predictions},    {"stale predictions", count_.stale},
-            {"cell crossings", count_.crossings},   {"collisions", count_.collisions},
-            {"conservative advancements", count_.advancements}, {"releases from keys", count_.releases},
+            {"pair tests done", count_.done},
+            {"pair tests skipped", count_.skipped},
+            {"predictions", count_.predictions},
+            {"stale predictions", count_.stale},
+            {"cell crossings", count_.crossings},
+            {"collisions", count_.collisions},
+            {"conservative advancements", count_.advancements},
+            {"releases from keys", count_.releases},
+            {"mesh feature tests", count_.mesh_tests},
         };
-        for (const auto &[name, value] : counts) sink_.count(sink_.context, name, static_cast<double>(value));
+        for (const auto &[name, value] : counts)
+            sink_.count(sink_.context, name, static_cast<double>(value));
     }
 
     void log_once(const std::string &message) {
-        if (host_ && host_->log) host_->log(host_, ANI_LOG_WARNING, "physics.custom", message.c_str());
+        if (host_ && host_->log)
+            host_->log(host_, ANI_LOG_WARNING, "physics.custom", message.c_str());
     }
 
     const ani_physics_scene &scene_;
@@ -1175,21 +1417,21 @@ class EventBake {
     std::unique_ptr<UniformGrid> grid_; // with many bodies
     std::vector<int> outside_;          // active bodies not in the grid (all of them without one)
     std::unique_ptr<EventQueue> queue_;
-    std::vector<Predicted> predicted_;  // each body's earliest event
+    std::vector<Predicted> predicted_; // each body's earliest event
     // Pairs that started overlapping (physics.md): reported once, ignored until they separate.
     // Keys: (body, other body) with the lower first, or (body, -1 - obstacle).
     std::set<std::pair<int, int>> ignored_;
     struct {
-        std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0, collisions = 0,
-                    advancements = 0, releases = 0;
+        std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0,
+                    collisions = 0, advancements = 0, releases = 0, mesh_tests = 0;
     } count_;
     std::size_t reports_ = 0;
 };
 
 } // namespace
 
-void bake_scene(const ani_physics_scene &scene, double t_begin, double t_end, const ani_bake_sink &sink,
-                const ani_host *host, const BakeOptions &options) {
+void bake_scene(const ani_physics_scene &scene, double t_begin, double t_end,
+                const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options) {
     EventBake(scene, t_begin, t_end, sink, host, options).run();
 }
 

@@ -12,13 +12,16 @@ namespace physics_custom {
 
 class EventQueue {
   public:
-    explicit EventQueue(std::size_t n) : time_(n, std::numeric_limits<double>::infinity()), heap_(n), slot_(n) {
+    explicit EventQueue(std::size_t n)
+        : time_(n, std::numeric_limits<double>::infinity()), heap_(n), slot_(n) {
         for (std::size_t i = 0; i < n; ++i) heap_[i] = slot_[i] = i;
     }
 
     // The body whose event comes first, and its time.
     std::size_t top() const { return heap_[0]; }
-    double top_time() const { return heap_.empty() ? std::numeric_limits<double>::infinity() : time_[heap_[0]]; }
+    double top_time() const {
+        return heap_.empty() ? std::numeric_limits<double>::infinity() : time_[heap_[0]];
+    }
     double time(std::size_t body) const { return time_[body]; }
 
     void set(std::size_t body, double t) {
@@ -31,7 +34,9 @@ class EventQueue {
     }
 
   private:
-    bool before(std::size_t a, std::size_t b) const { return time_[a] < time_[b] || (time_[a] == time_[b] && a < b); }
+    bool before(std::size_t a, std::size_t b) const {
+        return time_[a] < time_[b] || (time_[a] == time_[b] && a < b);
+    }
     void place(std::size_t at, std::size_t body) {
         heap_[at] = body;
         slot_[body] = at;

@@ -12,7 +12,8 @@ constexpr int64_t kMaxCells = int64_t{1} << 20;
 } // namespace
 
 std::optional<double> upward_root(double g0, double g1, double g2, double t_max) {
-    if (g0 >= 0.0 && (g1 > 0.0 || (g1 == 0.0 && g2 > 0.0))) return 0.0; // on or past the wall, leaving
+    if (g0 >= 0.0 && (g1 > 0.0 || (g1 == 0.0 && g2 > 0.0)))
+        return 0.0; // on or past the wall, leaving
     double root;
     if (g2 == 0.0) {
         if (!(g1 > 0.0)) return std::nullopt;
@@ -39,20 +40,23 @@ std::optional<Exit> first_exit(const Path &path, const Box &box, double t_max) {
         for (int direction : {1, -1}) {
             const double wall = direction > 0 ? box.hi[axis] : box.lo[axis];
             const double d = direction;
-            if (auto s = upward_root(d * (p - wall), d * v, d * 0.5 * a, t_max); s && (!best || *s < best->t))
+            if (auto s = upward_root(d * (p - wall), d * v, d * 0.5 * a, t_max);
+                s && (!best || *s < best->t))
                 best = Exit{*s, axis, direction};
         }
     }
     return best;
 }
 
-UniformGrid::UniformGrid(const Box &region, double cell) : origin_(region.lo), cell_(cell), counts_{1, 1, 1} {
+UniformGrid::UniformGrid(const Box &region, double cell)
+    : origin_(region.lo), cell_(cell), counts_{1, 1, 1} {
     const glm::dvec3 extent = region.hi - region.lo;
     const double widest = std::max({extent.x, extent.y, extent.z});
     if (!(cell_ > 0.0) || widest / cell_ > static_cast<double>(kMaxCells - 2))
         cell_ = widest / static_cast<double>(kMaxCells - 2);
     for (int axis = 0; axis < 3; ++axis)
-        counts_[static_cast<size_t>(axis)] = std::max<int64_t>(1, static_cast<int64_t>(std::ceil(extent[axis] / cell_)));
+        counts_[static_cast<size_t>(axis)] =
+            std::max<int64_t>(1, static_cast<int64_t>(std::ceil(extent[axis] / cell_)));
 }
 
 Cell UniformGrid::cell_of(const glm::dvec3 &p) const {
@@ -60,7 +64,8 @@ Cell UniformGrid::cell_of(const glm::dvec3 &p) const {
     for (int axis = 0; axis < 3; ++axis) {
         const double x = std::floor((p[axis] - origin_[axis]) / cell_);
         // Clamped just outside the grid, so far-away points do not overflow.
-        c[static_cast<size_t>(axis)] = static_cast<int64_t>(std::clamp(x, -1.0, static_cast<double>(counts_[static_cast<size_t>(axis)])));
+        c[static_cast<size_t>(axis)] = static_cast<int64_t>(
+            std::clamp(x, -1.0, static_cast<double>(counts_[static_cast<size_t>(axis)])));
     }
     return c;
 }
@@ -80,7 +85,9 @@ Box UniformGrid::bounds(const Cell &c) const {
     return b;
 }
 
-void UniformGrid::insert(uint32_t body, const Cell &c) { cells_[key(c)].push_back(body); }
+void UniformGrid::insert(uint32_t body, const Cell &c) {
+    cells_[key(c)].push_back(body);
+}
 
 void UniformGrid::remove(uint32_t body, const Cell &c) {
     const auto it = cells_.find(key(c));

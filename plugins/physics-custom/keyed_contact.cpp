@@ -24,7 +24,8 @@ double bisect(const Approach &approach, double a, double b, double tolerance) {
 
 } // namespace
 
-ApproachOutcome advance_to_contact(const Approach &approach, double t0, double t1, double tolerance) {
+ApproachOutcome advance_to_contact(const Approach &approach, double t0, double t1,
+                                   double tolerance) {
     double t = t0;
     double g = approach.gap(t);
     if (g <= 0.0 && g < -tolerance) return {ApproachOutcome::kOverlapping, t0};
@@ -58,7 +59,8 @@ ApproachOutcome advance_to_contact(const Approach &approach, double t0, double t
         if (gn <= tolerance) {
             // Closed faster than the bound said (the bound is an estimate for keyed motion): the
             // crossing is between t and next.
-            return {ApproachOutcome::kContact, gn < 0.0 ? bisect(approach, t, next, tolerance) : next};
+            return {ApproachOutcome::kContact,
+                    gn < 0.0 ? bisect(approach, t, next, tolerance) : next};
         }
         t = next;
         g = gn;

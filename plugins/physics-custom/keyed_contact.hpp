@@ -29,6 +29,7 @@ struct ApproachOutcome {
 };
 
 // The first contact in [t0, t1]: the first time the gap reaches `tolerance` while closing.
-ApproachOutcome advance_to_contact(const Approach &approach, double t0, double t1, double tolerance);
+ApproachOutcome advance_to_contact(const Approach &approach, double t0, double t1,
+                                   double tolerance);
 
 } // namespace physics_custom

@@ -83,8 +83,10 @@ TEST_CASE("a ball dropped on a floor bounces 1000 times, every apex at the drop 
     CHECK(std::abs(apex - h) / h < 1e-9);
 }
 
-TEST_CASE("Newton's cradle: after the exchanges only the last ball moves, with the striker's velocity") {
-    const Document doc = open_document(env().plugins, test::source_dir() / "assets/animations/cradle.ani").document;
+TEST_CASE(
+    "Newton's cradle: after the exchanges only the last ball moves, with the striker's velocity") {
+    const Document doc =
+        open_document(env().plugins, test::source_dir() / "assets/animations/cradle.ani").document;
     auto timeline = timeline_of(doc);
     timeline->bake(5.0);
     const Frame end = timeline->evaluate(5.0);
@@ -160,13 +162,15 @@ TEST_CASE("a small fast sphere reflects off a thin wall at any speed, never pass
     }
 }
 
-TEST_CASE("a ball in a closed box for 300000 s: each coordinate an exact triangle wave, energy kept") {
+TEST_CASE(
+    "a ball in a closed box for 300000 s: each coordinate an exact triangle wave, energy kept") {
     const double r = sphere_radius() * 0.5, half = 5.0, L = half - r;
     Document doc;
     Settings s = doc.settings();
     s.max_time_ms = 300000000;
     doc.set_settings(s);
-    doc.add_model(model("box", "cube", false, false), placed({0, 0, 0}, half)); // the inside of a cube
+    doc.add_model(model("box", "cube", false, false),
+                  placed({0, 0, 0}, half)); // the inside of a cube
     Model ball = model("ball", "sphere", true, false);
     const glm::dvec3 v0(0.13, 0.07, 0.03); // a 300000 s run of 7,666 bounces
     ball.initial_velocity = v0;
@@ -193,14 +197,16 @@ TEST_CASE("a ball in a closed box for 300000 s: each coordinate an exact triangl
     }
     // Wall hits per axis: the unfolded coordinate, from x0 + L, passes 2 L k for k = 1, 2, ...
     size_t hits = 0;
-    for (int c = 0; c < 3; ++c) hits += static_cast<size_t>(std::floor((p0[c] + L + v0[c] * 300000.0) / (2.0 * L)));
+    for (int c = 0; c < 3; ++c)
+        hits += static_cast<size_t>(std::floor((p0[c] + L + v0[c] * 300000.0) / (2.0 * L)));
     CHECK(timeline->events().size() == hits);
 }
 
 TEST_CASE("models that start overlapping are reported once and ignored until they separate") {
     std::vector<std::string> log;
-    Environment logged({test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
-                       [&](ani_log_level, const std::string &, const std::string &m) { log.push_back(m); });
+    Environment logged(
+        {test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
+        [&](ani_log_level, const std::string &, const std::string &m) { log.push_back(m); });
     const double r = sphere_radius();
     Document doc;
     Model a = model("a", "sphere", true, false), b = model("b", "sphere", true, false);
@@ -219,7 +225,8 @@ TEST_CASE("models that start overlapping are reported once and ignored until the
     timeline.bake(10.0);
 
     size_t reports = 0;
-    for (const std::string &m : log) reports += m.find("'a' and 'b' overlap at t = 0") != std::string::npos;
+    for (const std::string &m : log)
+        reports += m.find("'a' and 'b' overlap at t = 0") != std::string::npos;
     CHECK(reports == 1);
     // No event at t = 0 between them; each hits its wall at (4 - r - 0.5 r) s; then they meet
     // in the middle, centers 2 r apart, after travelling back.
@@ -233,7 +240,8 @@ TEST_CASE("models that start overlapping are reported once and ignored until the
     CHECK(((events[2].a == 0 && events[2].b == 1) || (events[2].a == 1 && events[2].b == 0)));
 }
 
-TEST_CASE("Newton's cradle with touching balls: the exchanges pass along at once, deterministically") {
+TEST_CASE(
+    "Newton's cradle with touching balls: the exchanges pass along at once, deterministically") {
     // Five balls of radius r in a row, centers exactly 2 r apart (touching), the striker at
     // 2 m/s meeting the first: the contacts are simultaneous, resolved one after the other.
     const double r = sphere_radius();
@@ -244,7 +252,9 @@ TEST_CASE("Newton's cradle with touching balls: the exchanges pass along at once
     Model striker = model("striker", "sphere", true, false);
     striker.initial_velocity = {2, 0, 0};
     doc.add_model(striker, placed({-3.0, 0, 0}));
-    for (int k = 0; k < 4; ++k) doc.add_model(model("ball" + std::to_string(k), "sphere", true, false), placed({2.0 * r * k, 0, 0}));
+    for (int k = 0; k < 4; ++k)
+        doc.add_model(model("ball" + std::to_string(k), "sphere", true, false),
+                      placed({2.0 * r * k, 0, 0}));
     auto one = timeline_of(doc), two = timeline_of(doc);
     one->bake(4.0);
     two->bake(4.0);
@@ -254,7 +264,8 @@ TEST_CASE("Newton's cradle with touching balls: the exchanges pass along at once
     for (const auto &e : events) CHECK(e.t == Approx(meet).epsilon(1e-12));
     const Frame end = one->evaluate(4.0);
     double energy = 0.0;
-    for (size_t m = 0; m < 5; ++m) energy += 0.5 * glm::dot(end.models[m].velocity, end.models[m].velocity);
+    for (size_t m = 0; m < 5; ++m)
+        energy += 0.5 * glm::dot(end.models[m].velocity, end.models[m].velocity);
     CHECK(energy == Approx(0.5 * 4.0).epsilon(1e-12)); // no energy gained or lost
     CHECK(end.models[4].velocity.x == Approx(2.0).epsilon(1e-12));
     for (size_t m = 0; m < 4; ++m) CHECK(glm::length(end.models[m].velocity) < 1e-12);
@@ -267,7 +278,8 @@ TEST_CASE("Newton's cradle with touching balls: the exchanges pass along at once
     }
 }
 
-TEST_CASE("a ball flying into the inside corner of a box meets both walls at once and comes straight back") {
+TEST_CASE("a ball flying into the inside corner of a box meets both walls at once and comes "
+          "straight back") {
     const double r = sphere_radius() * 0.5, half = 3.0;
     Document doc;
     Settings s = doc.settings();
@@ -288,4 +300,39 @@ TEST_CASE("a ball flying into the inside corner of a box meets both walls at onc
     CHECK(back.velocity.x == Approx(-1.0).epsilon(1e-12));
     CHECK(back.velocity.y == Approx(-1.0).epsilon(1e-12));
     CHECK(back.center.x == Approx(corner - 1.0).epsilon(1e-12));
+}
+
+TEST_CASE("two spheres of unequal mass meeting obliquely and slowly under gravity exchange along "
+          "the normal only") {
+    // Both fall under gravity, so their relative motion is a straight line: they meet when
+    // |d + e t| = ra + rb. Approach speed 0.1 m/s, below Bullet's restitution threshold.
+    const double ra = sphere_radius() * 0.5, rb = sphere_radius() * 0.8, ma = 1.0, mb = 3.5;
+    const glm::dvec3 pa(-2.0, 5.0, 0.2), pb(0.0, 5.3, 0.0), va(0.1, 0.0, 0.0), vb(0.0, 0.0, 0.0);
+    Document doc;
+    Model a = model("a", "sphere", true, true), b = model("b", "sphere", true, true);
+    a.mass = ma;
+    b.mass = mb;
+    a.initial_velocity = va;
+    b.initial_velocity = vb;
+    doc.add_model(a, placed(pa, 0.5));
+    doc.add_model(b, placed(pb, 0.8));
+    auto timeline = timeline_of(doc);
+    timeline->bake(9.0);
+    REQUIRE(timeline->events().size() == 1);
+    const glm::dvec3 d = pa - pb, e = va - vb;
+    const double R = ra + rb, qa = glm::dot(e, e), qb = glm::dot(d, e), qc = glm::dot(d, d) - R * R;
+    const double t = (-qb - std::sqrt(qb * qb - qa * qc)) / qa;
+    CHECK(timeline->events()[0].t == Approx(t).epsilon(1e-12));
+    const glm::dvec3 n = (d + e * t) / R; // from b towards a
+    const glm::dvec3 ga(0.0, -9.81 * t, 0.0);
+    const glm::dvec3 ua = va + ga, ub = vb + ga; // velocities at the contact
+    const double una = glm::dot(ua, n), unb = glm::dot(ub, n);
+    const double una2 = ((ma - mb) * una + 2.0 * mb * unb) / (ma + mb);
+    const double unb2 = ((mb - ma) * unb + 2.0 * ma * una) / (ma + mb);
+    const glm::dvec3 expect_a = ua + (una2 - una) * n, expect_b = ub + (unb2 - unb) * n;
+    const Frame f = timeline->evaluate(t + 0.5);
+    const glm::dvec3 later(0.0, -9.81 * 0.5, 0.0);
+    CHECK(glm::length(f.models[0].velocity - (expect_a + later)) < 1e-12);
+    CHECK(glm::length(f.models[1].velocity - (expect_b + later)) < 1e-12);
+    CHECK(timeline->events()[0].speed == Approx(unb - una).epsilon(1e-10)); // closing along n
 }

@@ -37,7 +37,8 @@ struct Gas {
 // n balls of scale `scale` on a jittered cubic lattice of spacing `spacing` around the origin,
 // with random velocities (up to `speed` per axis) and masses in [0.5, 2]; optionally inside a
 // closed box of half-width `box`.
-Gas make_gas(int n, double scale, double spacing, double speed, double box, int broad_phase, uint64_t seed) {
+Gas make_gas(int n, double scale, double spacing, double speed, double box, int broad_phase,
+             uint64_t seed) {
     Gas gas;
     Settings s = gas.doc.settings();
     s.gravity = 0.0;
@@ -53,7 +54,8 @@ Gas make_gas(int n, double scale, double spacing, double speed, double box, int 
         gas.first_ball = 1;
     }
     std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> jitter(-0.1, 0.1), velocity(-speed, speed), mass(0.5, 2.0);
+    std::uniform_real_distribution<double> jitter(-0.1, 0.1), velocity(-speed, speed),
+        mass(0.5, 2.0);
     const int side = static_cast<int>(std::ceil(std::cbrt(static_cast<double>(n))));
     const double r = unit_radius() * scale;
     for (int k = 0; k < n; ++k) {
@@ -89,7 +91,7 @@ std::unique_ptr<Timeline> baked(const Gas &gas, double until) {
 struct Totals {
     double energy = 0.0, scale = 0.0; // kinetic energy; sum of m |v| for momentum's scale
     glm::dvec3 momentum{0.0};
-    double overlap = -1e300;          // the largest overlap of two balls, relative to a radius
+    double overlap = -1e300; // the largest overlap of two balls, relative to a radius
 };
 
 Totals totals(const Gas &gas, const Timeline &timeline, double t) {
@@ -106,7 +108,8 @@ Totals totals(const Gas &gas, const Timeline &timeline, double t) {
         for (size_t b = a + 1; b < n; ++b) {
             const double d = glm::length(f.models[a + static_cast<size_t>(gas.first_ball)].center -
                                          f.models[b + static_cast<size_t>(gas.first_ball)].center);
-            out.overlap = std::max(out.overlap, (gas.radius[a] + gas.radius[b] - d) / gas.radius[a]);
+            out.overlap =
+                std::max(out.overlap, (gas.radius[a] + gas.radius[b] - d) / gas.radius[a]);
         }
     return out;
 }
@@ -152,7 +155,8 @@ TEST_CASE("a gas of 1000 spheres in a closed box keeps its energy and stays insi
         double outside = -1.0;
         for (size_t k = 0; k < gas.radius.size(); ++k)
             for (int c = 0; c < 3; ++c)
-                outside = std::max(outside, std::abs(f.models[k + 1].center[c]) - (half - gas.radius[k]));
+                outside =
+                    std::max(outside, std::abs(f.models[k + 1].center[c]) - (half - gas.radius[k]));
         CHECK(outside < 1e-9);
     }
 }

@@ -15,9 +15,9 @@
 #include <cmath>
 
 using namespace animator;
+using physics_custom::advance_to_contact;
 using physics_custom::Approach;
 using physics_custom::ApproachOutcome;
-using physics_custom::advance_to_contact;
 
 namespace {
 
@@ -51,7 +51,8 @@ Model model(const std::string &name, const std::string &mesh, bool dynamics, boo
     return m;
 }
 
-ModelState placed(glm::dvec3 center, glm::dvec3 scale = glm::dvec3(1.0), glm::dvec3 angles = glm::dvec3(0.0)) {
+ModelState placed(glm::dvec3 center, glm::dvec3 scale = glm::dvec3(1.0),
+                  glm::dvec3 angles = glm::dvec3(0.0)) {
     ModelState s;
     s.center = center;
     s.scale = scale;
@@ -104,7 +105,8 @@ TEST_CASE("conservative advancement finds the first contact of a closing gap") {
     }
 }
 
-TEST_CASE("conservative advancement: a turning bar reaches a point at the angle the geometry says") {
+TEST_CASE(
+    "conservative advancement: a turning bar reaches a point at the angle the geometry says") {
     // A bar through the origin turning at w rad/s; a ball of radius r at distance d and polar
     // angle a0: the gap is d sin(a0 - w t) - r while the bar has not passed it.
     const double w = 2.0, d = 1.5, a0 = 1.0, r = 0.2, half_length = 2.0;
@@ -116,7 +118,8 @@ TEST_CASE("conservative advancement: a turning bar reaches a point at the angle 
     CHECK(out.t == Approx((a0 - std::asin(r / d)) / w).epsilon(1e-12));
 }
 
-TEST_CASE("conservative advancement: touching and moving apart is no contact, overlapping is said") {
+TEST_CASE(
+    "conservative advancement: touching and moving apart is no contact, overlapping is said") {
     Approach leaving;
     leaving.gap = [](double t) { return 3.0 * t; };
     leaving.closing_speed = [](double, double) { return 3.0; };
@@ -127,7 +130,8 @@ TEST_CASE("conservative advancement: touching and moving apart is no contact, ov
     CHECK(advance_to_contact(inside, 0.0, 5.0, 1e-13).kind == ApproachOutcome::kOverlapping);
 }
 
-TEST_CASE("a ball reflects off a keyed paddle with the relative velocity, and the paddle rests until its next key") {
+TEST_CASE("a ball reflects off a keyed paddle with the relative velocity, and the paddle rests "
+          "until its next key") {
     // The paddle: a cube 0.2 wide (scale 0.1), keyed from x = -3 to x = 1 over 2 s (2 m/s,
     // linear: Dynamics off), then to x = 3 at 4 s. The ball, at rest at x = 0.
     const double r = unit_radius() * 0.5, u = 2.0;
@@ -163,7 +167,8 @@ TEST_CASE("a ball reflects off a keyed paddle with the relative velocity, and th
     CHECK(resumed->motion == ANI_MOTION_KEYED);
     CHECK(resumed->t0 == 2.0);
     CHECK(timeline->evaluate(3.0).models[0].center.x == Approx(2.0).epsilon(1e-12));
-    CHECK(timeline->evaluate(5.0).models[0].center.x == Approx(3.0).epsilon(1e-12)); // held after its last key
+    CHECK(timeline->evaluate(5.0).models[0].center.x ==
+          Approx(3.0).epsilon(1e-12)); // held after its last key
 }
 
 TEST_CASE("a turning bar strikes a ball with the velocity of the point that touches it") {
@@ -177,7 +182,8 @@ TEST_CASE("a turning bar strikes a ball with the velocity of the point that touc
     s.gravity = 0.0;
     doc.set_settings(s);
     doc.add_model(model("bar", "cube", false, false), placed({0, 0, 0}, {2, 0.1, 1}));
-    doc.add_model(model("ball", "sphere", true, false), placed({d * std::cos(a0), d * std::sin(a0), 0}, glm::dvec3(0.2)));
+    doc.add_model(model("ball", "sphere", true, false),
+                  placed({d * std::cos(a0), d * std::sin(a0), 0}, glm::dvec3(0.2)));
     key(doc, 1000, 0, placed({0, 0, 0}, {2, 0.1, 1}, {0, 0, 90}));
     auto timeline = timeline_of(doc);
     timeline->bake(2.0);
@@ -191,7 +197,8 @@ TEST_CASE("a turning bar strikes a ball with the velocity of the point that touc
     CHECK(glm::length(v - 2.0 * w * lever * n) < 1e-6 * w * lever);
 }
 
-TEST_CASE("a keyed ball released at a floor bounces, flies to its next key, and its keys take it back there") {
+TEST_CASE("a keyed ball released at a floor bounces, flies to its next key, and its keys take it "
+          "back there") {
     // Dynamics on: kinematic keys from y = 5 at 0 s (initial velocity -2 m/s) to y = 0.25 at
     // 3 s, so y(t) = 5 - 2 t + a t^2 / 2 with a = 5/18; then y = 4 at 4 s. Gravity off. The
     // floor at y = 0 is met when y(t) = r, before 3 s.
@@ -245,11 +252,13 @@ TEST_CASE("a bake resumed after a release continues exactly as one bake") {
             CAPTURE(t, m);
             CHECK(glm::length(whole->evaluate(t).models[static_cast<size_t>(m)].center -
                               parts->evaluate(t).models[static_cast<size_t>(m)].center) < 1e-12);
-            CHECK(whole->evaluate(t).motion[static_cast<size_t>(m)] == parts->evaluate(t).motion[static_cast<size_t>(m)]);
+            CHECK(whole->evaluate(t).motion[static_cast<size_t>(m)] ==
+                  parts->evaluate(t).motion[static_cast<size_t>(m)]);
         }
 }
 
-TEST_CASE("a ball placed on a floor under gravity rests there, and one struck by a keyed paddle slides on it") {
+TEST_CASE("a ball placed on a floor under gravity rests there, and one struck by a keyed paddle "
+          "slides on it") {
     // Meshes are single precision, so a ball of scale 0.5 placed at y = 0.5 is in the floor by
     // ~2e-8: touching, not overlapping. Resting on the floor holds it up.
     const double r = unit_radius() * 0.5, u = 1.5;
@@ -280,7 +289,8 @@ TEST_CASE("a ball placed on a floor under gravity rests there, and one struck by
     }
 }
 
-TEST_CASE("a sphere sliding across a finely tessellated floor never bumps on its inner edges, and leaves it at its rim") {
+TEST_CASE("a sphere sliding across a finely tessellated floor never bumps on its inner edges, and "
+          "leaves it at its rim") {
     // physics.md scene 6: floor_fine (8192 triangles) scaled 10 spans x in [-10, 10]. The ball
     // slides at 1 m/s along x under gravity; its point of contact passes the rim at x = 10.
     Document doc;
