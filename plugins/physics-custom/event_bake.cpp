@@ -1378,6 +1378,10 @@ class EventBake {
     }
 
     void report(const ani_collision_event &e) {
+        auto finite = [](const ani_vec3 &v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+        if (!finite(e.normal) || !finite(e.point) || !std::isfinite(e.speed) || !std::isfinite(e.t))
+            throw ani::Failure(ANI_ERR_FAILED, std::string("the contact of models '") + name_of(scene_.models[e.a]) +
+                                                   "' and '" + name_of(scene_.models[e.b]) + "' is not finite");
         ++count_.collisions;
         if (sink_.event) sink_.event(sink_.context, &e);
     }
