@@ -99,6 +99,8 @@ struct Obstacle {
     std::vector<glm::dvec3> normals;        // 1 per triangle, unit (0 for a triangle without area)
     std::vector<double> offsets;            // 1 per triangle: its plane is normal . x = offset
     std::shared_ptr<const MeshShape> shape; // in world space, for the mesh-mesh tests
+    // A closed mesh turned inside out: a room, for the models inside it (built when needed).
+    mutable std::shared_ptr<const MeshShape> room;
     glm::dvec3 center{0.0};
     double radius = 0.0;
 };
@@ -987,11 +989,40 @@ class EventBake {
         const Path path = from_now(b, now), fixed{};
         for (size_t o = 0; o < obstacles_.size(); ++o) {
             if (b.ignored_obstacles > 0 && is_ignored(i, -1 - static_cast<int>(o))) continue;
-            if (auto c = mesh_pair(*b.shape, path, *obstacles_[o].shape, fixed, limit)) {
+            if (auto c = mesh_pair(*b.shape, path, shape_facing(obstacles_[o], path.p), fixed, limit)) {
                 next = predicted(now + c->t, EventKind::kObstacle, static_cast<int>(o), 0, *c);
                 limit = c->t;
             }
         }
+    }
+
+    // A closed static mesh is solid from outside; for a model inside it (a box in a cube used
+    // as a room) it is a room, its faces met from within.
+    const MeshShape &shape_facing(const Obstacle &o, const glm::dvec3 &p) const {
+        if (!o.shape->closed || !inside(o, p)) return *o.shape;
+        if (!o.room) {
+            std::vector<std::array<uint32_t, 3>> reversed = o.shape->triangles;
+            for (auto &t : reversed) std::swap(t[1], t[2]);
+            o.room = std::make_shared<const MeshShape>(MeshShape::build(o.shape->vertices, std::move(reversed)));
+        }
+        return *o.room;
+    }
+
+    // Whether p is inside a closed obstacle: a ray from it crosses its surface an odd number of
+    // times (in a direction that no axis-aligned edge or face of a generated mesh lies along).
+    static bool inside(const Obstacle &o, const glm::dvec3 &p) {
+        const Box box = o.shape->bounds();
+        if (p.x < box.lo.x || p.y < box.lo.y || p.z < box.lo.z || p.x > box.hi.x || p.y > box.hi.y || p.z > box.hi.z)
+            return false;
+        const glm::dvec3 ray = glm::normalize(glm::dvec3(1.0, 0.0137, 0.0291)) * (2.0 * glm::length(box.hi - box.lo) + 1.0);
+        int crossings = 0;
+        for (size_t k = 0; k + 2 < o.corners.size(); k += 3) {
+            // Both faces of the triangle: the seed's test is one-sided.
+            if (ray_triangle(p, ray, o.corners[k], o.corners[k + 1], o.corners[k + 2]) ||
+                ray_triangle(p, ray, o.corners[k], o.corners[k + 2], o.corners[k + 1]))
+                ++crossings;
+        }
+        return crossings % 2 == 1;
     }
 
     // ---- resting and sliding on static models ---------------------------------------------

@@ -150,3 +150,35 @@ TEST_CASE("two cubes of equal mass meeting face to face swap their velocities") 
     CHECK(f.models[0].velocity.x == Approx(-0.5).epsilon(1e-12));
     CHECK(f.models[1].velocity.x == Approx(1.5).epsilon(1e-12));
 }
+
+TEST_CASE("a cube inside a closed cube used as a room bounces off its walls from within") {
+    // The room: the cube mesh scaled 3 (walls at +-3). The box inside: half-side 0.25, so its
+    // center moves on [-2.75, 2.75] along each axis: a triangle wave, as for a ball.
+    const double half = 0.25, L = 3.0 - half;
+    Document doc;
+    Settings s = doc.settings();
+    s.gravity = 0.0;
+    doc.set_settings(s);
+    doc.add_model(model("room", "cube", false, false), placed({0, 0, 0}, glm::dvec3(3.0)));
+    Model box = model("box", "cube", true, false);
+    const glm::dvec3 v0(1.0, 0.37, -0.21), p0(0.5, -1.0, 0.25);
+    box.initial_velocity = v0;
+    doc.add_model(box, placed(p0, glm::dvec3(half)));
+    auto timeline = timeline_of(doc);
+    timeline->bake(60.0);
+    auto wave = [&](double x0, double v, double t) {
+        const double period = 4.0 * L;
+        double u = std::fmod(x0 + L + v * t, period);
+        if (u < 0.0) u += period;
+        return -L + (u <= 2.0 * L ? u : period - u);
+    };
+    for (double t : {3.3, 17.0, 42.5, 60.0}) {
+        CAPTURE(t);
+        const ModelPose p = timeline->evaluate(t).models[1];
+        for (int c = 0; c < 3; ++c) CHECK(p.center[c] == Approx(wave(p0[c], v0[c], t)).margin(1e-9));
+        CHECK(glm::length(p.velocity) == Approx(glm::length(v0)).epsilon(1e-14));
+    }
+    size_t hits = 0;
+    for (int c = 0; c < 3; ++c) hits += static_cast<size_t>(std::floor((std::abs(v0[c]) * 60.0 + (v0[c] > 0 ? p0[c] + L : L - p0[c])) / (2.0 * L)));
+    CHECK(timeline->events().size() == hits);
+}
