@@ -185,3 +185,23 @@ TEST_CASE("the grid broad phase finds the same collisions as testing all pairs")
     CHECK(gb.count("cell crossings") == 1);
     CHECK(gb.at("cell crossings") == 0);
 }
+
+TEST_CASE("10000 spheres: the broad phase tests a few neighbours per prediction, not every pair") {
+    // 10000 balls in a box: testing every pair would be 50 million tests per event.
+    const Gas gas = make_gas(10000, 0.1, 0.3, 1.0, 4.0, 0, 17);
+    auto timeline = baked(gas, 0.5);
+    const auto &counts = timeline->stats().backend_counts;
+    const double predictions = counts.at("predictions"), done = counts.at("pair tests done");
+    INFO(timeline->events().size() << " collisions, " << predictions << " predictions, " << done << " pair tests");
+    CHECK(timeline->events().size() > 2000);
+    CHECK(done < 40.0 * predictions);
+    CHECK(counts.at("pair tests skipped") > 1000.0 * done);
+    // Energy kept through all of it.
+    double e0 = 0.0, e1 = 0.0;
+    const Frame a = timeline->evaluate(0.0), b = timeline->evaluate(0.5);
+    for (size_t k = 0; k < gas.mass.size(); ++k) {
+        e0 += 0.5 * gas.mass[k] * glm::dot(a.models[k + 1].velocity, a.models[k + 1].velocity);
+        e1 += 0.5 * gas.mass[k] * glm::dot(b.models[k + 1].velocity, b.models[k + 1].velocity);
+    }
+    CHECK(std::abs(e1 - e0) / e0 < 1e-12);
+}
