@@ -52,6 +52,7 @@ struct Body {
     bool sphere = false; // the seed's sphere special case; otherwise the model's triangles
     double radius = 0.0; // for a sphere: its radius when free
     double reach = 0.0;  // the farthest a vertex is from the model's origin, in model space
+    std::vector<std::array<uint32_t, 2>> edges; // not a sphere: its mesh's edges, each once
     bool dynamics = false;
     Mode mode = Mode::kFree;
     bool active = false;      // free and colliding, or keyed and colliding
@@ -237,12 +238,18 @@ class EventBake {
             const ani_model_desc &d = *m.desc;
             const bool movable = d.dynamics || d.gravity;
             const bool solid = m.mesh && m.mesh->triangle_count > 0 && m.group == i;
-            const bool keyed_here = !free_now && span.end > t_begin_;
+            // Keys that all hold it in the same place (a floor keyed along with the rest of a
+            // keyframe) do not make it a moving wall.
+            const bool held_still =
+                !free_now && !released && solid && !movable && keys_hold_still(i, span.end);
+            const bool keyed_here = !free_now && span.end > t_begin_ && !held_still;
 
             // A static model (it never moves again) is an obstacle made of its triangles.
-            if (!movable && free_now && solid) {
+            if (!movable && (free_now || held_still) && solid) {
                 add_obstacle(i, t_begin_);
-                emit_free(i, start_of(i, t_begin_), t_begin_);
+                if (held_still) emit_keyed(i, t_begin_, keyed_until);
+                emit_free(i, start_of(i, held_still ? keyed_until : t_begin_),
+                          held_still ? keyed_until : t_begin_);
                 continue;
             }
             const std::optional<double> radius =
@@ -253,6 +260,7 @@ class EventBake {
                 b.sphere = radius.has_value();
                 b.radius = radius.value_or(0.0);
                 b.reach = mesh_reach(*m.mesh);
+                if (!b.sphere) b.edges = edges_of(*m.mesh);
                 b.dynamics = d.dynamics != 0;
                 b.keys_end = free_now ? t_begin_ : span.end;
                 bodies_.push_back(b);
@@ -270,11 +278,7 @@ class EventBake {
                 }
                 body.path.p = body.keyed() ? vec(keyed_state(scene_, i, t_begin_, nullptr).center)
                                            : body.path.p;
-                if (!body.sphere && keyed_here && movable)
-                    log_once("model '" + std::string(name_of(m)) +
-                             "' is not a sphere: while its keys move it, physics.custom computes "
-                             "its contacts with "
-                             "spheres only, and it moves through other models until its last key");
+
                 continue;
             }
             if (keyed_until > t_begin_) emit_keyed(i, t_begin_, keyed_until);
@@ -282,6 +286,34 @@ class EventBake {
             emit_free(i, start_of(i, free_now ? t_begin_ : keyed_until),
                       free_now ? t_begin_ : keyed_until);
         }
+    }
+
+    // Whether a model's keys from t_begin to its last key all place it the same way and leave it
+    // still (checked at each key and half-way between keys).
+    bool keys_hold_still(uint32_t i, double last) const {
+        const ani_physics_model &m = scene_.models[i];
+        if (!(m.struct_size >= offsetof(ani_physics_model, key_count) + sizeof(m.key_count) &&
+              m.key_times))
+            return false;
+        std::vector<double> times = {t_begin_};
+        for (uint32_t k = 0; k < m.key_count; ++k)
+            if (m.key_times[k] > t_begin_ && m.key_times[k] <= last) {
+                times.push_back(0.5 * (times.back() + m.key_times[k]));
+                times.push_back(m.key_times[k]);
+            }
+        glm::dvec3 v0;
+        const ani_model_state first = keyed_state(scene_, i, t_begin_, &v0);
+        auto same = [](const ani_vec3 &a, const ani_vec3 &b) {
+            return a.x == b.x && a.y == b.y && a.z == b.z;
+        };
+        for (double t : times) {
+            glm::dvec3 v;
+            const ani_model_state s = keyed_state(scene_, i, t, &v);
+            if (v != glm::dvec3(0.0) || !same(s.center, first.center) ||
+                !same(s.angles, first.angles) || !same(s.scale, first.scale))
+                return false;
+        }
+        return true;
     }
 
     // The state a model is in at t: the host's cache where a resumed bake starts, otherwise its
@@ -554,6 +586,136 @@ class EventBake {
         return {p[0], p[1], p[2]};
     }
 
+    static std::vector<std::array<uint32_t, 2>> edges_of(const ani_mesh_view &mesh) {
+        std::vector<std::array<uint32_t, 2>> edges;
+        for (uint32_t k = 0; k < mesh.triangle_count; ++k)
+            for (uint32_t e = 0; e < 3; ++e) {
+                uint32_t a = mesh.triangles[3 * static_cast<size_t>(k) + e];
+                uint32_t b = mesh.triangles[3 * static_cast<size_t>(k) + (e + 1) % 3];
+                if (b < a) std::swap(a, b);
+                edges.push_back({a, b});
+            }
+        std::sort(edges.begin(), edges.end());
+        edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+        return edges;
+    }
+
+    // A triangle mesh placed in the world, for distances between meshes.
+    struct Placed {
+        glm::dvec3 center;
+        std::vector<glm::dvec3> vertices;
+        const uint32_t *triangles;
+        size_t triangle_count;
+        const std::array<uint32_t, 2> *edges;
+        size_t edge_count;
+    };
+
+    Placed placed(const Body &b, const Pose &p) const {
+        const ani_mesh_view &mesh = mesh_of(b);
+        Placed out{p.center,      {}, mesh.triangles, mesh.triangle_count, b.edges.data(),
+                   b.edges.size()};
+        out.vertices.reserve(mesh.vertex_count);
+        for (uint32_t k = 0; k < mesh.vertex_count; ++k)
+            out.vertices.push_back(p.center + p.linear * vertex(mesh, k));
+        return out;
+    }
+
+    static Placed placed(const Obstacle &o) {
+        return {o.center,
+                o.shape->vertices,
+                o.shape->triangles.empty() ? nullptr : &o.shape->triangles[0][0],
+                o.shape->triangles.size(),
+                o.shape->edges.data(),
+                o.shape->edges.size()};
+    }
+
+    // The closest points of segments p1q1 and p2q2 (Ericson, Real-Time Collision Detection 5.1.9).
+    static void closest_on_segments(const glm::dvec3 &p1, const glm::dvec3 &q1,
+                                    const glm::dvec3 &p2, const glm::dvec3 &q2, glm::dvec3 &c1,
+                                    glm::dvec3 &c2) {
+        const glm::dvec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+        const double a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
+        double s = 0.0, t = 0.0;
+        if (a <= 0.0 && e > 0.0) {
+            t = std::clamp(f / e, 0.0, 1.0);
+        } else if (a > 0.0) {
+            const double c = glm::dot(d1, r);
+            if (e <= 0.0) {
+                s = std::clamp(-c / a, 0.0, 1.0);
+            } else {
+                const double b = glm::dot(d1, d2), denom = a * e - b * b;
+                s = denom > 0.0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+                t = (b * s + f) / e;
+                if (t < 0.0) {
+                    t = 0.0;
+                    s = std::clamp(-c / a, 0.0, 1.0);
+                } else if (t > 1.0) {
+                    t = 1.0;
+                    s = std::clamp((b - c) / a, 0.0, 1.0);
+                }
+            }
+        }
+        c1 = p1 + d1 * s;
+        c2 = p2 + d2 * t;
+    }
+
+    // The distance between two meshes' surfaces, the nearest points, and the normal there from
+    // b towards a: every vertex of each against every triangle of the other, every edge against
+    // every edge. At a touch the nearest points coincide, so the normal comes from the features:
+    // the face's normal for a vertex nearest to a face, the edges' cross product for two edges.
+    static double mesh_distance(const Placed &a, const Placed &b, glm::dvec3 &on_a,
+                                glm::dvec3 &on_b, glm::dvec3 &normal) {
+        double best = kNever;
+        glm::dvec3 feature_normal(0.0); // unoriented
+        auto offer = [&](const glm::dvec3 &x, const glm::dvec3 &y, const glm::dvec3 &n) {
+            const double d = glm::length(x - y);
+            if (d < best) {
+                best = d;
+                on_a = x;
+                on_b = y;
+                feature_normal = n;
+            }
+        };
+        for (int side = 0; side < 2; ++side) {
+            const Placed &p = side == 0 ? a : b, &q = side == 0 ? b : a;
+            for (const glm::dvec3 &v : p.vertices)
+                for (size_t k = 0; k < q.triangle_count; ++k) {
+                    const uint32_t *t = q.triangles + 3 * k;
+                    const glm::dvec3 &q0 = q.vertices[t[0]], &q1 = q.vertices[t[1]],
+                                     &q2 = q.vertices[t[2]];
+                    const glm::dvec3 c = closest_point_on_triangle(v, q0, q1, q2);
+                    const glm::dvec3 face = glm::cross(q1 - q0, q2 - q0);
+                    if (side == 0)
+                        offer(v, c, face);
+                    else
+                        offer(c, v, face);
+                }
+        }
+        for (size_t i = 0; i < a.edge_count; ++i)
+            for (size_t j = 0; j < b.edge_count; ++j) {
+                glm::dvec3 x, y;
+                const glm::dvec3 &a0 = a.vertices[a.edges[i][0]], &a1 = a.vertices[a.edges[i][1]];
+                const glm::dvec3 &b0 = b.vertices[b.edges[j][0]], &b1 = b.vertices[b.edges[j][1]];
+                closest_on_segments(a0, a1, b0, b1, x, y);
+                offer(x, y, glm::cross(a1 - a0, b1 - b0));
+            }
+        // Oriented from b towards a: by the nearest points where they are clearly apart,
+        // otherwise by the centers.
+        const glm::dvec3 apart = on_a - on_b, centers = a.center - b.center;
+        const double size = glm::length(centers) + 1.0;
+        glm::dvec3 n =
+            glm::length(feature_normal) > 0.0 ? glm::normalize(feature_normal) : glm::dvec3(0.0);
+        if (glm::length(apart) > 1e-6 * size &&
+            (n == glm::dvec3(0.0) || std::abs(glm::dot(glm::normalize(apart), n)) < 0.5))
+            n = glm::normalize(apart); // nearest at a rim: the direction between the points
+        if (n == glm::dvec3(0.0))
+            n = glm::length(centers) > 0.0 ? glm::normalize(centers) : glm::dvec3(0, 1, 0);
+        const double side =
+            glm::length(apart) > 1e-9 * size ? glm::dot(n, apart) : glm::dot(n, centers);
+        normal = side < 0.0 ? -n : n;
+        return best;
+    }
+
     // The farthest a vertex of the mesh is from the model's origin, in model space.
     static double mesh_reach(const ani_mesh_view &mesh) {
         double r = 0.0;
@@ -628,7 +790,7 @@ class EventBake {
     // ---- overlaps at the start -------------------------------------------------------------
 
     double gap_between(const Body &a, const Body &b, double t, Contact *contact = nullptr) const {
-        // At least one of them is a sphere (mesh against mesh is not computed).
+        if (!a.sphere && !b.sphere) return mesh_gap(a, b, t, contact);
         const Body &s = a.sphere ? a : b, &o = a.sphere ? b : a;
         const Pose ps = pose(s, t), po = pose(o, t);
         glm::dvec3 nearest;
@@ -659,9 +821,37 @@ class EventBake {
         return gap;
     }
 
+    // Two models that are not spheres: the distance between their surfaces.
+    double mesh_gap(const Body &a, const Body &b, double t, Contact *contact) const {
+        const Pose pa = pose(a, t), pb = pose(b, t);
+        const double ra = a.reach * frobenius(pa.linear), rb = b.reach * frobenius(pb.linear);
+        const double far = glm::length(pa.center - pb.center) - ra - rb;
+        if (far > 0.25 * (ra + rb) && !contact) return far;
+        glm::dvec3 on_a, on_b, n;
+        const double gap = mesh_distance(placed(a, pa), placed(b, pb), on_a, on_b, n);
+        if (contact) fill_contact(on_a, on_b, n, t, contact);
+        return gap;
+    }
+
+    static void fill_contact(const glm::dvec3 &on_a, const glm::dvec3 &on_b, const glm::dvec3 &n,
+                             double t, Contact *contact) {
+        contact->normal = n;
+        contact->point = 0.5 * (on_a + on_b);
+        contact->t = t;
+    }
+
     double gap_to_obstacle(const Body &b, const Obstacle &o, double t,
                            Contact *contact = nullptr) const {
         const Pose p = pose(b, t);
+        if (!b.sphere) {
+            const double reach = b.reach * frobenius(p.linear);
+            const double far = glm::length(p.center - o.center) - reach - o.radius;
+            if (far > 0.25 * (reach + o.radius) && !contact) return far;
+            glm::dvec3 on_a, on_b, n;
+            const double gap = mesh_distance(placed(b, p), placed(o), on_a, on_b, n);
+            if (contact) fill_contact(on_a, on_b, n, t, contact);
+            return gap;
+        }
         const glm::dvec3 c = p.center;
         const double r = radius_at(b, p);
         const double far = glm::length(c - o.center) - r - o.radius;
@@ -828,7 +1018,7 @@ class EventBake {
         std::size_t tested = 0;
         for_candidates(i, [&](int j) {
             const Body &o = bodies_[static_cast<size_t>(j)];
-            if (!o.active || (!b.sphere && !o.sphere && !(b.shape && o.shape))) return;
+            if (!o.active) return;
             if (!is_ignored(i, j)) {
                 ++tested;
                 std::optional<Contact> c;
@@ -851,10 +1041,10 @@ class EventBake {
         count_.done += tested;
         count_.skipped += (bodies_.size() - 1) - tested;
         if (b.support >= 0) predict_leave(i, now, limit, next);
-        if (b.sphere)
-            predict_obstacles(i, now, limit, next);
-        else if (b.shape)
-            predict_mesh_obstacles(i, now, limit, next);
+        if (b.shape)
+            predict_mesh_obstacles(i, now, limit, next); // exact: it translates
+        else
+            predict_obstacles(i, now, limit, next); // spheres exact; keyed models by advancement
         if (b.ignored_obstacles > 0) recheck_obstacles(i, now, next);
         set_prediction(i, next);
     }
@@ -989,7 +1179,8 @@ class EventBake {
         const Path path = from_now(b, now), fixed{};
         for (size_t o = 0; o < obstacles_.size(); ++o) {
             if (b.ignored_obstacles > 0 && is_ignored(i, -1 - static_cast<int>(o))) continue;
-            if (auto c = mesh_pair(*b.shape, path, shape_facing(obstacles_[o], path.p), fixed, limit)) {
+            if (auto c =
+                    mesh_pair(*b.shape, path, shape_facing(obstacles_[o], path.p), fixed, limit)) {
                 next = predicted(now + c->t, EventKind::kObstacle, static_cast<int>(o), 0, *c);
                 limit = c->t;
             }
@@ -1003,7 +1194,8 @@ class EventBake {
         if (!o.room) {
             std::vector<std::array<uint32_t, 3>> reversed = o.shape->triangles;
             for (auto &t : reversed) std::swap(t[1], t[2]);
-            o.room = std::make_shared<const MeshShape>(MeshShape::build(o.shape->vertices, std::move(reversed)));
+            o.room = std::make_shared<const MeshShape>(
+                MeshShape::build(o.shape->vertices, std::move(reversed)));
         }
         return *o.room;
     }
@@ -1012,9 +1204,11 @@ class EventBake {
     // times (in a direction that no axis-aligned edge or face of a generated mesh lies along).
     static bool inside(const Obstacle &o, const glm::dvec3 &p) {
         const Box box = o.shape->bounds();
-        if (p.x < box.lo.x || p.y < box.lo.y || p.z < box.lo.z || p.x > box.hi.x || p.y > box.hi.y || p.z > box.hi.z)
+        if (p.x < box.lo.x || p.y < box.lo.y || p.z < box.lo.z || p.x > box.hi.x ||
+            p.y > box.hi.y || p.z > box.hi.z)
             return false;
-        const glm::dvec3 ray = glm::normalize(glm::dvec3(1.0, 0.0137, 0.0291)) * (2.0 * glm::length(box.hi - box.lo) + 1.0);
+        const glm::dvec3 ray = glm::normalize(glm::dvec3(1.0, 0.0137, 0.0291)) *
+                               (2.0 * glm::length(box.hi - box.lo) + 1.0);
         int crossings = 0;
         for (size_t k = 0; k + 2 < o.corners.size(); k += 3) {
             // Both faces of the triangle: the seed's test is one-sided.
@@ -1409,10 +1603,13 @@ class EventBake {
     }
 
     void report(const ani_collision_event &e) {
-        auto finite = [](const ani_vec3 &v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+        auto finite = [](const ani_vec3 &v) {
+            return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+        };
         if (!finite(e.normal) || !finite(e.point) || !std::isfinite(e.speed) || !std::isfinite(e.t))
-            throw ani::Failure(ANI_ERR_FAILED, std::string("the contact of models '") + name_of(scene_.models[e.a]) +
-                                                   "' and '" + name_of(scene_.models[e.b]) + "' is not finite");
+            throw ani::Failure(ANI_ERR_FAILED, std::string("the contact of models '") +
+                                                   name_of(scene_.models[e.a]) + "' and '" +
+                                                   name_of(scene_.models[e.b]) + "' is not finite");
         ++count_.collisions;
         if (sink_.event) sink_.event(sink_.context, &e);
     }

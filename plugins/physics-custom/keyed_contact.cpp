@@ -29,15 +29,18 @@ ApproachOutcome advance_to_contact(const Approach &approach, double t0, double t
     double t = t0;
     double g = approach.gap(t);
     if (g <= 0.0 && g < -tolerance) return {ApproachOutcome::kOverlapping, t0};
+    double probe_step = std::max(1e-9, 1e-12 * std::abs(t0));
     for (int step = 0; step < kMaxSteps; ++step) {
         if (g <= tolerance) {
             // Touching: a contact only if they are closing (a body leaving a surface it just
             // bounced off is not in contact with it).
-            const double probe = std::min(t1, t + std::max(1e-9, 1e-12 * std::abs(t)));
+            const double probe = std::min(t1, t + probe_step);
             if (probe > t && approach.gap(probe) < g) return {ApproachOutcome::kContact, t};
-            // Moving apart or along: step past the touch.
+            // Moving apart or along: step past the touch, in steps that double while they
+            // stay touching (two models resting against each other).
             if (probe >= t1) return {};
             t = probe;
+            probe_step *= 2.0;
             g = approach.gap(t);
             if (g < -tolerance) return {ApproachOutcome::kOverlapping, t};
             continue;

@@ -19,7 +19,9 @@ const glm::dvec3 gravity(0.0, -G, 0.0);
 // A large triangle in the plane y = 0, facing +Y (counter-clockwise seen from above).
 const glm::dvec3 A(-10, 0, -10), B(-10, 0, 10), C(10, 0, 0);
 
-Path falling_from(const glm::dvec3 &p) { return Path{p, glm::dvec3(0.0), gravity}; }
+Path falling_from(const glm::dvec3 &p) {
+    return Path{p, glm::dvec3(0.0), gravity};
+}
 
 } // namespace
 
@@ -35,7 +37,7 @@ TEST_CASE("first contact finds the first crossing of quadratics and quartics") {
     // A touch without crossing: (t - 2)^2 = t^2 - 4 t + 4. A double root is known only to about
     // the square root of the rounding error, 1e-8: a grazing contact's time is ill-conditioned.
     CHECK(*first_contact({4, -4, 1, 0, 0}, 0, 10) == Approx(2.0).epsilon(1e-7));
-    CHECK_FALSE(first_contact({1, 0, 1, 0, 0}, 0, 10)); // t^2 + 1 never reaches 0
+    CHECK_FALSE(first_contact({1, 0, 1, 0, 0}, 0, 10));   // t^2 + 1 never reaches 0
     CHECK_FALSE(first_contact({4, 0, -1, 0, 0}, 0, 1.5)); // the root 2 is past the end
 }
 
@@ -90,23 +92,28 @@ TEST_CASE("a fast sphere never passes through a thin triangle, at any speed") {
 
 TEST_CASE("two spheres meet when their centers are ra + rb apart") {
     // Head-on at 1 m/s each from 10 m apart, radii 1: the gap closes at 2 m/s from 8 m.
-    const auto c = sphere_sphere({{0, 0, 0}, {1, 0, 0}, {0, 0, 0}}, 1.0, {{10, 0, 0}, {-1, 0, 0}, {0, 0, 0}}, 1.0, 100.0);
+    const auto c = sphere_sphere({{0, 0, 0}, {1, 0, 0}, {0, 0, 0}}, 1.0,
+                                 {{10, 0, 0}, {-1, 0, 0}, {0, 0, 0}}, 1.0, 100.0);
     REQUIRE(c);
     CHECK(c->t == Approx(4.0).epsilon(1e-15));
     CHECK(c->normal == glm::dvec3(-1, 0, 0));
     CHECK(c->point.x == Approx(5.0).epsilon(1e-15));
     // One falls onto the other at rest: 10 - G t^2 / 2 = 1 when t = sqrt(18 / G).
-    const auto fall = sphere_sphere(falling_from({0, 10, 0}), 0.5, {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, 0.5, 100.0);
+    const auto fall =
+        sphere_sphere(falling_from({0, 10, 0}), 0.5, {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, 0.5, 100.0);
     REQUIRE(fall);
     CHECK(fall->t == Approx(std::sqrt(18.0 / G)).epsilon(1e-13));
     // Both falling: gravity cancels in their relative motion.
-    const auto both = sphere_sphere({{0, 10, 0}, {0, -3, 0}, gravity}, 0.5, {{0, 0, 0}, {0, 0, 0}, gravity}, 0.5, 100.0);
+    const auto both = sphere_sphere({{0, 10, 0}, {0, -3, 0}, gravity}, 0.5,
+                                    {{0, 0, 0}, {0, 0, 0}, gravity}, 0.5, 100.0);
     REQUIRE(both);
     CHECK(both->t == Approx(3.0).epsilon(1e-14));
     // Touching but moving apart (just after a bounce): no contact, no sticking.
-    CHECK_FALSE(sphere_sphere({{0, 0, 0}, {-1, 0, 0}, {0, 0, 0}}, 1.0, {{2, 0, 0}, {1, 0, 0}, {0, 0, 0}}, 1.0, 100.0));
+    CHECK_FALSE(sphere_sphere({{0, 0, 0}, {-1, 0, 0}, {0, 0, 0}}, 1.0,
+                              {{2, 0, 0}, {1, 0, 0}, {0, 0, 0}}, 1.0, 100.0));
     // Passing by farther apart than the radii: none.
-    CHECK_FALSE(sphere_sphere({{0, 0, 0}, {1, 0, 0}, {0, 0, 0}}, 1.0, {{10, 2.5, 0}, {-1, 0, 0}, {0, 0, 0}}, 1.0, 100.0));
+    CHECK_FALSE(sphere_sphere({{0, 0, 0}, {1, 0, 0}, {0, 0, 0}}, 1.0,
+                              {{10, 2.5, 0}, {-1, 0, 0}, {0, 0, 0}}, 1.0, 100.0));
 }
 
 TEST_CASE("the seed's ray-triangle test") {
@@ -116,7 +123,8 @@ TEST_CASE("the seed's ray-triangle test") {
     CHECK_FALSE(ray_triangle({0.25, 0.25, 1}, {0, 0, 2}, a, b, c));    // points away: t < 0
     CHECK_FALSE(ray_triangle({0.9, 0.9, 1}, {0, 0, -2}, a, b, c));     // misses the triangle
     CHECK_FALSE(ray_triangle({0.25, 0.25, 1}, {1, 0, 0}, a, b, c));    // parallel
-    CHECK(*ray_triangle({0.0, 0.0, 1}, {0, 0, -1}, a, b, c) == Approx(1.0)); // on a corner: inside (>= 0)
+    CHECK(*ray_triangle({0.0, 0.0, 1}, {0, 0, -1}, a, b, c) ==
+          Approx(1.0)); // on a corner: inside (>= 0)
 }
 
 TEST_CASE("reflection off a wall, and off a moving wall with the relative velocity") {
@@ -136,7 +144,8 @@ TEST_CASE("3D elastic exchange: the 1D formula along the normal, momentum and en
     const glm::dvec3 n = glm::normalize(glm::dvec3(1, 1, 0));
     auto [a2, b2] = elastic_exchange(2.0, {3, 0, 0}, 2.0, {0, 0, 0}, n);
     CHECK(glm::dot(a2, b2) == Approx(0.0).margin(1e-14));
-    CHECK(glm::dot(a2, glm::dvec3(1, -1, 0)) == Approx(glm::dot(glm::dvec3(3, 0, 0), glm::dvec3(1, -1, 0))));
+    CHECK(glm::dot(a2, glm::dvec3(1, -1, 0)) ==
+          Approx(glm::dot(glm::dvec3(3, 0, 0), glm::dvec3(1, -1, 0))));
 
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> any(-10, 10), mass(0.01, 100);
@@ -151,7 +160,8 @@ TEST_CASE("3D elastic exchange: the 1D formula along the normal, momentum and en
         CHECK(glm::length(p1 - p0) <= 1e-12 * (glm::length(ma * va) + glm::length(mb * vb)));
         CHECK(std::abs(e1 - e0) <= 1e-12 * e0);
         // The tangential components are unchanged.
-        CHECK(glm::length((va1 - va) - glm::dot(va1 - va, normal) * normal) <= 1e-12 * glm::length(va));
+        CHECK(glm::length((va1 - va) - glm::dot(va1 - va, normal) * normal) <=
+              1e-12 * glm::length(va));
     }
 }
 

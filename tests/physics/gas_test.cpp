@@ -192,7 +192,8 @@ TEST_CASE("10000 spheres: the broad phase tests a few neighbours per prediction,
     auto timeline = baked(gas, 0.5);
     const auto &counts = timeline->stats().backend_counts;
     const double predictions = counts.at("predictions"), done = counts.at("pair tests done");
-    INFO(timeline->events().size() << " collisions, " << predictions << " predictions, " << done << " pair tests");
+    INFO(timeline->events().size()
+         << " collisions, " << predictions << " predictions, " << done << " pair tests");
     CHECK(timeline->events().size() > 2000);
     CHECK(done < 40.0 * predictions);
     CHECK(counts.at("pair tests skipped") > 1000.0 * done);

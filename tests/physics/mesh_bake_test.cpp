@@ -175,10 +175,66 @@ TEST_CASE("a cube inside a closed cube used as a room bounces off its walls from
     for (double t : {3.3, 17.0, 42.5, 60.0}) {
         CAPTURE(t);
         const ModelPose p = timeline->evaluate(t).models[1];
-        for (int c = 0; c < 3; ++c) CHECK(p.center[c] == Approx(wave(p0[c], v0[c], t)).margin(1e-9));
+        for (int c = 0; c < 3; ++c)
+            CHECK(p.center[c] == Approx(wave(p0[c], v0[c], t)).margin(1e-9));
         CHECK(glm::length(p.velocity) == Approx(glm::length(v0)).epsilon(1e-14));
     }
     size_t hits = 0;
-    for (int c = 0; c < 3; ++c) hits += static_cast<size_t>(std::floor((std::abs(v0[c]) * 60.0 + (v0[c] > 0 ? p0[c] + L : L - p0[c])) / (2.0 * L)));
+    for (int c = 0; c < 3; ++c)
+        hits += static_cast<size_t>(
+            std::floor((std::abs(v0[c]) * 60.0 + (v0[c] > 0 ? p0[c] + L : L - p0[c])) / (2.0 * L)));
     CHECK(timeline->events().size() == hits);
+}
+
+namespace {
+void key(Document &doc, std::int64_t ms, int model, const ModelState &state) {
+    if (doc.find_keyframe(ms) < 0) {
+        Keyframe k;
+        k.time_ms = ms;
+        k.states.assign(doc.models().size(), std::nullopt);
+        doc.insert_keyframe(k);
+    }
+    doc.set_state(ms, model, state);
+}
+} // namespace
+
+TEST_CASE("a keyed paddle strikes a resting cube, which leaves at twice the paddle's speed") {
+    // The paddle: the cube mesh scaled (0.1, 0.5, 0.5), keyed at 2 m/s along x from x = -3
+    // (linear: Dynamics off). The cube (half-side 0.25) at rest at the origin, gravity off: the
+    // paddle's face (x + 0.1) meets the cube's face (x = -0.25).
+    Document doc;
+    Settings s = doc.settings();
+    s.gravity = 0.0;
+    doc.set_settings(s);
+    doc.add_model(model("paddle", "cube", false, false), placed({-3, 0, 0}, {0.1, 0.5, 0.5}));
+    doc.add_model(model("cube", "cube", true, false), placed({0, 0.1, 0.05}, glm::dvec3(0.25)));
+    key(doc, 2000, 0, placed({1, 0, 0}, {0.1, 0.5, 0.5}));
+    auto timeline = timeline_of(doc);
+    timeline->bake(3.0);
+    const double contact = (3.0 - 0.1 - 0.25) / 2.0;
+    REQUIRE(timeline->events().size() == 1);
+    CHECK(timeline->events()[0].t == Approx(contact).epsilon(1e-11));
+    CHECK(std::abs(std::abs(timeline->events()[0].normal.x) - 1.0) < 1e-9);
+    CHECK(timeline->evaluate(2.5).models[1].velocity.x == Approx(4.0).epsilon(1e-9));
+    // The paddle rests where it struck until its last key, then holds that key's place.
+    CHECK(timeline->evaluate(1.8).motion[0] == ANI_MOTION_REST);
+    CHECK(timeline->evaluate(1.8).models[0].center.x == Approx(-0.35).epsilon(1e-9));
+}
+
+TEST_CASE("a keyed cube lowered onto a floor is released where it touches it") {
+    // Keyed from y = 3 at 0 s to y = -1 at 2 s (linear, 2 m/s down), Dynamics off: its bottom
+    // (0.25 below its center) touches the floor at y = 0 when 3 - 2 t = 0.25.
+    Document doc;
+    doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, glm::dvec3(5.0)));
+    doc.add_model(model("cube", "cube", false, false), placed({0, 3, 0}, glm::dvec3(0.25)));
+    key(doc, 2000, 1, placed({0, -1, 0}, glm::dvec3(0.25)));
+    auto timeline = timeline_of(doc);
+    timeline->bake(2.5);
+    const double contact = (3.0 - 0.25) / 2.0;
+    REQUIRE(!timeline->events().empty());
+    CHECK(timeline->events()[0].t == Approx(contact).epsilon(1e-11));
+    CHECK(std::abs(std::abs(timeline->events()[0].normal.y) - 1.0) < 1e-9);
+    const ModelPose resting = timeline->evaluate(1.9).models[1];
+    CHECK(resting.center.y == Approx(0.25).epsilon(1e-9));
+    CHECK(timeline->evaluate(1.9).motion[1] == ANI_MOTION_REST);
 }
