@@ -1,13 +1,12 @@
 // `animator bake FILE`: bakes an animation with a physics backend and writes what it found: a
 // trace of every model's state, the collision events, and statistics.
+#include "cli/cli_support.hpp"
 #include "cli/commands.hpp"
 
 #include "io/document_io.hpp"
 #include "io/environment.hpp"
 #include "plugin/descriptor_check.hpp"
 #include "timeline/timeline.hpp"
-
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -28,66 +27,6 @@ struct BakeOptions {
     double step = 1.0 / 60.0;
     bool stats = false;
 };
-
-std::string csv_field(const std::string &s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string out = "\"";
-    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
-
-std::string number(double x) {
-    char buf[32];
-    (void)std::snprintf(buf, sizeof buf, "%.17g", x);
-    return buf;
-}
-
-// A progress bar on a terminal, for bakes longer than a second; nothing otherwise.
-class ProgressBar {
-  public:
-    ProgressBar() : tty_(isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()) {}
-    ~ProgressBar() {
-        if (shown_) std::cerr << "\r" << std::string(60, ' ') << "\r" << std::flush;
-    }
-    bool operator()(double fraction) {
-        if (!tty_) return true;
-        const auto elapsed = std::chrono::steady_clock::now() - start_;
-        if (elapsed < std::chrono::seconds(1)) return true;
-        shown_ = true;
-        const int filled = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 40.0);
-        std::cerr << "\rbaking [" << std::string(static_cast<size_t>(filled), '#')
-                  << std::string(static_cast<size_t>(40 - filled), '.') << "] "
-                  << static_cast<int>(fraction * 100.0) << "%" << std::flush;
-        return true;
-    }
-
-  private:
-    bool tty_, shown_ = false;
-    std::chrono::steady_clock::time_point start_;
-};
-
-// "NAME=VALUE" or "NAME=V1,V2,V3" for a parameter of the chosen backend.
-void apply_params(Document &doc, const std::string &backend, const std::vector<std::string> &params) {
-    Settings settings = doc.settings();
-    for (const std::string &p : params) {
-        const auto eq = p.find('=');
-        if (eq == std::string::npos || eq == 0)
-            throw std::invalid_argument("--param needs NAME=VALUE, got '" + p + "'");
-        ParamValue value{};
-        size_t i = 0, at = eq + 1;
-        while (at <= p.size() && i < 4) {
-            const size_t comma = std::min(p.find(',', at), p.size());
-            const std::string part = p.substr(at, comma - at);
-            char *end = nullptr;
-            value[i++] = std::strtod(part.c_str(), &end);
-            if (part.empty() || *end != '\0' || !std::isfinite(value[i - 1]))
-                throw std::invalid_argument("--param " + p.substr(0, eq) + ": '" + part + "' is not a number");
-            at = comma + 1;
-        }
-        settings.params[backend][p.substr(0, eq)] = value;
-    }
-    doc.set_settings(settings);
-}
 
 void write_trace(const std::string &path, const Timeline &timeline, double until, double step) {
     std::set<double> times;
@@ -181,10 +120,7 @@ int run_bake(const BakeOptions &o) {
         apply_params(doc, backend, o.params);
         const auto start = std::chrono::steady_clock::now();
         Timeline timeline(doc, env.plugins, o.backend);
-        std::vector<std::string> mesh_ids, warnings;
-        for (const Model &m : doc.models()) mesh_ids.push_back(m.mesh);
-        timeline.set_meshes(load_meshes(mesh_ids, env.assets, o.file, warnings));
-        for (const std::string &w : warnings) std::cerr << "animator: warning: " << w << "\n";
+        load_document_meshes(timeline, env, o.file);
         ProgressBar bar;
         timeline.bake(until, [&](double f) { return bar(f); });
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

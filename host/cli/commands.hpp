@@ -14,5 +14,6 @@ enum ExitCode { kSuccess = 0, kBadInput = 1, kUsage = 2 };
 void add_plugins_command(CLI::App &app, std::function<int()> &run);
 void add_info_command(CLI::App &app, std::function<int()> &run);
 void add_bake_command(CLI::App &app, std::function<int()> &run);
+void add_compare_command(CLI::App &app, std::function<int()> &run);
 
 } // namespace animator::cli

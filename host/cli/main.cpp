@@ -16,6 +16,7 @@ int run_cli(int argc, char **argv) {
     add_plugins_command(app, run);
     add_info_command(app, run);
     add_bake_command(app, run);
+    add_compare_command(app, run);
 
     try {
         app.parse(argc, argv);

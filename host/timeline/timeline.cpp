@@ -1,5 +1,8 @@
 #include "timeline/timeline.hpp"
 
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtx/euler_angles.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -47,14 +50,33 @@ struct BakeContext {
     std::vector<ani_collision_event> *events;
     const std::function<bool(double)> *progress;
     std::map<std::string, double> *counts;
+    std::vector<std::vector<ani_rotation_segment>> *rotations;
 };
+
+// Euler angles (degrees in [0, 360), the documents' X-Y-Z convention) of a rotation segment at t.
+glm::dvec3 angles_at(const ani_rotation_segment &s, double t) {
+    const glm::dquat q0(s.q0.w, s.q0.x, s.q0.y, s.q0.z);
+    const glm::dvec3 w(s.w.x, s.w.y, s.w.z);
+    const double speed = glm::length(w);
+    const glm::dquat turn = speed > 0.0 ? glm::angleAxis(speed * (t - s.t0), w / speed) : glm::dquat(1.0, 0.0, 0.0, 0.0);
+    const glm::dmat4 m = glm::mat4_cast(glm::normalize(turn * q0));
+    double x = 0.0, y = 0.0, z = 0.0;
+    glm::extractEulerAngleXYZ(m, x, y, z);
+    glm::dvec3 degrees = glm::degrees(glm::dvec3(x, y, z));
+    for (int i = 0; i < 3; ++i) {
+        degrees[i] = std::fmod(degrees[i], 360.0);
+        if (degrees[i] < 0.0) degrees[i] += 360.0;
+    }
+    return degrees;
+}
 
 } // namespace
 
 Timeline::Timeline(const Document &doc, PluginRegistry &plugins, const std::string &backend)
     : doc_(doc), plugins_(plugins), interpolators_(Interpolators::load(plugins, doc)),
-      keyed_(std::make_unique<KeyedMotion>(doc_, interpolators_)),
-      physics_(physics_instance(plugins, doc_, backend)), segments_(doc_.models().size()) {}
+      keyed_(std::make_unique<KeyedMotion>(doc_, interpolators_)), backend_override_(backend),
+      physics_(physics_instance(plugins, doc_, backend)), segments_(doc_.models().size()),
+      rotations_(doc_.models().size()) {}
 
 const ani_motion_segment *Timeline::segment_at(int model, double t) const {
     const auto &list = segments_[static_cast<size_t>(model)];
@@ -113,6 +135,11 @@ void Timeline::truncate(double from) {
     }
     events_.erase(std::remove_if(events_.begin(), events_.end(), [&](const ani_collision_event &e) { return e.t >= from; }),
                   events_.end());
+    for (auto &list : rotations_) {
+        list.erase(std::remove_if(list.begin(), list.end(), [&](const ani_rotation_segment &s) { return s.t0 >= from; }),
+                   list.end());
+        if (!list.empty() && list.back().t1 > from) list.back().t1 = from;
+    }
     baked_until_ = std::min(baked_until_, from);
 }
 
@@ -165,7 +192,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         }
     };
 
-    BakeContext context{this, &segments_, &events_, &progress, &stats_.backend_counts};
+    BakeContext context{this, &segments_, &events_, &progress, &stats_.backend_counts, &rotations_};
     ani_bake_sink sink{};
     sink.context = &context;
     sink.segment = [](void *c, const ani_motion_segment *s) {
@@ -176,6 +203,10 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     sink.progress = [](void *c, double fraction) -> int32_t {
         auto *ctx = static_cast<BakeContext *>(c);
         return !*ctx->progress || (*ctx->progress)(fraction) ? 1 : 0;
+    };
+    sink.rotation = [](void *c, const ani_rotation_segment *s) {
+        auto *ctx = static_cast<BakeContext *>(c);
+        if (s->model < ctx->rotations->size()) (*ctx->rotations)[s->model].push_back(*s);
     };
     sink.count = [](void *c, const char *name, double value) {
         if (name && std::isfinite(value)) (*static_cast<BakeContext *>(c)->counts)[name] += value;
@@ -216,6 +247,11 @@ Frame Timeline::evaluate(double t) const {
             pose.center = at(*s, t);
             pose.velocity = velocity_at(*s, t);
         }
+        // A backend that turns models (rigid-body rotation) overrides the keys' angles.
+        const auto &turns = rotations_[static_cast<size_t>(m)];
+        const auto r = std::upper_bound(turns.begin(), turns.end(), t,
+                                        [](double time, const ani_rotation_segment &x) { return time < x.t0; });
+        if (r != turns.begin() && t <= (r - 1)->t1) pose.angles = angles_at(*(r - 1), t);
         frame.models[static_cast<size_t>(m)] = pose;
     }
     frame.camera = keyed_->camera(t);
@@ -253,13 +289,33 @@ void Timeline::set_document(const Document &doc, const std::function<bool(double
     const double until = baked_until_;
     const bool new_interpolation = doc.settings().interpolation != doc_.settings().interpolation ||
                                    doc.settings().params != doc_.settings().params;
+    const bool new_backend = doc.settings().physics_backend != doc_.settings().physics_backend ||
+                             doc.settings().params != doc_.settings().params;
+    // What can fail comes first, so that a failure leaves the timeline as it was.
+    std::unique_ptr<PluginInstance> physics = new_backend ? physics_instance(plugins_, doc, backend_override_) : nullptr;
+    Interpolators interpolators = new_interpolation ? Interpolators::load(plugins_, doc) : Interpolators{};
     doc_ = doc;
-    if (new_interpolation) interpolators_ = Interpolators::load(plugins_, doc_);
+    if (physics) physics_ = std::move(physics);
+    if (new_interpolation) interpolators_ = std::move(interpolators);
     keyed_ = std::make_unique<KeyedMotion>(doc_, interpolators_);
-    if (doc_.models().size() != segments_.size()) segments_.assign(doc_.models().size(), {});
+    if (doc_.models().size() != segments_.size()) {
+        segments_.assign(doc_.models().size(), {});
+        rotations_.assign(doc_.models().size(), {});
+    }
     if (!baked_any_ || from >= until) return;
     truncate(from);
     run_bake(from, until, progress);
+}
+
+void Timeline::set_backend(const std::string &id, const std::function<bool(double)> &progress) {
+    auto physics = physics_instance(plugins_, doc_, id); // throws, leaving everything as it was
+    physics_ = std::move(physics);
+    backend_override_ = id;
+    const double until = baked_until_;
+    const bool baked = baked_any_;
+    truncate(0.0);
+    baked_any_ = false;
+    if (baked) run_bake(0.0, until, progress);
 }
 
 } // namespace animator

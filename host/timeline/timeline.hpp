@@ -54,6 +54,12 @@ class Timeline {
     // Takes an edited document: the bake is kept up to the earliest time the edit can change
     // and redone from there to where it was.
     void set_document(const Document &doc, const std::function<bool(double)> &progress = {});
+
+    // Swaps the physics backend while the program runs: the new one is created first (a
+    // PluginError leaves the previous one in place), then the bake is redone with it up to
+    // where it was. The document is not changed; `id` overrides its choice from now on, and ""
+    // goes back to it.
+    void set_backend(const std::string &id, const std::function<bool(double)> &progress = {});
     const Document &document() const { return doc_; }
 
     // The earliest time (seconds) at which `after` can move differently from `before`; infinity
@@ -62,6 +68,8 @@ class Timeline {
 
     const std::vector<ani_motion_segment> &segments(int model) const { return segments_[static_cast<size_t>(model)]; }
     const std::vector<ani_collision_event> &events() const { return events_; }
+    // The backend's rotation segments of a model (only for a backend that turns models).
+    const std::vector<ani_rotation_segment> &rotations(int model) const { return rotations_[static_cast<size_t>(model)]; }
     const BakeStats &stats() const { return stats_; }
     const std::string &backend_id() const { return physics_->info().id; }
     const KeyedMotion &keyed() const { return *keyed_; }
@@ -76,6 +84,7 @@ class Timeline {
     PluginRegistry &plugins_;
     Interpolators interpolators_;
     std::unique_ptr<KeyedMotion> keyed_;
+    std::string backend_override_; // a backend chosen over the document's, or ""
     std::unique_ptr<PluginInstance> physics_;
     struct MeshView {
         std::shared_ptr<const Mesh> mesh;
@@ -85,6 +94,7 @@ class Timeline {
     std::vector<std::unique_ptr<MeshView>> meshes_; // per model, null without a mesh
     std::vector<std::vector<ani_motion_segment>> segments_;
     std::vector<ani_collision_event> events_;
+    std::vector<std::vector<ani_rotation_segment>> rotations_; // per model, in time order
     double baked_until_ = 0.0;
     bool baked_any_ = false;
     BakeStats stats_;

@@ -182,3 +182,30 @@ TEST_CASE("animator bake refuses a bad backend, time, step or parameter") {
     CHECK(param.exit_code == 1);
     CHECK_THAT(param.out, Catch::Contains("physics.custom") && Catch::Contains("restitution"));
 }
+
+TEST_CASE("animator compare reports the largest differences and the unmatched events of two backends") {
+    namespace fs = std::filesystem;
+    const fs::path dir = test::fresh_dir("cli_compare");
+    const std::string cradle = (test::source_dir() / "assets/animations/cradle.ani").string();
+    // A backend against itself: nothing apart, every event matched.
+    const auto same = test::run_animator("compare " + cradle + " --backends physics.custom,physics.custom --csv " +
+                                         (dir / "diff.csv").string());
+    REQUIRE(same.exit_code == 0);
+    CHECK_THAT(same.out, Catch::Contains("striker") && Catch::Contains("0 m at 0 s"));
+    CHECK_THAT(same.out, Catch::Contains("events: 4 in A, 4 in B"));
+    CHECK_THAT(same.out, Catch::Contains("only in A: 0") && Catch::Contains("only in B: 0"));
+    const auto rows = lines_of(test::read_file(dir / "diff.csv"));
+    REQUIRE(rows.size() > 100);
+    CHECK(rows[0] == "t,model,dx,dy,dz,dvx,dvy,dvz");
+    // Different settings of the same backend: a parameter goes to the backends that have it.
+    const auto grid = test::run_animator("compare " + cradle + " --backends physics.custom,physics.custom --param broad_phase=1");
+    CHECK(grid.exit_code == 0);
+    const auto unknown = test::run_animator("compare " + cradle + " --backends physics.custom,physics.custom --param nope=1");
+    CHECK(unknown.exit_code == 1);
+    CHECK_THAT(unknown.out, Catch::Contains("--param nope: neither physics.custom nor physics.custom"));
+    const auto bad = test::run_animator("compare " + cradle + " --backends physics.custom,physics.nope");
+    CHECK(bad.exit_code == 1);
+    CHECK_THAT(bad.out, Catch::Contains("no physics backend 'physics.nope'"));
+    const auto one = test::run_animator("compare " + cradle + " --backends physics.custom");
+    CHECK(one.exit_code == 2);
+}

@@ -96,6 +96,17 @@ typedef struct ani_collision_event {
     double speed;     /* approach speed along the normal, >= 0 */
 } ani_collision_event;
 
+/* Since ABI 1.1: a model's orientation over [t0, t1] when the backend turns it (rigid-body
+ * rotation, such as Bullet's "rotate on contact"); where no rotation segment covers a time,
+ * the model's keys turn it. q(t) is q0 followed by a turn of |w| (t - t0) radians about the
+ * world axis w / |w| (w = 0: q0 throughout). */
+typedef struct ani_rotation_segment {
+    uint32_t model;
+    double t0, t1; /* seconds */
+    ani_quat q0;   /* unit; world orientation of the model at t0 */
+    ani_vec3 w;    /* angular velocity, radians per second, world frame */
+} ani_rotation_segment;
+
 /* Where a bake reports what it finds; the host copies what it is given. */
 typedef struct ani_bake_sink {
     void *context;
@@ -108,6 +119,9 @@ typedef struct ani_bake_sink {
      * sets this field, possibly to NULL): a count of the backend's work, reported at the end of
      * a bake, such as "pair tests done"; the host adds the counts of its bakes up by name. */
     void (*count)(void *context, const char *name, double value);
+    /* Since ABI 1.1 (may be NULL): the rotation segments of models the backend turns, each
+     * model's in time order. */
+    void (*rotation)(void *context, const ani_rotation_segment *segment);
 } ani_bake_sink;
 
 typedef struct ani_physics_api {

@@ -1,0 +1,48 @@
+// What the subcommands that bake share: CSV fields, numbers that read back exactly, a progress
+// bar on a terminal, backend parameters from the command line, and a document's meshes.
+#pragma once
+
+#include "document/document.hpp"
+#include "io/environment.hpp"
+#include "timeline/timeline.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace animator::cli {
+
+// A CSV field, quoted when it has to be.
+std::string csv_field(const std::string &s);
+
+// A double with all 17 significant digits.
+std::string number(double x);
+
+// A progress bar on a terminal, for bakes longer than a second; nothing otherwise.
+class ProgressBar {
+  public:
+    explicit ProgressBar(std::string label = "baking");
+    ~ProgressBar();
+    ProgressBar(const ProgressBar &) = delete;
+    ProgressBar &operator=(const ProgressBar &) = delete;
+    bool operator()(double fraction);
+
+  private:
+    std::string label_;
+    bool tty_, shown_ = false;
+    std::chrono::steady_clock::time_point start_;
+};
+
+// "NAME=VALUE" or "NAME=V1,V2,V3" for a parameter of `backend`, into the document's settings.
+// Throws std::invalid_argument for a malformed one.
+void apply_params(Document &doc, const std::string &backend, const std::vector<std::string> &params);
+
+// The names of the parameters that a plugin declares.
+std::vector<std::string> param_names(PluginRegistry &plugins, const std::string &plugin_id);
+
+// Gives the timeline the meshes of the document's models (found next to `file` too); warnings
+// go to stderr.
+void load_document_meshes(Timeline &timeline, const Environment &env, const std::filesystem::path &file);
+
+} // namespace animator::cli
