@@ -5,6 +5,7 @@
 #include "grid.hpp"
 #include "keyed_contact.hpp"
 #include "mesh_contact.hpp"
+#include "mesh_distance.hpp"
 #include "polynomial.hpp"
 #include "response.hpp"
 #include "time_of_impact.hpp"
@@ -260,7 +261,7 @@ class EventBake {
                 b.sphere = radius.has_value();
                 b.radius = radius.value_or(0.0);
                 b.reach = mesh_reach(*m.mesh);
-                if (!b.sphere) b.edges = edges_of(*m.mesh);
+                if (!b.sphere) b.edges = edges_of(m.mesh->triangles, m.mesh->triangle_count);
                 b.dynamics = d.dynamics != 0;
                 b.keys_end = free_now ? t_begin_ : span.end;
                 bodies_.push_back(b);
@@ -586,134 +587,24 @@ class EventBake {
         return {p[0], p[1], p[2]};
     }
 
-    static std::vector<std::array<uint32_t, 2>> edges_of(const ani_mesh_view &mesh) {
-        std::vector<std::array<uint32_t, 2>> edges;
-        for (uint32_t k = 0; k < mesh.triangle_count; ++k)
-            for (uint32_t e = 0; e < 3; ++e) {
-                uint32_t a = mesh.triangles[3 * static_cast<size_t>(k) + e];
-                uint32_t b = mesh.triangles[3 * static_cast<size_t>(k) + (e + 1) % 3];
-                if (b < a) std::swap(a, b);
-                edges.push_back({a, b});
-            }
-        std::sort(edges.begin(), edges.end());
-        edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-        return edges;
-    }
-
-    // A triangle mesh placed in the world, for distances between meshes.
-    struct Placed {
-        glm::dvec3 center;
-        std::vector<glm::dvec3> vertices;
-        const uint32_t *triangles;
-        size_t triangle_count;
-        const std::array<uint32_t, 2> *edges;
-        size_t edge_count;
-    };
-
-    Placed placed(const Body &b, const Pose &p) const {
+    // A body's triangles where its pose puts them, for mesh distances.
+    PlacedMesh placed(const Body &b, const Pose &p) const {
         const ani_mesh_view &mesh = mesh_of(b);
-        Placed out{p.center,      {}, mesh.triangles, mesh.triangle_count, b.edges.data(),
-                   b.edges.size()};
+        PlacedMesh out{p.center,      {}, mesh.triangles, mesh.triangle_count, b.edges.data(),
+                       b.edges.size()};
         out.vertices.reserve(mesh.vertex_count);
         for (uint32_t k = 0; k < mesh.vertex_count; ++k)
             out.vertices.push_back(p.center + p.linear * vertex(mesh, k));
         return out;
     }
 
-    static Placed placed(const Obstacle &o) {
+    static PlacedMesh placed(const Obstacle &o) {
         return {o.center,
                 o.shape->vertices,
                 o.shape->triangles.empty() ? nullptr : &o.shape->triangles[0][0],
                 o.shape->triangles.size(),
                 o.shape->edges.data(),
                 o.shape->edges.size()};
-    }
-
-    // The closest points of segments p1q1 and p2q2 (Ericson, Real-Time Collision Detection 5.1.9).
-    static void closest_on_segments(const glm::dvec3 &p1, const glm::dvec3 &q1,
-                                    const glm::dvec3 &p2, const glm::dvec3 &q2, glm::dvec3 &c1,
-                                    glm::dvec3 &c2) {
-        const glm::dvec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
-        const double a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
-        double s = 0.0, t = 0.0;
-        if (a <= 0.0 && e > 0.0) {
-            t = std::clamp(f / e, 0.0, 1.0);
-        } else if (a > 0.0) {
-            const double c = glm::dot(d1, r);
-            if (e <= 0.0) {
-                s = std::clamp(-c / a, 0.0, 1.0);
-            } else {
-                const double b = glm::dot(d1, d2), denom = a * e - b * b;
-                s = denom > 0.0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-                t = (b * s + f) / e;
-                if (t < 0.0) {
-                    t = 0.0;
-                    s = std::clamp(-c / a, 0.0, 1.0);
-                } else if (t > 1.0) {
-                    t = 1.0;
-                    s = std::clamp((b - c) / a, 0.0, 1.0);
-                }
-            }
-        }
-        c1 = p1 + d1 * s;
-        c2 = p2 + d2 * t;
-    }
-
-    // The distance between two meshes' surfaces, the nearest points, and the normal there from
-    // b towards a: every vertex of each against every triangle of the other, every edge against
-    // every edge. At a touch the nearest points coincide, so the normal comes from the features:
-    // the face's normal for a vertex nearest to a face, the edges' cross product for two edges.
-    static double mesh_distance(const Placed &a, const Placed &b, glm::dvec3 &on_a,
-                                glm::dvec3 &on_b, glm::dvec3 &normal) {
-        double best = kNever;
-        glm::dvec3 feature_normal(0.0); // unoriented
-        auto offer = [&](const glm::dvec3 &x, const glm::dvec3 &y, const glm::dvec3 &n) {
-            const double d = glm::length(x - y);
-            if (d < best) {
-                best = d;
-                on_a = x;
-                on_b = y;
-                feature_normal = n;
-            }
-        };
-        for (int side = 0; side < 2; ++side) {
-            const Placed &p = side == 0 ? a : b, &q = side == 0 ? b : a;
-            for (const glm::dvec3 &v : p.vertices)
-                for (size_t k = 0; k < q.triangle_count; ++k) {
-                    const uint32_t *t = q.triangles + 3 * k;
-                    const glm::dvec3 &q0 = q.vertices[t[0]], &q1 = q.vertices[t[1]],
-                                     &q2 = q.vertices[t[2]];
-                    const glm::dvec3 c = closest_point_on_triangle(v, q0, q1, q2);
-                    const glm::dvec3 face = glm::cross(q1 - q0, q2 - q0);
-                    if (side == 0)
-                        offer(v, c, face);
-                    else
-                        offer(c, v, face);
-                }
-        }
-        for (size_t i = 0; i < a.edge_count; ++i)
-            for (size_t j = 0; j < b.edge_count; ++j) {
-                glm::dvec3 x, y;
-                const glm::dvec3 &a0 = a.vertices[a.edges[i][0]], &a1 = a.vertices[a.edges[i][1]];
-                const glm::dvec3 &b0 = b.vertices[b.edges[j][0]], &b1 = b.vertices[b.edges[j][1]];
-                closest_on_segments(a0, a1, b0, b1, x, y);
-                offer(x, y, glm::cross(a1 - a0, b1 - b0));
-            }
-        // Oriented from b towards a: by the nearest points where they are clearly apart,
-        // otherwise by the centers.
-        const glm::dvec3 apart = on_a - on_b, centers = a.center - b.center;
-        const double size = glm::length(centers) + 1.0;
-        glm::dvec3 n =
-            glm::length(feature_normal) > 0.0 ? glm::normalize(feature_normal) : glm::dvec3(0.0);
-        if (glm::length(apart) > 1e-6 * size &&
-            (n == glm::dvec3(0.0) || std::abs(glm::dot(glm::normalize(apart), n)) < 0.5))
-            n = glm::normalize(apart); // nearest at a rim: the direction between the points
-        if (n == glm::dvec3(0.0))
-            n = glm::length(centers) > 0.0 ? glm::normalize(centers) : glm::dvec3(0, 1, 0);
-        const double side =
-            glm::length(apart) > 1e-9 * size ? glm::dot(n, apart) : glm::dot(n, centers);
-        normal = side < 0.0 ? -n : n;
-        return best;
     }
 
     // The farthest a vertex of the mesh is from the model's origin, in model space.
