@@ -669,8 +669,9 @@ class EventBake {
     // The velocity of the material point of body b at `point` at time t (a keyed model turning
     // or scaling moves each of its points differently).
     glm::dvec3 point_velocity(const Body &b, const glm::dvec3 &point, double t) const {
+        if (!b.keyed()) return b.path.velocity(t - b.t0); // free: it translates
         const Pose p = pose(b, t);
-        if (b.sphere || !b.keyed()) return p.velocity;
+        if (b.sphere) return p.velocity;
         const glm::dvec3 local = glm::inverse(p.linear) * (point - p.center);
         const double h = 1e-6 * std::max(1.0, std::abs(t));
         const Pose before = pose(b, t - h), after = pose(b, t + h);

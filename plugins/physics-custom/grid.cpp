@@ -57,6 +57,9 @@ UniformGrid::UniformGrid(const Box &region, double cell)
     for (int axis = 0; axis < 3; ++axis)
         counts_[static_cast<size_t>(axis)] =
             std::max<int64_t>(1, static_cast<int64_t>(std::ceil(extent[axis] / cell_)));
+    const double cells = static_cast<double>(counts_[0] + 2) * static_cast<double>(counts_[1] + 2) *
+                         static_cast<double>(counts_[2] + 2);
+    if (cells <= static_cast<double>(1 << 22)) dense_.resize(static_cast<size_t>(cells));
 }
 
 Cell UniformGrid::cell_of(const glm::dvec3 &p) const {
@@ -86,16 +89,14 @@ Box UniformGrid::bounds(const Cell &c) const {
 }
 
 void UniformGrid::insert(uint32_t body, const Cell &c) {
-    cells_[key(c)].push_back(body);
+    at(c).push_back(body);
 }
 
 void UniformGrid::remove(uint32_t body, const Cell &c) {
-    const auto it = cells_.find(key(c));
-    if (it == cells_.end()) return;
-    auto &list = it->second;
-    const auto at = std::find(list.begin(), list.end(), body);
-    if (at == list.end()) return;
-    *at = list.back();
+    auto &list = at(c);
+    const auto found = std::find(list.begin(), list.end(), body);
+    if (found == list.end()) return;
+    *found = list.back();
     list.pop_back(); // the empty cell stays, ready for the next body
 }
 

@@ -2,7 +2,8 @@
 // wide as the largest sphere, over the region where the scene happens. A body is filed under the
 // cell its center is in; two spheres can only touch when their cells are neighbours (of the 27
 // around either), and a body changes cell at an exact cell-crossing time, which is an event of
-// its own. Cells are hashed, so an empty region costs nothing.
+// its own. Cells are an array when the region has few enough of them, hashed otherwise, so a
+// vast empty region costs nothing.
 #pragma once
 
 #include "time_of_impact.hpp"
@@ -50,15 +51,28 @@ class UniformGrid {
         for (int64_t dx = -1; dx <= 1; ++dx)
             for (int64_t dy = -1; dy <= 1; ++dy)
                 for (int64_t dz = -1; dz <= 1; ++dz) {
-                    const auto it = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
-                    if (it == cells_.end()) continue;
-                    for (uint32_t body : it->second) f(body);
+                    const std::vector<uint32_t> *list = find({c[0] + dx, c[1] + dy, c[2] + dz});
+                    if (!list) continue;
+                    for (uint32_t body : *list) f(body);
                 }
     }
 
   private:
+    const std::vector<uint32_t> *find(const Cell &c) const {
+        if (!dense_.empty()) return &dense_[key(c)];
+        const auto it = cells_.find(key(c));
+        return it == cells_.end() ? nullptr : &it->second;
+    }
+    std::vector<uint32_t> &at(const Cell &c) {
+        return dense_.empty() ? cells_[key(c)] : dense_[key(c)];
+    }
+
+    // Cells run from -1 to counts_ per axis (the neighbours of the edge cells): an index into
+    // the array, or 21 bits each for the hash.
     uint64_t key(const Cell &c) const {
-        // Cells run from -1 to counts_ per axis (the neighbours of the edge cells), 21 bits each.
+        if (!dense_.empty())
+            return static_cast<uint64_t>(
+                ((c[2] + 1) * (counts_[1] + 2) + (c[1] + 1)) * (counts_[0] + 2) + (c[0] + 1));
         return static_cast<uint64_t>(c[0] + 1) | static_cast<uint64_t>(c[1] + 1) << 21 |
                static_cast<uint64_t>(c[2] + 1) << 42;
     }
@@ -66,7 +80,8 @@ class UniformGrid {
     glm::dvec3 origin_;
     double cell_;
     Cell counts_;
-    std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
+    std::vector<std::vector<uint32_t>> dense_;                  // when few enough cells
+    std::unordered_map<uint64_t, std::vector<uint32_t>> cells_; // otherwise
 };
 
 } // namespace physics_custom
