@@ -8,7 +8,7 @@ find_package(Threads REQUIRED)
 pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
 # Windowing and OpenGL.
 find_package(glfw3 3.3 REQUIRED)
-find_package(OpenGL REQUIRED)
+find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL) # EGL: off-screen rendering without a display
 # Dear ImGui (static, with the GLFW and OpenGL3 backends) and stb.
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui stb)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)

@@ -15,5 +15,6 @@ void add_plugins_command(CLI::App &app, std::function<int()> &run);
 void add_info_command(CLI::App &app, std::function<int()> &run);
 void add_bake_command(CLI::App &app, std::function<int()> &run);
 void add_compare_command(CLI::App &app, std::function<int()> &run);
+void add_render_command(CLI::App &app, std::function<int()> &run);
 
 } // namespace animator::cli

@@ -17,6 +17,7 @@ int run_cli(int argc, char **argv) {
     add_info_command(app, run);
     add_bake_command(app, run);
     add_compare_command(app, run);
+    add_render_command(app, run);
 
     try {
         app.parse(argc, argv);

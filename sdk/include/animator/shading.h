@@ -62,6 +62,34 @@ typedef struct ani_shading_api {
                                    ani_status *status);
 } ani_shading_api;
 
+/* ---- conventions (appended; no ABI change) ---------------------------------------------- */
+
+/* Vertex inputs the host provides, as `layout(location = N) in` in the GLSL: a model's position
+ * and normal in model space and its texture coordinates (v up, the OBJ convention). The skybox
+ * pass gets only the position: the corners of a cube from -1 to 1. The fragment output is
+ * location 0. */
+#define ANI_VERTEX_POSITION 0
+#define ANI_VERTEX_NORMAL 1
+#define ANI_VERTEX_UV 2
+
+/* Shininess at or above this turns specular light off (the seed's Model Interface: "to turn off
+ * specular lighting, drag it to the maximum value"); the editor's slider ends here. 128 is the
+ * range of OpenGL's classic GL_SHININESS. */
+#define ANI_SHININESS_MAX 128.0
+
+/* What the host puts in each semantic (shading happens in world space):
+ *   model            mat4  model to world           view        mat4  world to camera
+ *   projection       mat4  camera to clip           normal_matrix mat3 model to world, normals
+ *   camera_position  vec3  world                    light_position vec3 world
+ *   light_colour     vec3                           ambient     vec3  ambient light
+ *   kd, ks           vec3  the model's colours      shininess   float the Phong exponent
+ *   tint             float how much kd replaces the texture's colour, 0..1
+ *   reflectivity, transparency  float 0..1          refractive_index float the model's (air: 1)
+ *   texture          sampler2D the model's texture  skybox      samplerCube the scene's skybox
+ *   selected_tint    vec4  rgb, and in alpha how much of it covers a selected model
+ *   param:<id>       float, int, vec3 or vec4: the plugin parameter's value[0..n)
+ * The skybox pass gets view, projection and skybox; it drops the view's translation itself. */
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,151 @@
+// `animator render FILE --out DIR`: bakes an animation and writes its frames as PNG files
+// (DIR/frame_00000.png, ...), off screen through EGL, so it works on a machine with no display.
+#include "cli/cli_support.hpp"
+#include "cli/commands.hpp"
+
+#include "io/document_io.hpp"
+#include "io/environment.hpp"
+#include "render/framebuffer.hpp"
+#include "render/offscreen_context.hpp"
+#include "render/png_frame_writer.hpp"
+#include "render/renderer.hpp"
+#include "timeline/timeline.hpp"
+
+#include <malloc.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <set>
+
+namespace animator::cli {
+
+namespace {
+
+struct RenderCommandOptions {
+    std::string file, out, backend, shading = "shading.phong", size = "1280x720";
+    std::vector<std::string> params;
+    double from = 0.0, to = -1.0, fps = 30.0;
+    int compression = 5;
+};
+
+// "WxH" into width and height; "" when valid, else what is wrong (CLI11's check convention).
+std::string parse_size(const std::string &text, int *width = nullptr, int *height = nullptr) {
+    const auto x = text.find('x');
+    int w = 0, h = 0;
+    char rest = 0;
+    if (x == std::string::npos || std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &rest) != 2 ||
+        w <= 0 || h <= 0 || w > 16384 || h > 16384)
+        return "--size needs WIDTHxHEIGHT in pixels (1 to 16384 each), got '" + text + "'";
+    if (width) *width = w;
+    if (height) *height = h;
+    return "";
+}
+
+int run_render(const RenderCommandOptions &o) {
+    // stb allocates a few megabytes for every frame it encodes; without this glibc gives them
+    // back to the kernel each time and faults them in again (docs/rendering.md).
+    mallopt(M_MMAP_THRESHOLD, 64 << 20);
+    mallopt(M_TRIM_THRESHOLD, 512 << 20);
+
+    Environment env;
+    OpenedDocument opened;
+    try {
+        opened = open_document(env.plugins, o.file);
+    } catch (const DocumentIoError &e) {
+        std::cerr << "animator: " << e.what() << "\n";
+        return kBadInput;
+    }
+    Document &doc = opened.document;
+    const double max_time = static_cast<double>(doc.settings().max_time_ms) / 1000.0;
+    const double to = o.to < 0.0 ? max_time : o.to;
+    if (to > max_time || o.from > to) {
+        std::cerr << "animator: " << o.file << ": frames from " << o.from << " s to " << to
+                  << " s are not within the animation (0 to " << max_time << " s)\n";
+        return kBadInput;
+    }
+    int width = 0, height = 0;
+    parse_size(o.size, &width, &height);
+    try {
+        // A parameter the shading plugin declares goes to it; any other to the physics backend.
+        const std::string backend = o.backend.empty() ? doc.settings().physics_backend : o.backend;
+        const auto shading_names = param_names(env.plugins, o.shading);
+        std::vector<std::string> backend_params, shading_params;
+        for (const std::string &p : o.params) {
+            const std::string name = p.substr(0, p.find('='));
+            const bool for_shading =
+                std::find(shading_names.begin(), shading_names.end(), name) != shading_names.end();
+            (for_shading ? shading_params : backend_params).push_back(p);
+        }
+        apply_params(doc, backend, backend_params);
+        apply_params(doc, o.shading, shading_params);
+
+        Timeline timeline(doc, env.plugins, o.backend);
+        std::vector<std::string> mesh_ids, warnings;
+        for (const Model &m : doc.models()) mesh_ids.push_back(m.mesh);
+        const auto meshes = load_meshes(mesh_ids, env.assets, o.file, warnings);
+        for (const std::string &w : warnings) std::cerr << "animator: warning: " << w << "\n";
+        timeline.set_meshes(meshes);
+        {
+            ProgressBar bar("baking");
+            timeline.bake(to, [&](double f) { return bar(f); });
+        }
+
+        OffscreenContext context;
+        RenderOptions options;
+        options.shading = o.shading;
+        Renderer renderer(env.plugins, env.assets, options);
+        renderer.set_document(doc, meshes);
+        OffscreenFramebuffer framebuffer(width, height);
+        std::filesystem::create_directories(o.out);
+        PngFrameWriter writer(o.out, width, height, 0, o.compression);
+
+        const auto count = static_cast<int>(std::floor((to - o.from) * o.fps + 1e-9)) + 1;
+        ProgressBar bar("rendering");
+        for (int k = 0; k < count; ++k) {
+            const double t = std::min(to, o.from + k / o.fps);
+            renderer.draw(timeline.evaluate(t), framebuffer.target());
+            framebuffer.read_rgb(writer.next_buffer());
+            writer.write(k);
+            bar(static_cast<double>(k + 1) / count);
+        }
+        writer.finish();
+        std::cout << "wrote " << count << " frame" << (count == 1 ? "" : "s") << " of " << width
+                  << "x" << height << " to " << o.out << " (" << PngFrameWriter::file_name(0)
+                  << (count > 1 ? " .. " + PngFrameWriter::file_name(count - 1) : "") << ")\n";
+        return kSuccess;
+    } catch (const std::exception &e) {
+        std::cerr << "animator: " << o.file << ": " << e.what() << "\n";
+        return kBadInput;
+    }
+}
+
+} // namespace
+
+void add_render_command(CLI::App &app, std::function<int()> &run) {
+    auto o = std::make_shared<RenderCommandOptions>();
+    CLI::App *cmd = app.add_subcommand(
+        "render", "Bake an animation and write its frames as PNG files, without a display");
+    cmd->add_option("FILE", o->file, "an animation (.ani) or scene (.lua)")->required();
+    cmd->add_option("--out", o->out, "the folder to write frame_00000.png, ... into")->required();
+    cmd->add_option("--from", o->from, "the first frame's time in seconds (default 0)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--to", o->to, "the last frame's time in seconds (default: the max time)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--fps", o->fps, "frames per second (default 30)")
+        ->check(CLI::Range(0.001, 1000.0));
+    cmd->add_option("--size", o->size, "WIDTHxHEIGHT in pixels (default 1280x720)")
+        ->check([](const std::string &s) { return parse_size(s); });
+    cmd->add_option("--backend", o->backend,
+                    "physics backend plugin id (default: the animation's)");
+    cmd->add_option("--shading", o->shading, "shading plugin id (default shading.phong)");
+    cmd->add_option(
+        "--param", o->params,
+        "a parameter of the physics backend or the shading plugin, NAME=VALUE (repeatable)");
+    cmd->add_option("--compression", o->compression,
+                    "PNG compression 5..9 (default 5, the fastest; higher is smaller and slower)")
+        ->check(CLI::Range(5, 9));
+    cmd->callback([&run, o] { run = [o] { return run_render(*o); }; });
+}
+
+} // namespace animator::cli

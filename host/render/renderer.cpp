@@ -1,0 +1,286 @@
+#include "render/renderer.hpp"
+
+#include "render/model_features.hpp"
+#include "render/scene_math.hpp"
+
+#include <glad/gl.h>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <iostream>
+
+namespace animator {
+
+namespace {
+
+std::unique_ptr<PluginInstance> shading_instance(PluginRegistry &plugins, const std::string &id) {
+    if (id.empty()) return nullptr;
+    const PluginInfo *info = plugins.find(id);
+    if (!info || info->kind != ANI_KIND_SHADING) {
+        std::string known;
+        for (const PluginInfo *p : plugins.find_kind(ANI_KIND_SHADING))
+            known += (known.empty() ? "" : ", ") + p->id;
+        throw PluginError("no shading plugin '" + id +
+                          "' (found: " + (known.empty() ? "none" : known) + ")");
+    }
+    return std::make_unique<PluginInstance>(*info, plugins.host());
+}
+
+// The skybox's faces in GL's cube-map order (docs/assets.md).
+constexpr const char *kFaces[6] = {"right", "left", "top", "bottom", "front", "back"};
+
+} // namespace
+
+Renderer::Renderer(PluginRegistry &plugins, const AssetPaths &assets, RenderOptions options,
+                   LogSink log)
+    : assets_(assets), options_(std::move(options)), log_(std::move(log)) {
+    if (!log_) log_ = [](const std::string &m) { std::cerr << "animator: warning: " << m << "\n"; };
+    programs_ =
+        std::make_unique<ShadingPrograms>(shading_instance(plugins, options_.shading), log_);
+    skybox_cube_ = std::make_unique<GpuMesh>(GpuMesh::skybox_cube());
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::set_document(const Document &doc,
+                            const std::vector<std::shared_ptr<const Mesh>> &meshes) {
+    models_ = doc.models();
+    settings_ = doc.settings();
+    // Uploads are keyed by the mesh's address: every mesh uploaded before is still held by
+    // meshes_ until here, so a new mesh cannot have the address of an old one.
+    meshes_ = meshes;
+    meshes_.resize(models_.size());
+    gpu_meshes_.assign(models_.size(), nullptr);
+    std::map<const Mesh *, std::unique_ptr<GpuMesh>> still_used;
+    for (size_t m = 0; m < models_.size(); ++m) {
+        const Mesh *mesh = meshes_[m].get();
+        if (!mesh) continue;
+        auto found = still_used.find(mesh);
+        if (found == still_used.end()) {
+            auto old = uploaded_.find(mesh);
+            found = still_used
+                        .emplace(mesh, old != uploaded_.end() ? std::move(old->second)
+                                                              : std::make_unique<GpuMesh>(*mesh))
+                        .first;
+        }
+        gpu_meshes_[m] = found->second.get();
+    }
+    uploaded_ = std::move(still_used);
+
+    if (settings_.skybox != skybox_id_) load_skybox(settings_.skybox);
+
+    programs_->reset_params();
+    const auto saved = settings_.params.find(programs_->plugin_id());
+    if (saved != settings_.params.end())
+        for (const auto &[id, value] : saved->second) programs_->set_param(id, value);
+}
+
+void Renderer::load_skybox(const std::string &id) {
+    skybox_id_ = id;
+    skybox_.reset();
+    if (id.empty()) return;
+    try {
+        const auto folder = assets_.resolve(ANI_ASSET_SKYBOX, id);
+        if (!folder) throw AssetError(assets_.searched(ANI_ASSET_SKYBOX, id));
+        std::array<Image, 6> faces;
+        for (size_t i = 0; i < 6; ++i) {
+            auto file = *folder / (std::string(kFaces[i]) + ".png");
+            if (!std::filesystem::exists(file)) file.replace_extension(".bmp");
+            faces[i] = load_image(file);
+        }
+        skybox_ = GpuTexture::cube_map(faces);
+    } catch (const std::exception &e) {
+        log_("skybox '" + id + "' cannot be loaded: " + e.what() + "; drawing without it");
+    }
+}
+
+const GpuTexture *Renderer::texture(const std::string &id) {
+    auto found = textures_.find(id);
+    if (found == textures_.end()) {
+        std::optional<GpuTexture> loaded;
+        try {
+            const auto file = assets_.resolve(ANI_ASSET_TEXTURE, id);
+            if (!file) throw AssetError(assets_.searched(ANI_ASSET_TEXTURE, id));
+            loaded = GpuTexture::image_2d(load_image(*file));
+        } catch (const std::exception &e) {
+            log_("texture '" + id + "' cannot be loaded: " + e.what() + "; drawing without it");
+        }
+        found = textures_.emplace(id, std::move(loaded)).first;
+    }
+    return found->second ? &*found->second : nullptr;
+}
+
+void Renderer::prepare_frame(const Frame &frame, int width, int height) {
+    world_matrices(models_, frame.models, world_);
+    const glm::dmat4 view = view_matrix(frame.camera);
+    const double aspect = height > 0 ? static_cast<double>(width) / height : 1.0;
+    const glm::dmat4 projection = projection_matrix(frame.camera.fov_degrees, aspect,
+                                                    options_.near_plane, options_.far_plane);
+    view_ = view;
+    view_projection_ = projection * view;
+    frustum_ = Frustum(view_projection_);
+    const glm::dvec3 light = frame.camera.position + glm::normalize(frame.camera.rotation) *
+                                                         glm::dvec3(options_.light_offset);
+    frame_uniforms_.view = glm::mat4(view);
+    frame_uniforms_.projection = glm::mat4(projection);
+    frame_uniforms_.camera_position = glm::vec3(frame.camera.position);
+    frame_uniforms_.light_position = glm::vec3(light);
+    frame_uniforms_.light_colour = options_.light_colour;
+    frame_uniforms_.ambient = options_.ambient;
+    frame_uniforms_.selected_tint = options_.selected_tint;
+}
+
+bool Renderer::visible(int model) const {
+    const Mesh &mesh = *meshes_[static_cast<size_t>(model)];
+    glm::dvec3 center;
+    double radius = 0.0;
+    transform_bounding_sphere(world_[static_cast<size_t>(model)], mesh.bound_center,
+                              mesh.bound_radius, center, radius);
+    return frustum_.may_see(center, radius);
+}
+
+void Renderer::bind(unsigned unit, unsigned target, unsigned name, std::size_t &counter) {
+    if (bound_[unit] == name) return;
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(target, name);
+    bound_[unit] = name;
+    ++counter;
+}
+
+void Renderer::draw_skybox() {
+    const LinkedProgram &program = programs_->get(ANI_SHADE_SKYBOX_PASS);
+    stats_.features_used |= ANI_SHADE_SKYBOX_PASS;
+    glUseProgram(program.shader->name());
+    ++stats_.program_binds;
+    bind(kSkyboxUnit, GL_TEXTURE_CUBE_MAP, skybox_->name(), stats_.cube_map_binds);
+    apply_uniforms(program, *programs_, frame_uniforms_, nullptr);
+    // The seed: drawn first without writing depth, so every model covers it.
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    skybox_cube_->draw();
+    glDepthMask(GL_TRUE);
+    stats_.skybox_drawn = true;
+}
+
+void Renderer::draw_model(int m, bool selected, uint32_t without) {
+    const Model &model = models_[static_cast<size_t>(m)];
+    const GpuTexture *image = model.texture.empty() ? nullptr : texture(model.texture);
+    const uint32_t features =
+        model_features(model, image != nullptr, settings_.cel_shading, selected) & ~without;
+    const LinkedProgram &program = programs_->get(features);
+    stats_.features_used |= features;
+    if (&program != current_program_) {
+        glUseProgram(program.shader->name());
+        ++stats_.program_binds;
+        current_program_ = &program;
+    }
+    if (features & ANI_SHADE_TEXTURE)
+        bind(kTextureUnit, GL_TEXTURE_2D, image->name(), stats_.texture_binds);
+    if (features & (ANI_SHADE_REFLECTION | ANI_SHADE_REFRACTION)) {
+        if (!skybox_ && !background_cube_)
+            background_cube_ = GpuTexture::solid_cube_map(options_.background);
+        const unsigned environment = skybox_ ? skybox_->name() : background_cube_->name();
+        bind(kSkyboxUnit, GL_TEXTURE_CUBE_MAP, environment, stats_.cube_map_binds);
+    }
+    const glm::dmat4 &world = world_[static_cast<size_t>(m)];
+    ModelUniforms &u = model_uniforms_;
+    u.model = glm::mat4(world);
+    u.normal_matrix = glm::mat3(glm::transpose(glm::inverse(glm::dmat3(world))));
+    u.kd = glm::vec3(model.material.kd);
+    u.ks = glm::vec3(model.material.ks);
+    u.shininess = static_cast<float>(model.material.shininess);
+    u.tint = static_cast<float>(model.tint);
+    u.reflectivity = static_cast<float>(model.reflectivity);
+    u.transparency = static_cast<float>(model.transparency);
+    u.refractive_index = static_cast<float>(model.refractive_index);
+    u.selected = selected;
+    apply_uniforms(program, *programs_, frame_uniforms_, &u);
+    gpu_meshes_[static_cast<size_t>(m)]->draw();
+}
+
+void Renderer::draw_transparent(int m, bool selected) {
+    const float transparency = static_cast<float>(models_[static_cast<size_t>(m)].transparency);
+    // Where a model is behind (stencil 1), it shows through: this one's colour without the
+    // skybox's refraction, blended as colour * (1 - transparency) + behind * transparency.
+    glEnable(GL_BLEND);
+    glBlendColor(0.0f, 0.0f, 0.0f, transparency);
+    glBlendFunc(GL_ONE_MINUS_CONSTANT_ALPHA, GL_CONSTANT_ALPHA);
+    glStencilFunc(GL_EQUAL, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    draw_model(m, selected, ANI_SHADE_REFRACTION);
+    // Where only the skybox is behind (stencil 0): the seed's refraction mapping, opaque, and
+    // marked so that nearer transparent models see this one behind them.
+    glDisable(GL_BLEND);
+    glStencilFunc(GL_EQUAL, 0, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+    draw_model(m, selected, 0);
+}
+
+void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::set<int> &selected) {
+    stats_ = RenderStats{};
+    bound_[0] = bound_[1] = 0;
+    current_program_ = nullptr;
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    glViewport(0, 0, target.width, target.height);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE); // open meshes (a floor) are seen from both sides
+    glDepthMask(GL_TRUE);
+    glStencilMask(0xFF);
+    glClearColor(options_.background.r, options_.background.g, options_.background.b, 1.0f);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    prepare_frame(frame, target.width, target.height);
+    if (skybox_) draw_skybox();
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    // Opaque models mark the stencil: what a transparent model drawn later has behind it.
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    transparent_.clear();
+    const int count = static_cast<int>(std::min(models_.size(), frame.models.size()));
+    for (int m = 0; m < count; ++m) {
+        if (!gpu_meshes_[static_cast<size_t>(m)]) continue;
+        if (!visible(m)) {
+            ++stats_.models_culled;
+            continue;
+        }
+        ++stats_.models_drawn;
+        if (models_[static_cast<size_t>(m)].transparency > 0.0) {
+            const double depth = (view_ * world_[static_cast<size_t>(m)][3]).z;
+            transparent_.emplace_back(depth, m);
+            continue;
+        }
+        draw_model(m, selected.count(m) > 0, 0);
+    }
+    // Transparent models last, the farthest first, each seen from outside only.
+    std::sort(transparent_.begin(), transparent_.end());
+    glEnable(GL_CULL_FACE);
+    for (const auto &[depth, m] : transparent_) draw_transparent(m, selected.count(m) > 0);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_BLEND);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+int Renderer::pick(const Frame &frame, int width, int height, int x, int y) {
+    if (!picking_) picking_ = std::make_unique<PickingPass>();
+    prepare_frame(frame, width, height);
+    if (!picking_->begin(width, height, x, y, glm::mat4(view_projection_))) return -1;
+    const int count = static_cast<int>(std::min(models_.size(), frame.models.size()));
+    for (int m = 0; m < count; ++m) {
+        const GpuMesh *mesh = gpu_meshes_[static_cast<size_t>(m)];
+        if (mesh && visible(m))
+            picking_->draw(*mesh, glm::mat4(world_[static_cast<size_t>(m)]),
+                           static_cast<std::uint32_t>(m) + 1);
+    }
+    const std::uint32_t id = picking_->finish();
+    return id == 0 ? -1 : static_cast<int>(id) - 1;
+}
+
+} // namespace animator

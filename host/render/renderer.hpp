@@ -1,0 +1,130 @@
+// The renderer: draws a frame of the timeline (every model's pose and the camera) with the
+// shading plugin's programs into any framebuffer, a window's or an off-screen one. Meshes are
+// uploaded once, textures and skyboxes loaded once by id; each draw asks for the program of
+// exactly the features a model uses, binds a texture or a cube map only when one is used, and
+// skips models outside the view (frustum culling). For the editor it also answers which model
+// is under a pixel and tints selected models yellow (seed, "Transforming the Camera and Model").
+//
+// Transparent models follow the seed (the skybox, refracted, blended by transparency) where only
+// the skybox is behind them, and beyond the seed let the models behind them show through: they
+// are drawn after the opaque ones, farthest first, and the stencil buffer says which pixels have
+// a model behind. A target without a stencil buffer gets the seed's look only.
+#pragma once
+
+#include "assets/asset_paths.hpp"
+#include "assets/mesh.hpp"
+#include "document/document.hpp"
+#include "render/framebuffer.hpp"
+#include "render/frustum.hpp"
+#include "render/gpu_mesh.hpp"
+#include "render/gpu_texture.hpp"
+#include "render/picking_pass.hpp"
+#include "render/shading_programs.hpp"
+#include "render/uniform_values.hpp"
+#include "timeline/timeline.hpp"
+
+#include <glm/mat4x4.hpp>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace animator {
+
+struct RenderOptions {
+    std::string shading = "shading.phong"; // the shading plugin; "" draws with the built-in Phong
+    glm::vec3 background{0.16f, 0.17f, 0.20f}; // behind everything when there is no skybox
+    // The light rides with the camera, above, left of and behind it in camera space, so a scene
+    // is lit wherever the camera looks (documents have no lights; the seed's had one fixed light).
+    glm::vec3 light_offset{-4.0f, 6.0f, 4.0f};
+    glm::vec3 light_colour{1.0f};
+    glm::vec3 ambient{0.2f};
+    glm::vec4 selected_tint{1.0f, 0.9f, 0.0f, 0.6f}; // yellow, and how much of it
+    double near_plane = 0.1, far_plane = 1000.0;
+};
+
+// What the last draw did, counted: the observable seam for tests (and a debug overlay) that a
+// scene pays only for what it uses.
+struct RenderStats {
+    std::size_t models_drawn = 0;
+    std::size_t models_culled = 0;
+    std::size_t program_binds = 0;
+    std::size_t texture_binds = 0;  // 2D textures bound
+    std::size_t cube_map_binds = 0; // skybox cube maps bound (the skybox, or reflection's)
+    bool skybox_drawn = false;
+    std::uint32_t features_used = 0; // the union of the feature sets asked of the shading plugin
+};
+
+class Renderer {
+  public:
+    using LogSink = ShadingPrograms::LogSink;
+
+    // Needs a current OpenGL 3.3 core context, with glad loaded, for its whole life. Throws
+    // PluginError when options.shading names no shading plugin. `log` gets warnings (a texture
+    // that cannot be loaded, a shader that does not compile); the default writes to stderr.
+    Renderer(PluginRegistry &plugins, const AssetPaths &assets, RenderOptions options = {},
+             LogSink log = {});
+    ~Renderer();
+    Renderer(const Renderer &) = delete;
+    Renderer &operator=(const Renderer &) = delete;
+
+    // The models, their materials and the settings to draw with. `meshes` has one per model
+    // (null for an empty or a missing mesh); each is uploaded once, and `document` is the file
+    // the document came from, or empty. Sets the shading plugin's parameters to the document's
+    // saved values (the others to their defaults); throws PluginError for a value it refuses.
+    void set_document(const Document &doc, const std::vector<std::shared_ptr<const Mesh>> &meshes);
+
+    // Draws `frame` into `target` (cleared first). `selected` holds model indices.
+    void draw(const Frame &frame, const RenderTarget &target, const std::set<int> &selected = {});
+
+    // The model drawn at pixel (x, y), from the top left of a target of this size, or -1.
+    int pick(const Frame &frame, int width, int height, int x, int y);
+
+    const RenderStats &stats() const { return stats_; }
+    ShadingPrograms &programs() { return *programs_; }
+    const RenderOptions &options() const { return options_; }
+
+  private:
+    void prepare_frame(const Frame &frame, int width, int height);
+    bool visible(int model) const;
+    const GpuTexture *texture(const std::string &id);
+    void load_skybox(const std::string &id);
+    void draw_skybox();
+    // Draws model m with the features it uses, less `without`.
+    void draw_model(int m, bool selected, uint32_t without);
+    void draw_transparent(int m, bool selected);
+    void bind(unsigned unit, unsigned target, unsigned name, std::size_t &counter);
+
+    const AssetPaths &assets_;
+    RenderOptions options_;
+    LogSink log_;
+    std::unique_ptr<ShadingPrograms> programs_;
+
+    std::vector<Model> models_;
+    Settings settings_;
+    std::vector<std::shared_ptr<const Mesh>> meshes_; // per model
+    std::vector<const GpuMesh *> gpu_meshes_;         // per model, null without a mesh
+    std::map<const Mesh *, std::unique_ptr<GpuMesh>> uploaded_;
+    std::map<std::string, std::optional<GpuTexture>> textures_; // by id; empty when unloadable
+    std::string skybox_id_;
+    std::optional<GpuTexture> skybox_;
+    std::optional<GpuTexture> background_cube_; // reflection and refraction without a skybox
+    std::unique_ptr<GpuMesh> skybox_cube_;
+    std::unique_ptr<PickingPass> picking_;
+
+    // Per frame, kept to reuse their storage.
+    std::vector<glm::dmat4> world_;
+    glm::dmat4 view_{1.0}, view_projection_{1.0};
+    Frustum frustum_{glm::dmat4(1.0)};
+    FrameUniforms frame_uniforms_;
+    ModelUniforms model_uniforms_;
+    unsigned bound_[2] = {0, 0}; // the texture names bound on the two units this frame
+    const LinkedProgram *current_program_ = nullptr;
+    std::vector<std::pair<double, int>> transparent_; // (view-space z, model): far ones first
+    RenderStats stats_;
+};
+
+} // namespace animator

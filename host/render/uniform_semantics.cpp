@@ -1,0 +1,60 @@
+#include "render/uniform_semantics.hpp"
+
+#include <utility>
+
+namespace animator {
+
+namespace {
+
+struct Known {
+    const char *name;
+    UniformSemantic semantic;
+    ani_uniform_type type;
+};
+
+constexpr Known kKnown[] = {
+    {"model", UniformSemantic::Model, ANI_UNIFORM_MAT4},
+    {"view", UniformSemantic::View, ANI_UNIFORM_MAT4},
+    {"projection", UniformSemantic::Projection, ANI_UNIFORM_MAT4},
+    {"normal_matrix", UniformSemantic::NormalMatrix, ANI_UNIFORM_MAT3},
+    {"camera_position", UniformSemantic::CameraPosition, ANI_UNIFORM_VEC3},
+    {"light_position", UniformSemantic::LightPosition, ANI_UNIFORM_VEC3},
+    {"light_colour", UniformSemantic::LightColour, ANI_UNIFORM_VEC3},
+    {"ambient", UniformSemantic::Ambient, ANI_UNIFORM_VEC3},
+    {"kd", UniformSemantic::Kd, ANI_UNIFORM_VEC3},
+    {"ks", UniformSemantic::Ks, ANI_UNIFORM_VEC3},
+    {"shininess", UniformSemantic::Shininess, ANI_UNIFORM_FLOAT},
+    {"tint", UniformSemantic::Tint, ANI_UNIFORM_FLOAT},
+    {"reflectivity", UniformSemantic::Reflectivity, ANI_UNIFORM_FLOAT},
+    {"transparency", UniformSemantic::Transparency, ANI_UNIFORM_FLOAT},
+    {"refractive_index", UniformSemantic::RefractiveIndex, ANI_UNIFORM_FLOAT},
+    {"texture", UniformSemantic::Texture, ANI_UNIFORM_SAMPLER_2D},
+    {"skybox", UniformSemantic::Skybox, ANI_UNIFORM_SAMPLER_CUBE},
+    {"selected_tint", UniformSemantic::SelectedTint, ANI_UNIFORM_VEC4},
+};
+
+constexpr const char kParamPrefix[] = "param:";
+
+} // namespace
+
+std::optional<UniformSemantic> parse_semantic(const std::string &text, std::string &param_id) {
+    const std::string prefix = kParamPrefix;
+    if (text.size() > prefix.size() && text.compare(0, prefix.size(), prefix) == 0) {
+        param_id = text.substr(prefix.size());
+        return UniformSemantic::Param;
+    }
+    for (const Known &k : kKnown)
+        if (text == k.name) return k.semantic;
+    return std::nullopt;
+}
+
+bool semantic_accepts(UniformSemantic semantic, ani_uniform_type type) {
+    if (semantic == UniformSemantic::Param)
+        return type == ANI_UNIFORM_FLOAT || type == ANI_UNIFORM_INT || type == ANI_UNIFORM_VEC3 ||
+               type == ANI_UNIFORM_VEC4;
+    for (const Known &k : kKnown)
+        if (k.semantic == semantic) return k.type == type;
+    return false;
+}
+
+} // namespace animator

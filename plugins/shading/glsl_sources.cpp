@@ -1,0 +1,150 @@
+#include "glsl_sources.hpp"
+
+namespace shading {
+
+// Shading happens in world space, so the reflected and refracted rays can sample the skybox
+// directly (the seed computes them in eye space and transforms them back; the result is the same
+// ray).
+const char *const kModelVertexBody = R"glsl(
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec2 uv;
+
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+uniform mat3 normal_matrix;
+
+out vec3 world_position;
+out vec3 world_normal;
+out vec2 texcoord;
+
+void main() {
+    vec4 world = model * vec4(position, 1.0);
+    world_position = world.xyz;
+    world_normal = normal_matrix * normal;
+    texcoord = uv;
+    gl_Position = projection * view * world;
+}
+)glsl";
+
+const char *const kModelFragmentBody = R"glsl(
+in vec3 world_position;
+in vec3 world_normal;
+in vec2 texcoord;
+
+uniform vec3 camera_position;
+uniform vec3 light_position;
+uniform vec3 light_colour;
+uniform vec3 ambient;
+uniform vec3 kd;
+uniform vec3 ks;
+uniform float shininess;
+#ifdef TEXTURE
+uniform sampler2D model_texture;
+uniform float tint;
+#endif
+#if defined(REFLECTION) || defined(REFRACTION)
+uniform samplerCube skybox;
+#endif
+#ifdef REFLECTION
+uniform float reflectivity;
+#endif
+#ifdef REFRACTION
+uniform float transparency;
+uniform float refractive_index;
+#endif
+#ifdef CEL
+uniform int cel_bands;
+uniform int cel_outline;
+uniform float cel_outline_width;
+uniform vec4 cel_outline_colour;
+#endif
+#ifdef SELECTED
+uniform vec4 selected_tint;
+#endif
+
+out vec4 colour;
+
+#ifdef CEL
+// The seed's step10 with `bands` steps: n < i / bands gives i / bands, so 0 gives the first band
+// and nothing is ever black.
+float cel_step(float n, float bands) {
+    return min(floor(n * bands) + 1.0, bands) / bands;
+}
+#endif
+
+void main() {
+    vec3 n = normalize(world_normal);
+    if (!gl_FrontFacing) n = -n; // open meshes (a floor) are lit from either side
+    vec3 to_eye = normalize(camera_position - world_position);
+    vec3 to_light = normalize(light_position - world_position);
+
+    vec3 base = kd;
+#ifdef TEXTURE
+    base = mix(texture(model_texture, texcoord).rgb, kd, tint);
+#endif
+
+    float diffuse = max(dot(n, to_light), 0.0);
+    vec3 c = ambient * base + light_colour * base * diffuse;
+    if (shininess < SHININESS_MAX && diffuse > 0.0) {
+        float facing = max(dot(reflect(-to_light, n), to_eye), 0.0);
+        c += light_colour * ks * pow(max(facing, 1e-8), shininess);
+    }
+
+#ifdef REFLECTION
+    c = mix(c, texture(skybox, reflect(-to_eye, n)).rgb, reflectivity);
+#endif
+#ifdef REFRACTION
+    vec3 refracted = refract(-to_eye, n, 1.0 / refractive_index);
+    if (dot(refracted, refracted) == 0.0) refracted = reflect(-to_eye, n); // total internal reflection
+    c = mix(c, texture(skybox, refracted).rgb, transparency);
+#endif
+
+#ifdef CEL
+    float bands = float(cel_bands);
+    c = vec3(cel_step(c.r, bands), cel_step(c.g, bands), cel_step(c.b, bands));
+    if (cel_outline != 0) {
+        // Near a smooth surface's silhouette the normal turns away from the eye: within
+        // `cel_outline_width` pixels of where it would be perpendicular, draw the outline.
+        float facing = dot(n, to_eye);
+        if (facing < cel_outline_width * fwidth(facing)) c = cel_outline_colour.rgb;
+    }
+#endif
+
+#ifdef SELECTED
+    c = mix(c, selected_tint.rgb, selected_tint.a);
+#endif
+    colour = vec4(c, 1.0);
+}
+)glsl";
+
+// The seed's skybox: a cube around the camera turned by the camera's rotation only, so its sides
+// seem infinitely far away. The host draws it first, without depth, so everything covers it.
+const char *const kSkyboxVertexBody = R"glsl(
+layout(location = 0) in vec3 position;
+
+uniform mat4 view;
+uniform mat4 projection;
+
+out vec3 direction;
+
+void main() {
+    direction = position;
+    gl_Position = projection * mat4(mat3(view)) * vec4(position, 1.0);
+}
+)glsl";
+
+const char *const kSkyboxFragmentBody = R"glsl(
+in vec3 direction;
+
+uniform samplerCube skybox;
+
+out vec4 colour;
+
+void main() {
+    colour = vec4(texture(skybox, direction).rgb, 1.0);
+}
+)glsl";
+
+} // namespace shading

@@ -1,0 +1,83 @@
+#include "phong_program.hpp"
+
+#include "glsl_sources.hpp"
+
+#include <cstdio>
+
+namespace shading {
+
+namespace {
+
+std::string header(uint32_t features) {
+    std::string h = "#version 330 core\n";
+    char max_line[64];
+    (void)std::snprintf(max_line, sizeof max_line, "#define SHININESS_MAX %.1f\n",
+                        ANI_SHININESS_MAX);
+    h += max_line;
+    if (features & ANI_SHADE_TEXTURE) h += "#define TEXTURE 1\n";
+    if (features & ANI_SHADE_REFLECTION) h += "#define REFLECTION 1\n";
+    if (features & ANI_SHADE_REFRACTION) h += "#define REFRACTION 1\n";
+    if (features & ANI_SHADE_CEL) h += "#define CEL 1\n";
+    if (features & ANI_SHADE_SELECTED) h += "#define SELECTED 1\n";
+    return h;
+}
+
+void add(std::vector<ani_uniform_desc> &uniforms, const char *name, ani_uniform_type type,
+         const char *semantic) {
+    uniforms.push_back({name, type, semantic});
+}
+
+} // namespace
+
+std::string check_features(uint32_t features) {
+    if (features & ~kKnownFeatures) return "unknown shading feature bits";
+    if ((features & ANI_SHADE_SKYBOX_PASS) && features != ANI_SHADE_SKYBOX_PASS)
+        return "the skybox pass takes no other feature";
+    return "";
+}
+
+ProgramSource build_program(uint32_t features) {
+    ProgramSource p;
+    const std::string h = header(features);
+    auto &u = p.uniforms;
+    add(u, "view", ANI_UNIFORM_MAT4, "view");
+    add(u, "projection", ANI_UNIFORM_MAT4, "projection");
+    if (features == ANI_SHADE_SKYBOX_PASS) {
+        p.vertex = h + kSkyboxVertexBody;
+        p.fragment = h + kSkyboxFragmentBody;
+        add(u, "skybox", ANI_UNIFORM_SAMPLER_CUBE, "skybox");
+        return p;
+    }
+    p.vertex = h + kModelVertexBody;
+    p.fragment = h + kModelFragmentBody;
+    add(u, "model", ANI_UNIFORM_MAT4, "model");
+    add(u, "normal_matrix", ANI_UNIFORM_MAT3, "normal_matrix");
+    add(u, "camera_position", ANI_UNIFORM_VEC3, "camera_position");
+    add(u, "light_position", ANI_UNIFORM_VEC3, "light_position");
+    add(u, "light_colour", ANI_UNIFORM_VEC3, "light_colour");
+    add(u, "ambient", ANI_UNIFORM_VEC3, "ambient");
+    add(u, "kd", ANI_UNIFORM_VEC3, "kd");
+    add(u, "ks", ANI_UNIFORM_VEC3, "ks");
+    add(u, "shininess", ANI_UNIFORM_FLOAT, "shininess");
+    if (features & ANI_SHADE_TEXTURE) {
+        add(u, "model_texture", ANI_UNIFORM_SAMPLER_2D, "texture");
+        add(u, "tint", ANI_UNIFORM_FLOAT, "tint");
+    }
+    if (features & (ANI_SHADE_REFLECTION | ANI_SHADE_REFRACTION))
+        add(u, "skybox", ANI_UNIFORM_SAMPLER_CUBE, "skybox");
+    if (features & ANI_SHADE_REFLECTION) add(u, "reflectivity", ANI_UNIFORM_FLOAT, "reflectivity");
+    if (features & ANI_SHADE_REFRACTION) {
+        add(u, "transparency", ANI_UNIFORM_FLOAT, "transparency");
+        add(u, "refractive_index", ANI_UNIFORM_FLOAT, "refractive_index");
+    }
+    if (features & ANI_SHADE_CEL) {
+        add(u, "cel_bands", ANI_UNIFORM_INT, "param:cel_bands");
+        add(u, "cel_outline", ANI_UNIFORM_INT, "param:cel_outline");
+        add(u, "cel_outline_width", ANI_UNIFORM_FLOAT, "param:cel_outline_width");
+        add(u, "cel_outline_colour", ANI_UNIFORM_VEC4, "param:cel_outline_colour");
+    }
+    if (features & ANI_SHADE_SELECTED) add(u, "selected_tint", ANI_UNIFORM_VEC4, "selected_tint");
+    return p;
+}
+
+} // namespace shading

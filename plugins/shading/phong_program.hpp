@@ -1,0 +1,31 @@
+// The Phong shading model's program for a set of features: GLSL 330 core source with one
+// `#define` per feature, and exactly the uniforms those features read.
+#pragma once
+
+#include <animator/shading.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace shading {
+
+// Every feature bit the plugin knows.
+constexpr uint32_t kKnownFeatures = ANI_SHADE_TEXTURE | ANI_SHADE_REFLECTION |
+                                    ANI_SHADE_REFRACTION | ANI_SHADE_CEL | ANI_SHADE_SELECTED |
+                                    ANI_SHADE_SKYBOX_PASS;
+
+struct ProgramSource {
+    std::string vertex;
+    std::string fragment;
+    std::vector<ani_uniform_desc> uniforms; // names and semantics are string literals
+};
+
+// "" when `features` is a set this model can draw, else why not (an unknown bit, or the skybox
+// pass combined with a model feature).
+std::string check_features(uint32_t features);
+
+// The program for a valid feature set (check_features first).
+ProgramSource build_program(uint32_t features);
+
+} // namespace shading

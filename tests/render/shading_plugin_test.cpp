@@ -1,0 +1,94 @@
+// The shading.phong plugin: its descriptor and parameters, the programs it hands over for every
+// feature set, and that each of them compiles and links on Mesa.
+#include "render_support.hpp"
+
+#include "render/shading_programs.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+
+using namespace animator;
+using namespace animator::test;
+
+namespace {
+constexpr uint32_t kModelFeatures = ANI_SHADE_TEXTURE | ANI_SHADE_REFLECTION |
+                                    ANI_SHADE_REFRACTION | ANI_SHADE_CEL | ANI_SHADE_SELECTED;
+}
+
+TEST_CASE("shading.phong declares its cel parameters") {
+    const PluginInfo *info = environment().plugins.find("shading.phong");
+    REQUIRE(info);
+    CHECK(info->kind == ANI_KIND_SHADING);
+    PluginInstance instance(*info, environment().plugins.host());
+    CHECK(instance.get_param("cel_bands")[0] == 10.0); // the seed's step10
+    CHECK(instance.get_param("cel_outline")[0] == 0.0);
+    CHECK(instance.find_param("cel_outline_width"));
+    CHECK(instance.find_param("cel_outline_colour")->kind == ANI_PARAM_COLOUR);
+    instance.set_param("cel_bands", {4, 0, 0, 0});
+    CHECK(instance.get_param("cel_bands")[0] == 4.0);
+    CHECK_THROWS_AS(instance.set_param("cel_bands", {1, 0, 0, 0}), PluginError); // below 2
+}
+
+TEST_CASE("shading.phong hands over a program with exactly the uniforms of each feature set") {
+    const PluginInfo *info = environment().plugins.find("shading.phong");
+    REQUIRE(info);
+    PluginInstance instance(*info, environment().plugins.host());
+    const auto &api = instance.api<ani_shading_api>();
+    auto program_for = [&](uint32_t features, ani_shader_program &p) {
+        p = ani_shader_program{};
+        p.struct_size = sizeof p;
+        ani_status status{};
+        return api.get_program(instance.handle(), features, &p, &status);
+    };
+    auto has = [](const ani_shader_program &p, const char *semantic) {
+        for (uint32_t i = 0; i < p.uniform_count; ++i)
+            if (std::strcmp(p.uniforms[i].semantic, semantic) == 0) return true;
+        return false;
+    };
+    ani_shader_program plain{};
+    REQUIRE(program_for(0, plain) == ANI_OK);
+    CHECK(has(plain, "kd"));
+    CHECK(has(plain, "shininess"));
+    for (const char *unused : {"texture", "skybox", "tint", "reflectivity", "transparency",
+                               "selected_tint", "param:cel_bands"})
+        CHECK_FALSE(has(plain, unused));
+    CHECK(std::strstr(plain.fragment_source, "#define TEXTURE") == nullptr);
+
+    ani_shader_program all{};
+    REQUIRE(program_for(kModelFeatures, all) == ANI_OK);
+    for (const char *used :
+         {"texture", "skybox", "tint", "reflectivity", "transparency", "refractive_index",
+          "selected_tint", "param:cel_bands", "param:cel_outline"})
+        CHECK(has(all, used));
+
+    ani_shader_program sky{};
+    REQUIRE(program_for(ANI_SHADE_SKYBOX_PASS, sky) == ANI_OK);
+    CHECK(has(sky, "skybox"));
+    CHECK_FALSE(has(sky, "kd"));
+
+    ani_shader_program refused{};
+    CHECK(program_for(ANI_SHADE_SKYBOX_PASS | ANI_SHADE_TEXTURE, refused) ==
+          ANI_ERR_INVALID_ARGUMENT);
+    CHECK(program_for(1u << 6, refused) == ANI_ERR_INVALID_ARGUMENT);
+}
+
+TEST_CASE("every shading.phong program compiles and links on Mesa, with every uniform filled") {
+    gl_context();
+    const PluginInfo *info = environment().plugins.find("shading.phong");
+    REQUIRE(info);
+    std::vector<std::string> log;
+    ShadingPrograms programs(std::make_unique<PluginInstance>(*info, environment().plugins.host()),
+                             [&](const std::string &m) { log.push_back(m); });
+    for (uint32_t features = 0; features <= kModelFeatures; ++features) {
+        CAPTURE(feature_names(features));
+        const LinkedProgram &p = programs.get(features);
+        CHECK_FALSE(p.built_in);
+    }
+    CHECK_FALSE(programs.get(ANI_SHADE_SKYBOX_PASS).built_in);
+    for (const std::string &line : log) UNSCOPED_INFO(line);
+    CHECK(log.empty());
+    CHECK(programs.fallbacks() == 0);
+    CHECK(feature_names(ANI_SHADE_TEXTURE | ANI_SHADE_CEL) == "texture|cel");
+    CHECK(feature_names(0) == "none");
+}

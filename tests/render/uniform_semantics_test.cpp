@@ -1,0 +1,48 @@
+// The SDK's uniform semantics, as the host reads them.
+#include "render/uniform_semantics.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace animator;
+
+TEST_CASE("every semantic of shading.h is known with its type, and param:<id> names a parameter") {
+    const std::pair<const char *, ani_uniform_type> known[] = {
+        {"model", ANI_UNIFORM_MAT4},
+        {"view", ANI_UNIFORM_MAT4},
+        {"projection", ANI_UNIFORM_MAT4},
+        {"normal_matrix", ANI_UNIFORM_MAT3},
+        {"camera_position", ANI_UNIFORM_VEC3},
+        {"light_position", ANI_UNIFORM_VEC3},
+        {"light_colour", ANI_UNIFORM_VEC3},
+        {"ambient", ANI_UNIFORM_VEC3},
+        {"kd", ANI_UNIFORM_VEC3},
+        {"ks", ANI_UNIFORM_VEC3},
+        {"shininess", ANI_UNIFORM_FLOAT},
+        {"tint", ANI_UNIFORM_FLOAT},
+        {"reflectivity", ANI_UNIFORM_FLOAT},
+        {"transparency", ANI_UNIFORM_FLOAT},
+        {"refractive_index", ANI_UNIFORM_FLOAT},
+        {"texture", ANI_UNIFORM_SAMPLER_2D},
+        {"skybox", ANI_UNIFORM_SAMPLER_CUBE},
+        {"selected_tint", ANI_UNIFORM_VEC4},
+    };
+    for (const auto &[name, type] : known) {
+        CAPTURE(name);
+        std::string param;
+        const auto semantic = parse_semantic(name, param);
+        REQUIRE(semantic);
+        CHECK(semantic_accepts(*semantic, type));
+        CHECK_FALSE(semantic_accepts(*semantic, type == ANI_UNIFORM_INT ? ANI_UNIFORM_FLOAT
+                                                                        : ANI_UNIFORM_INT));
+        CHECK(param.empty());
+    }
+    std::string param;
+    CHECK(parse_semantic("param:cel_bands", param) == UniformSemantic::Param);
+    CHECK(param == "cel_bands");
+    for (auto type : {ANI_UNIFORM_FLOAT, ANI_UNIFORM_INT, ANI_UNIFORM_VEC3, ANI_UNIFORM_VEC4})
+        CHECK(semantic_accepts(UniformSemantic::Param, type));
+    CHECK_FALSE(semantic_accepts(UniformSemantic::Param, ANI_UNIFORM_MAT4));
+    CHECK_FALSE(parse_semantic("colour", param));
+    CHECK_FALSE(parse_semantic("param:", param));
+    CHECK_FALSE(parse_semantic("", param));
+}
