@@ -272,6 +272,8 @@ class EventBake {
                     body.resume_at = next_key(i, t_begin_);
                 } else if (free_now) {
                     activate(body, t_begin_, start_of(i, t_begin_));
+                    // Stopped by a contact in an earlier bake (Dynamics off): it stays stopped.
+                    if (!body.dynamics && m.start.motion == ANI_MOTION_REST) stop(body);
                 } else {
                     body.mode = Body::Mode::kKeyed;
                     body.keyed_from = t_begin_;

@@ -336,3 +336,21 @@ TEST_CASE("two spheres of unequal mass meeting obliquely and slowly under gravit
     CHECK(glm::length(f.models[1].velocity - (expect_b + later)) < 1e-12);
     CHECK(timeline->events()[0].speed == Approx(unb - una).epsilon(1e-10)); // closing along n
 }
+
+TEST_CASE("a model without Dynamics stopped by a contact stays stopped in a bake resumed after it") {
+    // A stone (Dynamics off, Gravity on) falls onto a static floor and stops there; a bake
+    // resumed after the landing must not let it fall again.
+    Document doc;
+    doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, 5.0));
+    doc.add_model(model("stone", "sphere", false, true), placed({0, 5, 0}, 0.5));
+    auto whole = timeline_of(doc), parts = timeline_of(doc);
+    whole->bake(3.0);
+    const double landing = std::sqrt(2.0 * (5.0 - 0.5 * sphere_radius()) / G);
+    parts->bake(landing + 0.1);
+    parts->bake(3.0);
+    for (double t : {landing + 0.05, 1.5, 2.9}) {
+        CAPTURE(t);
+        CHECK(whole->evaluate(t).models[1].center.y == Approx(0.5 * sphere_radius()).epsilon(1e-9));
+        CHECK(parts->evaluate(t).models[1].center.y == whole->evaluate(t).models[1].center.y);
+    }
+}

@@ -7,7 +7,8 @@
  * time by destroying one instance and creating another.
  *
  * Between events a segment is a closed form: center(t) = p0 + v0 (t - t0) + a (t - t0)^2 / 2.
- * An analytic backend reports one segment per free flight; a stepping backend one per step.
+ * An analytic backend reports one segment per free flight; a stepping backend one per step,
+ * or one per stretch of steps that lie on the same parabola.
  * Times here are in seconds.
  */
 #ifndef ANIMATOR_SDK_PHYSICS_H

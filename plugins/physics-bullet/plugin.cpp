@@ -1,0 +1,199 @@
+// The Bullet physics backend (id physics.bullet): the scene in a btDiscreteDynamicsWorld stepped
+// at a fixed step, configured to follow the seed's model as closely as Bullet can
+// (docs/physics-bullet.md). Used to cross-check physics.custom, and offered as a second engine.
+#include "bullet_bake.hpp"
+
+#include <animator/physics.h>
+#include <animator/plugin_cpp.hpp>
+
+#include <cmath>
+#include <mutex>
+#include <string>
+
+namespace {
+
+constexpr char kPluginId[] = "physics.bullet";
+
+const ani_param_descriptor kParams[] = {
+    {sizeof(ani_param_descriptor),
+     "step",
+     "Time step",
+     "Bullet's fixed time step in seconds. Smaller is more accurate and slower; the error of a "
+     "bounce or an exchange shrinks about in proportion to it.",
+     ANI_PARAM_TIME,
+     1e-5,
+     0.1,
+     {{1.0 / 240.0, 0.0, 0.0, 0.0}},
+     0.0,
+     nullptr,
+     0},
+    {sizeof(ani_param_descriptor),
+     "solver_iterations",
+     "Solver iterations",
+     "Iterations of Bullet's sequential impulse solver per step: more resolve simultaneous "
+     "contacts (a Newton's cradle) more exactly.",
+     ANI_PARAM_INT,
+     1.0,
+     1000.0,
+     {{10.0, 0.0, 0.0, 0.0}},
+     1.0,
+     nullptr,
+     0},
+    {sizeof(ani_param_descriptor),
+     "ccd",
+     "Continuous collision detection",
+     "Sweeps fast bodies over each step so they cannot pass through thin models (they stop at the "
+     "contact, losing the rest of that step).",
+     ANI_PARAM_BOOL,
+     0.0,
+     1.0,
+     {{1.0, 0.0, 0.0, 0.0}},
+     0.0,
+     nullptr,
+     0},
+    {sizeof(ani_param_descriptor),
+     "rotate_on_contact",
+     "Rotate on contact",
+     "Beyond the seed: full rigid-body rotation of models with Dynamics once their keys end. Off, "
+     "models turn only as their keys say.",
+     ANI_PARAM_BOOL,
+     0.0,
+     1.0,
+     {{0.0, 0.0, 0.0, 0.0}},
+     0.0,
+     nullptr,
+     0},
+    {sizeof(ani_param_descriptor),
+     "friction",
+     "Friction",
+     "Coulomb friction coefficient of every contact (0: the seed's frictionless contacts). Without "
+     "rotation a model slides to a stop; with it, it rolls.",
+     ANI_PARAM_FLOAT,
+     0.0,
+     2.0,
+     {{0.0, 0.0, 0.0, 0.0}},
+     0.01,
+     nullptr,
+     0},
+    {sizeof(ani_param_descriptor),
+     "restitution",
+     "Restitution",
+     "Coefficient of restitution of every contact (1: the seed's elastic bounces).",
+     ANI_PARAM_FLOAT,
+     0.0,
+     1.0,
+     {{1.0, 0.0, 0.0, 0.0}},
+     0.01,
+     nullptr,
+     0},
+};
+
+struct Instance {
+    const ani_host *host = nullptr;
+    ani::ParamStore params{kParams, sizeof(kParams) / sizeof(kParams[0])};
+};
+
+void *create(const ani_host *host, ani_status *status) {
+    Instance *self = nullptr;
+    ani::guarded(status, [&] {
+        self = new Instance();
+        self->host = host;
+    });
+    return self;
+}
+
+void destroy(void *instance) {
+    delete static_cast<Instance *>(instance);
+}
+
+ani_status_code get_param(void *instance, const char *id, ani_param_value *out,
+                          ani_status *status) {
+    return static_cast<Instance *>(instance)->params.get(id, out, status);
+}
+
+ani_status_code set_param(void *instance, const char *id, const ani_param_value *value,
+                          ani_status *status) {
+    return ani::guarded(status, [&] {
+        if (!value) throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "no value");
+        const double v = value->value[0];
+        if (id && std::string(id) == "step" && !(std::isfinite(v) && v > 0.0))
+            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "the time step must be positive");
+        ani_status inner{};
+        if (static_cast<Instance *>(instance)->params.set(id, value, &inner) != ANI_OK)
+            throw ani::Failure(static_cast<ani_status_code>(inner.code), inner.message);
+    });
+}
+
+ani_status_code bake(void *instance, const ani_physics_scene *scene, double t_begin, double t_end,
+                     const ani_bake_sink *sink, ani_status *status) {
+    return ani::guarded(status, [&] {
+        if (!scene || !sink || !sink->segment || !scene->evaluate_keyed)
+            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT,
+                               "bake needs a scene, a sink and evaluate_keyed");
+        if (!(t_begin <= t_end) || !std::isfinite(t_begin) || !std::isfinite(t_end))
+            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT,
+                               "bake needs finite times with t_begin <= t_end");
+        if (!std::isfinite(scene->gravity))
+            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "gravity is not finite");
+        if (sink->progress && !sink->progress(sink->context, 0.0))
+            throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
+        const Instance &self = *static_cast<Instance *>(instance);
+        physics_bullet::BakeOptions options;
+        options.step = self.params.number("step");
+        options.solver_iterations = static_cast<int>(self.params.number("solver_iterations"));
+        options.ccd = self.params.number("ccd") != 0.0;
+        options.rotate_on_contact = self.params.number("rotate_on_contact") != 0.0;
+        options.friction = self.params.number("friction");
+        options.restitution = self.params.number("restitution");
+        {
+            // Bullet keeps global statistics counters (gNumClampedCcdMotions,
+            // gNumSplitImpulseRecoveries, ...) that are not atomic: bakes of different instances
+            // take turns.
+            static std::mutex bullet;
+            std::lock_guard<std::mutex> lock(bullet);
+            physics_bullet::bake_scene(*scene, t_begin, t_end, *sink, self.host, options);
+        }
+        if (sink->progress && !sink->progress(sink->context, 1.0))
+            throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
+    });
+}
+
+const ani_physics_api api = {
+    sizeof(ani_physics_api),
+    {sizeof(ani_instance_api), create, destroy, get_param, set_param},
+    bake,
+};
+
+const ani_plugin_descriptor descriptor = {
+    sizeof(ani_plugin_descriptor),
+    kPluginId,
+    ANI_KIND_PHYSICS,
+    "Bullet",
+    {0, 1, 0},
+    "Bullet 3 (double precision) at a fixed time step, set up to follow the seed's model: elastic, "
+    "frictionless contacts, keyed models as kinematic bodies, no rotation from contacts unless "
+    "asked. A second engine to cross-check the exact one.",
+    kParams,
+    sizeof(kParams) / sizeof(kParams[0]),
+    &api,
+};
+
+ani_status_code init(const ani_host *, ani_status *status) {
+    return ani::set_status(status, ANI_OK, "");
+}
+void deinit() {}
+uint32_t count() {
+    return 1;
+}
+const ani_plugin_descriptor *get(uint32_t index) {
+    return index == 0 ? &descriptor : nullptr;
+}
+
+} // namespace
+
+extern "C" {
+ANI_DECLARE_ENTRY;
+const ani_plugin_entry animator_plugin_entry = {
+    sizeof(ani_plugin_entry), {ANI_ABI_MAJOR, ANI_ABI_MINOR, 0}, init, deinit, count, get,
+};
+}

@@ -1,0 +1,283 @@
+#include "scenes.hpp"
+
+#include "bullet_support.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace animator::bullet_test {
+
+namespace {
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+glm::dvec3 vec(const ani_vec3 &v) {
+    return {v.x, v.y, v.z};
+}
+
+Document no_gravity() {
+    Document doc;
+    Settings s = doc.settings();
+    s.gravity = 0.0;
+    doc.set_settings(s);
+    return doc;
+}
+
+// Bakes and times.
+template <class F> Measured timed_bake(Timeline &t, double until, F &&then) {
+    Measured m;
+    const auto start = std::chrono::steady_clock::now();
+    t.bake(until);
+    m.ms = milliseconds_since(start);
+    m.events = t.events().size();
+    for (size_t k = 0; k < t.document().models().size(); ++k)
+        m.segments += t.segments(static_cast<int>(k)).size();
+    then(m);
+    return m;
+}
+
+// Where Bullet's steps fall relative to a contact decides much of its error at that contact: each
+// scene is baked at four phases (its contact moved by 0, 0.29, 0.58 and 0.87 of a step) and the
+// worst is kept.
+constexpr int kPhases = 4;
+constexpr double kPhase = 0.29;
+
+template <class F> Measured worst_phase(F &&bake_at_phase) {
+    Measured worst;
+    for (int j = 0; j < kPhases; ++j) {
+        const Measured m = bake_at_phase(kPhase * j);
+        worst.error = std::max(worst.error, m.error);
+        worst.error2 = std::max(worst.error2, m.error2);
+        worst.ms += m.ms;
+        worst.events = std::max(worst.events, m.events);
+        worst.segments = std::max(worst.segments, m.segments);
+    }
+    return worst;
+}
+
+} // namespace
+
+Measured drop_on_plane(double dt) {
+    return worst_phase([&](double phase) {
+        const double r = 0.5 * unit_sphere_radius();
+        // About 3 m, placed so the ball reaches the floor `phase` of a step later.
+        const double first = std::sqrt(2.0 * (3.0 - r) / G) + phase * dt, period = 2.0 * first;
+        const double h = r + 0.5 * G * first * first;
+        Document doc;
+        doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, glm::dvec3(10.0)));
+        doc.add_model(model("ball", "sphere", true, true), placed({0.3, h, 0.2}, glm::dvec3(0.5)));
+        auto t = timeline_of(with_param(doc, "step", dt));
+        return timed_bake(*t, first + 4.5 * period, [&](Measured &m) {
+            // Each apex: the vertex of a free segment's parabola, where it lies within the segment.
+            for (const ani_motion_segment &s : t->segments(1)) {
+                if (s.motion != ANI_MOTION_FREE || s.a.y == 0.0) continue;
+                const double at = -s.v0.y / s.a.y;
+                if (at <= 1e-9 || at > s.t1 - s.t0) continue;
+                const double apex = s.p0.y + s.v0.y * at + 0.5 * s.a.y * at * at;
+                m.error = std::max(m.error, std::abs(apex - h) / h);
+            }
+            const auto &events = t->events();
+            if (events.size() >= 2) {
+                const double mean =
+                    (events.back().t - events.front().t) / static_cast<double>(events.size() - 1);
+                m.error2 = std::abs(mean - period) / period;
+            } else {
+                m.error2 = 1.0;
+            }
+        });
+    });
+}
+
+Measured two_spheres(double dt, double offset_in_radii, double u1, double u2) {
+    return worst_phase([&](double phase) {
+        const double r = 0.5 * unit_sphere_radius(), m1 = 1.0, m2 = 3.0;
+        const double b = offset_in_radii * r;
+        Document doc = no_gravity();
+        Model a = model("a", "sphere", true, false), c = model("b", "sphere", true, false);
+        a.mass = m1;
+        c.mass = m2;
+        a.initial_velocity = {u1, 0, 0};
+        c.initial_velocity = {u2, 0, 0};
+        const double shift = phase * dt * (u1 - u2);
+        doc.add_model(a, placed({-1.0 - shift, b, 0}, glm::dvec3(0.5)));
+        doc.add_model(c, placed({1.0, 0, 0}, glm::dvec3(0.5)));
+        auto t = timeline_of(with_param(doc, "step", dt));
+        // Contact when the centers are 2 r apart: along x, 2 + shift - (u1 - u2) t = sqrt(4 r^2 -
+        // b^2).
+        const double along = std::sqrt(4.0 * r * r - b * b);
+        const double contact = (2.0 + shift - along) / (u1 - u2);
+        const double until = contact + 0.25 / (u1 - u2) + 10.0 * dt;
+        return timed_bake(*t, until, [&](Measured &m) {
+            const glm::dvec3 n =
+                glm::normalize(glm::dvec3(-along, b, 0.0)); // from b's center to a's
+            const glm::dvec3 v1(u1, 0, 0), v2(u2, 0, 0);
+            const double v1n = glm::dot(v1, n), v2n = glm::dot(v2, n);
+            const double w1n = ((m1 - m2) * v1n + 2.0 * m2 * v2n) / (m1 + m2);
+            const double w2n = ((m2 - m1) * v2n + 2.0 * m1 * v1n) / (m1 + m2);
+            const glm::dvec3 w1 = v1 + (w1n - v1n) * n, w2 = v2 + (w2n - v2n) * n;
+            const Frame f = t->evaluate(until);
+            const double scale = std::abs(u1 - u2);
+            m.error = std::max(glm::length(f.models[0].velocity - w1),
+                               glm::length(f.models[1].velocity - w2)) /
+                      scale;
+            if (m.events != 1) m.error = std::max(m.error, 1.0);
+        });
+    });
+}
+
+Measured cradle(double dt) {
+    return worst_phase([&](double phase) {
+        Document doc = load("cradle.ani");
+        const int striker = doc.find_model("striker");
+        ModelState start = *doc.keyframes()[0].states[static_cast<size_t>(striker)];
+        const double x_striker = start.center.x - phase * dt * 2.0;
+        start.center.x = x_striker;
+        doc.set_state(0, striker, start);
+        auto t = timeline_of(with_param(doc, "step", dt));
+        return timed_bake(*t, 5.0, [&](Measured &m) {
+            // The striker (2 m/s) meets ball1 (x = 0) when 2 r apart; each ball then moves by the
+            // gap between surfaces (the centers are 1.001 apart) and stops; ball4 leaves with 2 m/s
+            // once three gaps are crossed.
+            const double r = 0.5 * unit_sphere_radius(), gap = 1.001 - 2.0 * r;
+            const double first = (-2.0 * r - x_striker) / 2.0, leave = first + 3.0 * gap / 2.0;
+            const Frame f = t->evaluate(5.0);
+            for (int k = 0; k < static_cast<int>(doc.models().size()); ++k) {
+                const Model &mk = doc.models()[static_cast<size_t>(k)];
+                if (!mk.dynamics) continue;
+                const bool last = mk.name == "ball4";
+                const glm::dvec3 v = f.models[static_cast<size_t>(k)].velocity;
+                m.error =
+                    std::max(m.error, glm::length(v - glm::dvec3(last ? 2.0 : 0.0, 0, 0)) / 2.0);
+                const double x0 = doc.keyframes()[0].states[static_cast<size_t>(k)]->center.x;
+                const double x = k == striker ? -2.0 * r
+                                 : last       ? x0 + 2.0 * (5.0 - leave)
+                                              : x0 + gap;
+                m.error2 =
+                    std::max(m.error2, std::abs(f.models[static_cast<size_t>(k)].center.x - x));
+            }
+        });
+    });
+}
+
+Measured ball_in_box(double dt, double seconds) {
+    const double r = 0.5 * unit_sphere_radius(), half = 5.0, L = half - r;
+    Document doc = no_gravity();
+    Settings s = doc.settings();
+    s.max_time_ms = 300000000;
+    doc.set_settings(s);
+    doc.add_model(model("box", "cube", false, false), placed({0, 0, 0}, glm::dvec3(half)));
+    Model ball = model("ball", "sphere", true, false);
+    const glm::dvec3 v0(1.3, 0.7, 0.3);
+    ball.initial_velocity = v0;
+    doc.add_model(ball, placed({0.5, -1.0, 2.0}, glm::dvec3(0.5)));
+    auto t = timeline_of(with_param(doc, "step", dt));
+    return timed_bake(*t, seconds, [&](Measured &m) {
+        const double e0 = glm::dot(v0, v0);
+        for (const ani_motion_segment &seg : t->segments(1)) {
+            // Between contacts (stretches of more than one step) the velocity is Bullet's.
+            if (seg.t1 - seg.t0 > 1.5 * dt) {
+                const glm::dvec3 v = vec(seg.v0);
+                m.error = std::max(m.error, std::abs(glm::dot(v, v) - e0) / e0);
+            }
+            // Straight segments: the extremes are at the ends.
+            const glm::dvec3 ends[2] = {vec(seg.p0), vec(seg.p0) + vec(seg.v0) * (seg.t1 - seg.t0)};
+            for (const glm::dvec3 &p : ends)
+                for (int c = 0; c < 3; ++c) m.error2 = std::max(m.error2, std::abs(p[c]) - L);
+        }
+    });
+}
+
+const double kThrough = 1e300;
+
+Measured thin_wall(double dt, double speed, bool ccd) {
+    return worst_phase([&](double phase) {
+        const double r = 0.1 * unit_sphere_radius();
+        Document doc = no_gravity();
+        // The plane stood up: rotated 90 degrees about Z, its face is the plane x = 0.
+        doc.add_model(model("wall", "plane", false, false),
+                      placed({0, 0, 0}, glm::dvec3(2.0), {0, 0, 90}));
+        Model ball = model("ball", "sphere", true, false);
+        ball.initial_velocity = {-speed, 0, 0};
+        const double x0 = 1.0 + phase * dt * speed;
+        doc.add_model(ball, placed({x0, 0.1, 0.1}, glm::dvec3(0.1)));
+        auto t = timeline_of(with_param(with_param(doc, "step", dt), "ccd", ccd ? 1.0 : 0.0));
+        const double hit = (x0 - r) / speed;
+        const double until = hit + 2.0 * dt;
+        return timed_bake(*t, until, [&](Measured &m) {
+            const double x = t->evaluate(until).models[1].center.x;
+            const double exact = r + speed * (until - hit);
+            m.error = x > 0.0 ? exact - x : kThrough; // how far behind, or through
+            m.error2 = m.events ? std::abs(t->events()[0].t - hit) : kThrough;
+        });
+    });
+}
+
+Measured keyed_paddle(double dt) {
+    return worst_phase([&](double phase) {
+        // The paddle: a cube 0.2 wide (scale 0.1), keyed from x = -3 to x = 1 over 2 s (2 m/s),
+        // then to x = 3 at 4 s; the ball at rest at x = 0. They touch when the paddle's face (x =
+        // center + 0.1) reaches -r: at (3 - r - 0.1) / 2 s.
+        const double r = 0.5 * unit_sphere_radius(), u = 2.0;
+        Document doc = no_gravity();
+        doc.add_model(model("paddle", "cube", false, false), placed({-3, 0, 0}, {0.1, 1, 1}));
+        const double x_ball = phase * dt * u;
+        doc.add_model(model("ball", "sphere", true, false),
+                      placed({x_ball, 0, 0}, glm::dvec3(0.5)));
+        key(doc, 2000, 0, placed({1, 0, 0}, {0.1, 1, 1}));
+        key(doc, 4000, 0, placed({3, 0, 0}, {0.1, 1, 1}));
+        auto t = timeline_of(with_param(doc, "step", dt));
+        const double contact = (3.0 + x_ball - r - 0.1) / u;
+        return timed_bake(*t, 6.0, [&](Measured &m) {
+            const ModelPose ball = t->evaluate(contact + 0.5).models[1];
+            m.error = std::abs(ball.velocity.x - 2.0 * u) / (2.0 * u);
+            const ani_motion_segment *rest = segment_at(*t, 0, 1.9);
+            m.error = std::max(m.error, rest && rest->motion == ANI_MOTION_REST
+                                            ? std::abs(rest->p0.x - (x_ball - r - 0.1))
+                                            : 1.0);
+            m.error2 = std::abs(ball.center.x - (x_ball + 2.0 * u * 0.5));
+        });
+    });
+}
+
+Measured stone(double dt) {
+    return worst_phase([&](double phase) {
+        const double r = unit_sphere_radius();
+        const double landing = std::sqrt(2.0 * (3.0 - r) / G) + phase * dt;
+        const double h = r + 0.5 * G * landing * landing;
+        Document doc;
+        doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, glm::dvec3(10.0)));
+        doc.add_model(model("stone", "sphere", false, true), placed({0, h, 0}));
+        auto t = timeline_of(with_param(doc, "step", dt));
+        return timed_bake(*t, 3.0, [&](Measured &m) {
+            const Frame f = t->evaluate(2.5);
+            m.error = std::abs(f.models[1].center.y - r);
+            if (f.models[1].velocity != glm::dvec3(0.0) || f.motion[1] != ANI_MOTION_REST)
+                m.error = 1.0;
+            m.error2 = t->events().size() == 1 ? std::abs(t->events()[0].t - landing) : 1.0;
+        });
+    });
+}
+
+Measured cross_check(const char *animation, double dt) {
+    const Document doc = load(animation);
+    const double until = static_cast<double>(doc.settings().max_time_ms) / 1000.0;
+    auto custom = timeline_of(doc, "physics.custom");
+    custom->bake(until);
+    auto bullet = timeline_of(with_param(doc, "step", dt));
+    return timed_bake(*bullet, until, [&](Measured &m) {
+        for (int k = 0; k <= 100 * static_cast<int>(until); ++k) {
+            const double time = 0.01 * k;
+            const Frame a = custom->evaluate(time), b = bullet->evaluate(time);
+            for (size_t i = 0; i < a.models.size(); ++i)
+                m.error = std::max(m.error, glm::length(a.models[i].center - b.models[i].center));
+        }
+    });
+}
+
+} // namespace animator::bullet_test
