@@ -209,3 +209,18 @@ TEST_CASE("animator compare reports the largest differences and the unmatched ev
     const auto one = test::run_animator("compare " + cradle + " --backends physics.custom");
     CHECK(one.exit_code == 2);
 }
+
+TEST_CASE("animator compare of the exact and the Bullet backend on the cradle matches every event") {
+    const std::string cradle = (test::source_dir() / "assets/animations/cradle.ani").string();
+    const auto r = test::run_animator("compare " + cradle + " --backends physics.custom,physics.bullet --until 4");
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("compared physics.custom (A) with physics.bullet (B)"));
+    CHECK_THAT(r.out, Catch::Contains("events: 4 in A, 4 in B"));
+    CHECK_THAT(r.out, Catch::Contains("only in A: 0") && Catch::Contains("only in B: 0"));
+    // A Bullet parameter reaches Bullet only; one out of its range is refused.
+    const auto fine = test::run_animator("compare " + cradle + " --until 2 --param step=0.001");
+    CHECK(fine.exit_code == 0);
+    const auto coarse = test::run_animator("compare " + cradle + " --until 2 --param step=0.5");
+    CHECK(coarse.exit_code == 1);
+    CHECK_THAT(coarse.out, Catch::Contains("step"));
+}
