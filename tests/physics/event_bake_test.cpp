@@ -5,7 +5,7 @@
 #include "io/environment.hpp"
 #include "timeline/timeline.hpp"
 
-#include "support.hpp"
+#include "scene_support.hpp"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
@@ -13,51 +13,11 @@
 #include <cmath>
 
 using namespace animator;
+using namespace physics_test;
 namespace fs = std::filesystem;
 
-namespace {
-
-const double G = 9.81;
-
-Environment &env() {
-    static Environment e({test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
-                         [](ani_log_level, const std::string &, const std::string &) {});
-    return e;
-}
-
-std::unique_ptr<Timeline> timeline_of(const Document &doc) {
-    auto t = std::make_unique<Timeline>(doc, env().plugins);
-    std::vector<std::string> ids, warnings;
-    for (const Model &m : doc.models()) ids.push_back(m.mesh);
-    t->set_meshes(load_meshes(ids, env().assets, {}, warnings));
-    REQUIRE(warnings.empty());
-    return t;
-}
-
-double sphere_radius() {
-    return load_mesh(env().assets.resolve(ANI_ASSET_MESH, "sphere").value()).mesh.bound_radius;
-}
-
-Model model(const std::string &name, const std::string &mesh, bool dynamics, bool gravity) {
-    Model m;
-    m.name = name;
-    m.mesh = mesh;
-    m.dynamics = dynamics;
-    m.gravity = gravity;
-    return m;
-}
-
-ModelState placed(glm::dvec3 center, double scale = 1.0) {
-    ModelState s;
-    s.center = center;
-    s.scale = glm::dvec3(scale);
-    return s;
-}
-
-} // namespace
-
 TEST_CASE("a ball dropped on a floor bounces 1000 times, every apex at the drop height") {
-    const double r = sphere_radius(), h = 1.5;
+    const double r = unit_radius(), h = 1.5;
     Document doc;
     Settings s = doc.settings();
     s.max_time_ms = 700000;
@@ -105,7 +65,7 @@ TEST_CASE(
 }
 
 TEST_CASE("two equal spheres, one at rest, meeting off-centre leave at 90 degrees") {
-    const double r = sphere_radius();
+    const double r = unit_radius();
     Document doc;
     Model a = model("a", "sphere", true, false);
     a.initial_velocity = {3, 0, 0};
@@ -125,7 +85,7 @@ TEST_CASE("two equal spheres, one at rest, meeting off-centre leave at 90 degree
 }
 
 TEST_CASE("a model without Dynamics stops at the moment of contact") {
-    const double r = sphere_radius(), h = 3.0;
+    const double r = unit_radius(), h = 3.0;
     Document doc;
     doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, 10.0));
     doc.add_model(model("stone", "sphere", false, true), placed({0, h, 0}));
@@ -140,7 +100,7 @@ TEST_CASE("a model without Dynamics stops at the moment of contact") {
 }
 
 TEST_CASE("a small fast sphere reflects off a thin wall at any speed, never passing") {
-    const double r = sphere_radius() * 0.1;
+    const double r = unit_radius() * 0.1;
     for (double speed : {1.0, 100.0, 1e4, 1e6}) {
         CAPTURE(speed);
         Document doc;
@@ -164,7 +124,7 @@ TEST_CASE("a small fast sphere reflects off a thin wall at any speed, never pass
 
 TEST_CASE(
     "a ball in a closed box for 300000 s: each coordinate an exact triangle wave, energy kept") {
-    const double r = sphere_radius() * 0.5, half = 5.0, L = half - r;
+    const double r = unit_radius() * 0.5, half = 5.0, L = half - r;
     Document doc;
     Settings s = doc.settings();
     s.max_time_ms = 300000000;
@@ -207,7 +167,7 @@ TEST_CASE("models that start overlapping are reported once and ignored until the
     Environment logged(
         {test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
         [&](ani_log_level, const std::string &, const std::string &m) { log.push_back(m); });
-    const double r = sphere_radius();
+    const double r = unit_radius();
     Document doc;
     Model a = model("a", "sphere", true, false), b = model("b", "sphere", true, false);
     a.initial_velocity = {-1, 0, 0};
@@ -244,7 +204,7 @@ TEST_CASE(
     "Newton's cradle with touching balls: the exchanges pass along at once, deterministically") {
     // Five balls of radius r in a row, centers exactly 2 r apart (touching), the striker at
     // 2 m/s meeting the first: the contacts are simultaneous, resolved one after the other.
-    const double r = sphere_radius();
+    const double r = unit_radius();
     Document doc;
     Settings s = doc.settings();
     s.gravity = 0.0;
@@ -280,7 +240,7 @@ TEST_CASE(
 
 TEST_CASE("a ball flying into the inside corner of a box meets both walls at once and comes "
           "straight back") {
-    const double r = sphere_radius() * 0.5, half = 3.0;
+    const double r = unit_radius() * 0.5, half = 3.0;
     Document doc;
     Settings s = doc.settings();
     s.gravity = 0.0;
@@ -306,7 +266,7 @@ TEST_CASE("two spheres of unequal mass meeting obliquely and slowly under gravit
           "the normal only") {
     // Both fall under gravity, so their relative motion is a straight line: they meet when
     // |d + e t| = ra + rb. Approach speed 0.1 m/s, below Bullet's restitution threshold.
-    const double ra = sphere_radius() * 0.5, rb = sphere_radius() * 0.8, ma = 1.0, mb = 3.5;
+    const double ra = unit_radius() * 0.5, rb = unit_radius() * 0.8, ma = 1.0, mb = 3.5;
     const glm::dvec3 pa(-2.0, 5.0, 0.2), pb(0.0, 5.3, 0.0), va(0.1, 0.0, 0.0), vb(0.0, 0.0, 0.0);
     Document doc;
     Model a = model("a", "sphere", true, true), b = model("b", "sphere", true, true);
@@ -337,7 +297,8 @@ TEST_CASE("two spheres of unequal mass meeting obliquely and slowly under gravit
     CHECK(timeline->events()[0].speed == Approx(unb - una).epsilon(1e-10)); // closing along n
 }
 
-TEST_CASE("a model without Dynamics stopped by a contact stays stopped in a bake resumed after it") {
+TEST_CASE(
+    "a model without Dynamics stopped by a contact stays stopped in a bake resumed after it") {
     // A stone (Dynamics off, Gravity on) falls onto a static floor and stops there; a bake
     // resumed after the landing must not let it fall again.
     Document doc;
@@ -345,12 +306,12 @@ TEST_CASE("a model without Dynamics stopped by a contact stays stopped in a bake
     doc.add_model(model("stone", "sphere", false, true), placed({0, 5, 0}, 0.5));
     auto whole = timeline_of(doc), parts = timeline_of(doc);
     whole->bake(3.0);
-    const double landing = std::sqrt(2.0 * (5.0 - 0.5 * sphere_radius()) / G);
+    const double landing = std::sqrt(2.0 * (5.0 - 0.5 * unit_radius()) / G);
     parts->bake(landing + 0.1);
     parts->bake(3.0);
     for (double t : {landing + 0.05, 1.5, 2.9}) {
         CAPTURE(t);
-        CHECK(whole->evaluate(t).models[1].center.y == Approx(0.5 * sphere_radius()).epsilon(1e-9));
+        CHECK(whole->evaluate(t).models[1].center.y == Approx(0.5 * unit_radius()).epsilon(1e-9));
         CHECK(parts->evaluate(t).models[1].center.y == whole->evaluate(t).models[1].center.y);
     }
 }

@@ -6,7 +6,7 @@
 #include "io/environment.hpp"
 #include "timeline/timeline.hpp"
 
-#include "support.hpp"
+#include "scene_support.hpp"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
@@ -15,18 +15,9 @@
 #include <random>
 
 using namespace animator;
+using namespace physics_test;
 
 namespace {
-
-Environment &env() {
-    static Environment e({test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
-                         [](ani_log_level, const std::string &, const std::string &) {});
-    return e;
-}
-
-double unit_radius() {
-    return load_mesh(env().assets.resolve(ANI_ASSET_MESH, "sphere").value()).mesh.bound_radius;
-}
 
 struct Gas {
     Document doc;

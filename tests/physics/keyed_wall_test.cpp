@@ -7,7 +7,7 @@
 #include "keyed_contact.hpp"
 #include "timeline/timeline.hpp"
 
-#include "support.hpp"
+#include "scene_support.hpp"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
@@ -15,6 +15,7 @@
 #include <cmath>
 
 using namespace animator;
+using namespace physics_test;
 using physics_custom::advance_to_contact;
 using physics_custom::Approach;
 using physics_custom::ApproachOutcome;
@@ -22,53 +23,6 @@ using physics_custom::ApproachOutcome;
 namespace {
 
 const double kPi = 3.14159265358979323846;
-
-Environment &env() {
-    static Environment e({test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
-                         [](ani_log_level, const std::string &, const std::string &) {});
-    return e;
-}
-
-double unit_radius() {
-    return load_mesh(env().assets.resolve(ANI_ASSET_MESH, "sphere").value()).mesh.bound_radius;
-}
-
-std::unique_ptr<Timeline> timeline_of(const Document &doc) {
-    auto t = std::make_unique<Timeline>(doc, env().plugins);
-    std::vector<std::string> ids, warnings;
-    for (const Model &m : doc.models()) ids.push_back(m.mesh);
-    t->set_meshes(load_meshes(ids, env().assets, {}, warnings));
-    REQUIRE(warnings.empty());
-    return t;
-}
-
-Model model(const std::string &name, const std::string &mesh, bool dynamics, bool gravity) {
-    Model m;
-    m.name = name;
-    m.mesh = mesh;
-    m.dynamics = dynamics;
-    m.gravity = gravity;
-    return m;
-}
-
-ModelState placed(glm::dvec3 center, glm::dvec3 scale = glm::dvec3(1.0),
-                  glm::dvec3 angles = glm::dvec3(0.0)) {
-    ModelState s;
-    s.center = center;
-    s.scale = scale;
-    s.angles = angles;
-    return s;
-}
-
-void key(Document &doc, std::int64_t ms, int model, const ModelState &state) {
-    if (doc.find_keyframe(ms) < 0) {
-        Keyframe k;
-        k.time_ms = ms;
-        k.states.assign(doc.models().size(), std::nullopt);
-        doc.insert_keyframe(k);
-    }
-    doc.set_state(ms, model, state);
-}
 
 const ani_motion_segment *segment_at(const Timeline &t, int model, double time) {
     for (const auto &s : t.segments(model))

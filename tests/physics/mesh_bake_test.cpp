@@ -5,7 +5,7 @@
 #include "io/environment.hpp"
 #include "timeline/timeline.hpp"
 
-#include "support.hpp"
+#include "scene_support.hpp"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
@@ -13,45 +13,7 @@
 #include <cmath>
 
 using namespace animator;
-
-namespace {
-
-const double G = 9.81;
-
-Environment &env() {
-    static Environment e({test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
-                         [](ani_log_level, const std::string &, const std::string &) {});
-    return e;
-}
-
-std::unique_ptr<Timeline> timeline_of(const Document &doc) {
-    auto t = std::make_unique<Timeline>(doc, env().plugins);
-    std::vector<std::string> ids, warnings;
-    for (const Model &m : doc.models()) ids.push_back(m.mesh);
-    t->set_meshes(load_meshes(ids, env().assets, {}, warnings));
-    REQUIRE(warnings.empty());
-    return t;
-}
-
-Model model(const std::string &name, const std::string &mesh, bool dynamics, bool gravity) {
-    Model m;
-    m.name = name;
-    m.mesh = mesh;
-    m.dynamics = dynamics;
-    m.gravity = gravity;
-    return m;
-}
-
-ModelState placed(glm::dvec3 center, glm::dvec3 scale = glm::dvec3(1.0),
-                  glm::dvec3 angles = glm::dvec3(0.0)) {
-    ModelState s;
-    s.center = center;
-    s.scale = scale;
-    s.angles = angles;
-    return s;
-}
-
-} // namespace
+using namespace physics_test;
 
 TEST_CASE("a cube dropped flat on a floor bounces 100 times, every apex at the drop height") {
     // The cube mesh spans [-1, 1]: scaled 0.25 its bottom is 0.25 below its center.
@@ -185,18 +147,6 @@ TEST_CASE("a cube inside a closed cube used as a room bounces off its walls from
             std::floor((std::abs(v0[c]) * 60.0 + (v0[c] > 0 ? p0[c] + L : L - p0[c])) / (2.0 * L)));
     CHECK(timeline->events().size() == hits);
 }
-
-namespace {
-void key(Document &doc, std::int64_t ms, int model, const ModelState &state) {
-    if (doc.find_keyframe(ms) < 0) {
-        Keyframe k;
-        k.time_ms = ms;
-        k.states.assign(doc.models().size(), std::nullopt);
-        doc.insert_keyframe(k);
-    }
-    doc.set_state(ms, model, state);
-}
-} // namespace
 
 TEST_CASE("a keyed paddle strikes a resting cube, which leaves at twice the paddle's speed") {
     // The paddle: the cube mesh scaled (0.1, 0.5, 0.5), keyed at 2 m/s along x from x = -3

@@ -1,0 +1,82 @@
+// What the physics tests that bake through the real timeline share: the build's plugins and
+// assets, a timeline with the document's meshes, and short ways to make models, placements and
+// keys.
+#pragma once
+
+#include "assets/asset_paths.hpp"
+#include "assets/mesh.hpp"
+#include "io/environment.hpp"
+#include "timeline/timeline.hpp"
+
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace physics_test {
+
+using namespace animator;
+
+inline constexpr double G = 9.81;
+
+// The plugins and generated assets of this build, with a quiet log.
+inline Environment &env() {
+    static Environment e({test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
+                         [](ani_log_level, const std::string &, const std::string &) {});
+    return e;
+}
+
+// The radius of the generated unit sphere as read (single precision: within 4e-8 of 1).
+inline double unit_radius() {
+    return load_mesh(env().assets.resolve(ANI_ASSET_MESH, "sphere").value()).mesh.bound_radius;
+}
+
+// A timeline over the document with its meshes loaded (none may be missing).
+inline std::unique_ptr<Timeline> timeline_of(const Document &doc, const std::string &backend = "") {
+    auto t = std::make_unique<Timeline>(doc, env().plugins, backend);
+    std::vector<std::string> ids, warnings;
+    for (const Model &m : doc.models()) ids.push_back(m.mesh);
+    t->set_meshes(load_meshes(ids, env().assets, {}, warnings));
+    REQUIRE(warnings.empty());
+    return t;
+}
+
+inline Model model(const std::string &name, const std::string &mesh, bool dynamics, bool gravity) {
+    Model m;
+    m.name = name;
+    m.mesh = mesh;
+    m.dynamics = dynamics;
+    m.gravity = gravity;
+    return m;
+}
+
+inline ModelState placed(glm::dvec3 center, glm::dvec3 scale = glm::dvec3(1.0),
+                         glm::dvec3 angles = glm::dvec3(0.0)) {
+    ModelState s;
+    s.center = center;
+    s.scale = scale;
+    s.angles = angles;
+    return s;
+}
+
+inline ModelState placed(glm::dvec3 center, double scale) {
+    return placed(center, glm::dvec3(scale));
+}
+
+// Keys model `model` at `ms` milliseconds, adding the keyframe if there is none there.
+inline void key(Document &doc, std::int64_t ms, int model, const ModelState &state) {
+    if (doc.find_keyframe(ms) < 0) {
+        Keyframe k;
+        k.time_ms = ms;
+        k.states.assign(doc.models().size(), std::nullopt);
+        doc.insert_keyframe(k);
+    }
+    doc.set_state(ms, model, state);
+}
+
+} // namespace physics_test
