@@ -58,10 +58,13 @@ void write_events(const std::string &path, const Timeline &timeline) {
     if (!out) throw std::runtime_error(path + ": cannot be written");
     out << "t,a,b,nx,ny,nz,speed\n";
     const auto &models = timeline.document().models();
-    auto name = [&](uint32_t i) { return i < models.size() ? csv_field(models[i].name) : std::string(); };
+    auto name = [&](uint32_t i) {
+        return i < models.size() ? csv_field(models[i].name) : std::string();
+    };
     for (const ani_collision_event &e : timeline.events())
-        out << number(e.t) << "," << name(e.a) << "," << name(e.b) << "," << number(e.normal.x) << ","
-            << number(e.normal.y) << "," << number(e.normal.z) << "," << number(e.speed) << "\n";
+        out << number(e.t) << "," << name(e.a) << "," << name(e.b) << "," << number(e.normal.x)
+            << "," << number(e.normal.y) << "," << number(e.normal.z) << "," << number(e.speed)
+            << "\n";
     if (!out) throw std::runtime_error(path + ": writing failed");
 }
 
@@ -82,13 +85,14 @@ void print_stats(const Timeline &timeline, double wall_seconds) {
     const BakeStats &st = timeline.stats();
     std::cout << "backend:   " << timeline.backend_id() << "\n"
               << "wall time: " << wall_seconds << " s\n"
-              << "baked:     " << st.seconds_baked << " s of animation in " << st.bake_calls << " bake call(s)\n"
-              << "segments:  " << keyed + free + rest << " (" << keyed << " keyed, " << free << " free, " << rest
-              << " at rest)\n"
+              << "baked:     " << st.seconds_baked << " s of animation in " << st.bake_calls
+              << " bake call(s)\n"
+              << "segments:  " << keyed + free + rest << " (" << keyed << " keyed, " << free
+              << " free, " << rest << " at rest)\n"
               << "events:    " << timeline.events().size() << "\n"
               << "skipped:   interpolation for " << key_only_at_zero << " of " << models.size()
-              << " models (keyed at t = 0 only); free flight for " << never_free << " of " << models.size()
-              << " models (at rest or keyed throughout)\n";
+              << " models (keyed at t = 0 only); free flight for " << never_free << " of "
+              << models.size() << " models (at rest or keyed throughout)\n";
     for (const auto &[name, value] : st.backend_counts) {
         std::cout << "  " << name << ": ";
         if (value == std::floor(value) && std::abs(value) < 9e15)
@@ -100,21 +104,12 @@ void print_stats(const Timeline &timeline, double wall_seconds) {
 
 int run_bake(const BakeOptions &o) {
     Environment env;
-    OpenedDocument opened;
-    try {
-        opened = open_document(env.plugins, o.file);
-    } catch (const DocumentIoError &e) {
-        std::cerr << "animator: " << e.what() << "\n";
-        return kBadInput;
-    }
-    Document &doc = opened.document;
-    const double max_time = static_cast<double>(doc.settings().max_time_ms) / 1000.0;
-    const double until = o.until < 0.0 ? max_time : o.until;
-    if (until > max_time) {
-        std::cerr << "animator: " << o.file << ": --until " << until << " s is past the animation's max time "
-                  << max_time << " s\n";
-        return kBadInput;
-    }
+    std::optional<OpenedDocument> opened = open_or_report(env.plugins, o.file);
+    if (!opened) return kBadInput;
+    Document &doc = opened->document;
+    const std::optional<double> end = bake_end(doc, o.file, o.until);
+    if (!end) return kBadInput;
+    const double until = *end;
     try {
         const std::string backend = o.backend.empty() ? doc.settings().physics_backend : o.backend;
         apply_params(doc, backend, o.params);
@@ -123,7 +118,8 @@ int run_bake(const BakeOptions &o) {
         load_document_meshes(timeline, env, o.file);
         ProgressBar bar;
         timeline.bake(until, [&](double f) { return bar(f); });
-        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double wall =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!o.trace.empty()) write_trace(o.trace, timeline, until, o.step);
         if (!o.events.empty()) write_events(o.events, timeline);
         if (o.stats) print_stats(timeline, wall);
@@ -138,17 +134,22 @@ int run_bake(const BakeOptions &o) {
 
 void add_bake_command(CLI::App &app, std::function<int()> &run) {
     auto o = std::make_shared<BakeOptions>();
-    CLI::App *cmd = app.add_subcommand("bake", "Bake an animation's physics and write its trace, events and statistics");
+    CLI::App *cmd = app.add_subcommand(
+        "bake", "Bake an animation's physics and write its trace, events and statistics");
     cmd->add_option("FILE", o->file, "an animation (.ani) or scene (.lua)")->required();
-    cmd->add_option("--backend", o->backend, "physics backend plugin id (default: the animation's)");
+    cmd->add_option("--backend", o->backend,
+                    "physics backend plugin id (default: the animation's)");
     cmd->add_option("--until", o->until, "bake up to this time in seconds (default: the max time)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--step", o->step, "trace sample step in seconds (default 1/60)")
         ->check(CLI::PositiveNumber);
-    cmd->add_option("--trace", o->trace, "write every model's state as CSV: t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz");
+    cmd->add_option("--trace", o->trace,
+                    "write every model's state as CSV: t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz");
     cmd->add_option("--events", o->events, "write collision events as CSV: t,a,b,nx,ny,nz,speed");
     cmd->add_option("--param", o->params, "a backend parameter, NAME=VALUE (repeatable)");
-    cmd->add_flag("--stats", o->stats, "print wall time, segments, events, skipped stages and the backend's counts (pair tests done and skipped)");
+    cmd->add_flag("--stats", o->stats,
+                  "print wall time, segments, events, skipped stages and the backend's counts "
+                  "(pair tests done and skipped)");
     cmd->callback([&run, o] { run = [o] { return run_bake(*o); }; });
 }
 

@@ -27,7 +27,8 @@ std::string number(double x) {
 }
 
 ProgressBar::ProgressBar(std::string label)
-    : label_(std::move(label)), tty_(isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()) {}
+    : label_(std::move(label)), tty_(isatty(STDERR_FILENO) != 0),
+      start_(std::chrono::steady_clock::now()) {}
 
 ProgressBar::~ProgressBar() {
     if (shown_) std::cerr << "\r" << std::string(60, ' ') << "\r" << std::flush;
@@ -40,13 +41,14 @@ bool ProgressBar::operator()(double fraction) {
     shown_ = true;
     const int filled = static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 40.0);
     std::cerr << "\r" << label_ << " [" << std::string(static_cast<size_t>(filled), '#')
-              << std::string(static_cast<size_t>(40 - filled), '.') << "] " << static_cast<int>(fraction * 100.0) << "%"
-              << std::flush;
+              << std::string(static_cast<size_t>(40 - filled), '.') << "] "
+              << static_cast<int>(fraction * 100.0) << "%" << std::flush;
     return true;
 }
 
 // "NAME=VALUE" or "NAME=V1,V2,V3" for a parameter of the chosen backend.
-void apply_params(Document &doc, const std::string &backend, const std::vector<std::string> &params) {
+void apply_params(Document &doc, const std::string &backend,
+                  const std::vector<std::string> &params) {
     Settings settings = doc.settings();
     for (const std::string &p : params) {
         const auto eq = p.find('=');
@@ -60,7 +62,8 @@ void apply_params(Document &doc, const std::string &backend, const std::vector<s
             char *end = nullptr;
             value[i++] = std::strtod(part.c_str(), &end);
             if (part.empty() || *end != '\0' || !std::isfinite(value[i - 1]))
-                throw std::invalid_argument("--param " + p.substr(0, eq) + ": '" + part + "' is not a number");
+                throw std::invalid_argument("--param " + p.substr(0, eq) + ": '" + part +
+                                            "' is not a number");
             at = comma + 1;
         }
         settings.params[backend][p.substr(0, eq)] = value;
@@ -68,15 +71,37 @@ void apply_params(Document &doc, const std::string &backend, const std::vector<s
     doc.set_settings(settings);
 }
 
+std::optional<OpenedDocument> open_or_report(PluginRegistry &plugins, const std::string &file) {
+    try {
+        return open_document(plugins, file);
+    } catch (const DocumentIoError &e) {
+        std::cerr << "animator: " << e.what() << "\n";
+        return std::nullopt;
+    }
+}
+
+std::optional<double> bake_end(const Document &doc, const std::string &file, double until) {
+    const double max_time = static_cast<double>(doc.settings().max_time_ms) / 1000.0;
+    const double end = until < 0.0 ? max_time : until;
+    if (end > max_time) {
+        std::cerr << "animator: " << file << ": --until " << end
+                  << " s is past the animation's max time " << max_time << " s\n";
+        return std::nullopt;
+    }
+    return end;
+}
+
 std::vector<std::string> param_names(PluginRegistry &plugins, const std::string &plugin_id) {
     std::vector<std::string> names;
     const PluginInfo *info = plugins.find(plugin_id);
     if (!info || !info->descriptor) return names;
-    for (uint32_t k = 0; k < info->descriptor->param_count; ++k) names.emplace_back(info->descriptor->params[k].id);
+    for (uint32_t k = 0; k < info->descriptor->param_count; ++k)
+        names.emplace_back(info->descriptor->params[k].id);
     return names;
 }
 
-void load_document_meshes(Timeline &timeline, const Environment &env, const std::filesystem::path &file) {
+void load_document_meshes(Timeline &timeline, const Environment &env,
+                          const std::filesystem::path &file) {
     std::vector<std::string> mesh_ids, warnings;
     for (const Model &m : timeline.document().models()) mesh_ids.push_back(m.mesh);
     timeline.set_meshes(load_meshes(mesh_ids, env.assets, file, warnings));

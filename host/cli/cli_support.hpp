@@ -3,11 +3,13 @@
 #pragma once
 
 #include "document/document.hpp"
+#include "io/document_io.hpp"
 #include "io/environment.hpp"
 #include "timeline/timeline.hpp"
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,14 @@ std::string csv_field(const std::string &s);
 
 // A double with all 17 significant digits.
 std::string number(double x);
+
+// Opens a document through the file-format plugins; when it cannot, says why on stderr (the
+// message names the file and line) and gives none.
+std::optional<OpenedDocument> open_or_report(PluginRegistry &plugins, const std::string &file);
+
+// Where a bake of `doc` ends: `until` seconds, or the animation's max time when `until` is
+// negative. None, said on stderr, when `until` is past the max time.
+std::optional<double> bake_end(const Document &doc, const std::string &file, double until);
 
 // A progress bar on a terminal, for bakes longer than a second; nothing otherwise.
 class ProgressBar {
@@ -36,13 +46,15 @@ class ProgressBar {
 
 // "NAME=VALUE" or "NAME=V1,V2,V3" for a parameter of `backend`, into the document's settings.
 // Throws std::invalid_argument for a malformed one.
-void apply_params(Document &doc, const std::string &backend, const std::vector<std::string> &params);
+void apply_params(Document &doc, const std::string &backend,
+                  const std::vector<std::string> &params);
 
 // The names of the parameters that a plugin declares.
 std::vector<std::string> param_names(PluginRegistry &plugins, const std::string &plugin_id);
 
 // Gives the timeline the meshes of the document's models (found next to `file` too); warnings
 // go to stderr.
-void load_document_meshes(Timeline &timeline, const Environment &env, const std::filesystem::path &file);
+void load_document_meshes(Timeline &timeline, const Environment &env,
+                          const std::filesystem::path &file);
 
 } // namespace animator::cli

@@ -52,7 +52,8 @@ struct Largest {
 
 // Events of `a` with no event of `b` between the same two models within `tolerance` seconds.
 std::vector<const ani_collision_event *> unmatched(const std::vector<ani_collision_event> &a,
-                                                   const std::vector<ani_collision_event> &b, double tolerance) {
+                                                   const std::vector<ani_collision_event> &b,
+                                                   double tolerance) {
     std::vector<bool> used(b.size(), false);
     std::vector<const ani_collision_event *> out;
     for (const ani_collision_event &e : a) {
@@ -77,25 +78,17 @@ std::vector<const ani_collision_event *> unmatched(const std::vector<ani_collisi
 int run_compare(const CompareOptions &o) {
     const std::vector<std::string> backends = split(o.backends);
     if (backends.size() != 2) {
-        std::cerr << "animator: --backends needs two backend ids separated by a comma, got '" << o.backends << "'\n";
+        std::cerr << "animator: --backends needs two backend ids separated by a comma, got '"
+                  << o.backends << "'\n";
         return kUsage;
     }
     Environment env;
-    OpenedDocument opened;
-    try {
-        opened = open_document(env.plugins, o.file);
-    } catch (const DocumentIoError &e) {
-        std::cerr << "animator: " << e.what() << "\n";
-        return kBadInput;
-    }
-    Document &doc = opened.document;
-    const double max_time = static_cast<double>(doc.settings().max_time_ms) / 1000.0;
-    const double until = o.until < 0.0 ? max_time : o.until;
-    if (until > max_time) {
-        std::cerr << "animator: " << o.file << ": --until " << until << " s is past the animation's max time " << max_time
-                  << " s\n";
-        return kBadInput;
-    }
+    std::optional<OpenedDocument> opened = open_or_report(env.plugins, o.file);
+    if (!opened) return kBadInput;
+    Document &doc = opened->document;
+    const std::optional<double> end = bake_end(doc, o.file, o.until);
+    if (!end) return kBadInput;
+    const double until = *end;
     try {
         // Each --param goes to the backends that declare it; one that none declares is an error.
         for (const std::string &p : o.params) {
@@ -107,8 +100,10 @@ int run_compare(const CompareOptions &o) {
                 apply_params(doc, b, {p});
                 taken = true;
             }
-            if (!taken) throw std::invalid_argument("--param " + name + ": neither " + backends[0] + " nor " + backends[1] +
-                                                    " has a parameter of that name");
+            if (!taken)
+                throw std::invalid_argument("--param " + name + ": neither " + backends[0] +
+                                            " nor " + backends[1] +
+                                            " has a parameter of that name");
         }
         std::vector<std::unique_ptr<Timeline>> timelines;
         for (const std::string &b : backends) {
@@ -136,32 +131,38 @@ int run_compare(const CompareOptions &o) {
                 position[m].offer(glm::length(dp), t);
                 velocity[m].offer(glm::length(dv), t);
                 if (csv.is_open())
-                    csv << number(t) << "," << csv_field(models[m].name) << "," << number(dp.x) << "," << number(dp.y) << ","
-                        << number(dp.z) << "," << number(dv.x) << "," << number(dv.y) << "," << number(dv.z) << "\n";
+                    csv << number(t) << "," << csv_field(models[m].name) << "," << number(dp.x)
+                        << "," << number(dp.y) << "," << number(dp.z) << "," << number(dv.x) << ","
+                        << number(dv.y) << "," << number(dv.z) << "\n";
             }
         }
         if (csv.is_open() && !csv) throw std::runtime_error(o.csv + ": writing failed");
 
-        std::cout << "compared " << backends[0] << " (A) with " << backends[1] << " (B) over " << until << " s, sampled every "
-                  << o.step << " s\n";
-        std::cout << std::left << std::setw(24) << "model" << std::setw(30) << "largest |position A - B|"
+        std::cout << "compared " << backends[0] << " (A) with " << backends[1] << " (B) over "
+                  << until << " s, sampled every " << o.step << " s\n";
+        std::cout << std::left << std::setw(24) << "model" << std::setw(30)
+                  << "largest |position A - B|"
                   << "largest |velocity A - B|\n";
         for (size_t m = 0; m < models.size(); ++m) {
             std::ostringstream p, v;
             p << std::setprecision(6) << position[m].value << " m at " << position[m].t << " s";
             v << std::setprecision(6) << velocity[m].value << " m/s at " << velocity[m].t << " s";
-            std::cout << std::left << std::setw(24) << models[m].name << std::setw(30) << p.str() << v.str() << "\n";
+            std::cout << std::left << std::setw(24) << models[m].name << std::setw(30) << p.str()
+                      << v.str() << "\n";
         }
-        auto name = [&](uint32_t i) { return i < models.size() ? models[i].name : std::string("(world)"); };
-        std::cout << "events: " << a.events().size() << " in A, " << b.events().size() << " in B (matched by models and time within "
-                  << o.tolerance << " s)\n";
+        auto name = [&](uint32_t i) {
+            return i < models.size() ? models[i].name : std::string("(world)");
+        };
+        std::cout << "events: " << a.events().size() << " in A, " << b.events().size()
+                  << " in B (matched by models and time within " << o.tolerance << " s)\n";
         for (int side = 0; side < 2; ++side) {
             const auto missing = side == 0 ? unmatched(a.events(), b.events(), o.tolerance)
                                            : unmatched(b.events(), a.events(), o.tolerance);
             std::cout << "only in " << (side == 0 ? "A" : "B") << ": " << missing.size() << "\n";
             for (const ani_collision_event *e : missing)
-                std::cout << "  t = " << std::setprecision(9) << e->t << " s  " << name(e->a) << " / " << name(e->b)
-                          << "  speed " << std::setprecision(6) << e->speed << " m/s\n";
+                std::cout << "  t = " << std::setprecision(9) << e->t << " s  " << name(e->a)
+                          << " / " << name(e->b) << "  speed " << std::setprecision(6) << e->speed
+                          << " m/s\n";
         }
         return kSuccess;
     } catch (const std::exception &e) {
@@ -174,18 +175,24 @@ int run_compare(const CompareOptions &o) {
 
 void add_compare_command(CLI::App &app, std::function<int()> &run) {
     auto o = std::make_shared<CompareOptions>();
-    CLI::App *cmd = app.add_subcommand(
-        "compare", "Bake an animation with two physics backends and report the largest differences and unmatched events");
+    CLI::App *cmd =
+        app.add_subcommand("compare", "Bake an animation with two physics backends and report the "
+                                      "largest differences and unmatched events");
     cmd->add_option("FILE", o->file, "an animation (.ani) or scene (.lua)")->required();
-    cmd->add_option("--backends", o->backends, "two backend ids, A,B (default physics.custom,physics.bullet)");
-    cmd->add_option("--until", o->until, "compare up to this time in seconds (default: the max time)")
+    cmd->add_option("--backends", o->backends,
+                    "two backend ids, A,B (default physics.custom,physics.bullet)");
+    cmd->add_option("--until", o->until,
+                    "compare up to this time in seconds (default: the max time)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--step", o->step, "sampling step of the comparison in seconds (default 1/240)")
         ->check(CLI::PositiveNumber);
-    cmd->add_option("--tolerance", o->tolerance, "events match within this many seconds (default 0.01)")
+    cmd->add_option("--tolerance", o->tolerance,
+                    "events match within this many seconds (default 0.01)")
         ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--csv", o->csv, "write every sample's differences as CSV: t,model,dx,dy,dz,dvx,dvy,dvz");
-    cmd->add_option("--param", o->params, "a backend parameter, NAME=VALUE, for the backends that have it (repeatable)");
+    cmd->add_option("--csv", o->csv,
+                    "write every sample's differences as CSV: t,model,dx,dy,dz,dvx,dvy,dvz");
+    cmd->add_option("--param", o->params,
+                    "a backend parameter, NAME=VALUE, for the backends that have it (repeatable)");
     cmd->callback([&run, o] { run = [o] { return run_compare(*o); }; });
 }
 

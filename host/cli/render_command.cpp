@@ -49,14 +49,9 @@ int run_render(const RenderCommandOptions &o) {
     mallopt(M_TRIM_THRESHOLD, 512 << 20);
 
     Environment env;
-    OpenedDocument opened;
-    try {
-        opened = open_document(env.plugins, o.file);
-    } catch (const DocumentIoError &e) {
-        std::cerr << "animator: " << e.what() << "\n";
-        return kBadInput;
-    }
-    Document &doc = opened.document;
+    std::optional<OpenedDocument> opened = open_or_report(env.plugins, o.file);
+    if (!opened) return kBadInput;
+    Document &doc = opened->document;
     const double max_time = static_cast<double>(doc.settings().max_time_ms) / 1000.0;
     const double to = o.to < 0.0 ? max_time : o.to;
     if (to > max_time || o.from > to) {
