@@ -1,7 +1,9 @@
 #include "assets/asset_paths.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <set>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -72,6 +74,21 @@ std::vector<fs::path> AssetPaths::candidates(ani_asset_kind kind, const std::str
         for (const std::string &ext : extensions_of(kind))
             out.push_back(root / folder_of(kind) / (id + ext));
     return out;
+}
+
+std::vector<std::string> AssetPaths::list(ani_asset_kind kind) const {
+    std::set<std::string> ids;
+    const auto extensions = extensions_of(kind);
+    for (const fs::path &root : roots_) {
+        std::error_code ec;
+        for (fs::directory_iterator it(root / folder_of(kind), ec), end; !ec && it != end; it.increment(ec)) {
+            const fs::path &p = it->path();
+            const std::string ext = kind == ANI_ASSET_SKYBOX ? "" : p.extension().string();
+            if (std::find(extensions.begin(), extensions.end(), ext) != extensions.end() && exists_as(kind, p))
+                ids.insert(p.stem().string());
+        }
+    }
+    return {ids.begin(), ids.end()};
 }
 
 std::optional<fs::path> AssetPaths::resolve(ani_asset_kind kind, const std::string &id,

@@ -32,6 +32,9 @@ class AssetPaths {
 
     const std::vector<std::filesystem::path> &roots() const { return roots_; }
 
+    // Every id of this kind found under the roots, sorted, each once (the editor's dropdowns).
+    std::vector<std::string> list(ani_asset_kind kind) const;
+
     // The SDK extension that lets plugins ask the same questions (sdk assets.h). It refers to
     // this object, which must outlive its use.
     const ani_assets_ext *extension() const { return &extension_.ext; }

@@ -18,6 +18,7 @@ int run_cli(int argc, char **argv) {
     add_bake_command(app, run);
     add_compare_command(app, run);
     add_render_command(app, run);
+    add_edit_command(app, run);
 
     try {
         app.parse(argc, argv);
@@ -30,10 +31,6 @@ int run_cli(int argc, char **argv) {
     } catch (const CLI::ParseError &e) {
         app.exit(e);
         return kUsage;
-    }
-    if (!run) {
-        std::cout << app.help();
-        return kSuccess;
     }
     try {
         return run();

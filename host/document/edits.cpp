@@ -37,4 +37,18 @@ void SetSettingsEdit::revert(Document &doc) {
     removed_.clear();
 }
 
+void CompositeEdit::apply(Document &doc) {
+    std::size_t applied = 0;
+    try {
+        for (; applied < edits_.size(); ++applied) edits_[applied]->apply(doc);
+    } catch (...) {
+        while (applied > 0) edits_[--applied]->revert(doc);
+        throw;
+    }
+}
+
+void CompositeEdit::revert(Document &doc) {
+    for (auto it = edits_.rbegin(); it != edits_.rend(); ++it) (*it)->revert(doc);
+}
+
 } // namespace animator

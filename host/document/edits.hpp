@@ -4,7 +4,9 @@
 
 #include "document/document.hpp"
 
+#include <memory>
 #include <optional>
+#include <vector>
 
 namespace animator {
 
@@ -116,6 +118,28 @@ class SetSettingsEdit final : public Edit {
   private:
     Settings before_, after_;
     std::vector<Keyframe> removed_;
+};
+
+// Several edits undone and redone as one (a drag that moves every selected model). They go on
+// the stack of the first one's keyframe.
+class CompositeEdit final : public Edit {
+  public:
+    CompositeEdit(std::string label, std::vector<std::unique_ptr<Edit>> edits)
+        : label_(std::move(label)), edits_(std::move(edits)) {}
+    // Applies each in order; if one throws, those already applied are reverted first.
+    void apply(Document &doc) override;
+    void revert(Document &doc) override;
+    std::string label() const override { return label_; }
+    std::optional<std::int64_t> keyframe() const override {
+        return edits_.empty() ? std::nullopt : edits_.front()->keyframe();
+    }
+    std::optional<std::int64_t> creates_keyframe() const override {
+        return edits_.empty() ? std::nullopt : edits_.front()->creates_keyframe();
+    }
+
+  private:
+    std::string label_;
+    std::vector<std::unique_ptr<Edit>> edits_;
 };
 
 } // namespace animator

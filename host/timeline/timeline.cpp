@@ -285,8 +285,14 @@ double Timeline::affected_from(const Document &before, const Document &after) {
 }
 
 void Timeline::set_document(const Document &doc, const std::function<bool(double)> &progress) {
-    const double from = affected_from(doc_, doc);
     const double until = baked_until_;
+    const bool baked = baked_any_;
+    edit(doc);
+    if (baked && baked_until_ < until) run_bake(baked_until_, until, progress);
+}
+
+void Timeline::edit(const Document &doc) {
+    const double from = affected_from(doc_, doc);
     const bool new_interpolation = doc.settings().interpolation != doc_.settings().interpolation ||
                                    doc.settings().params != doc_.settings().params;
     const bool new_backend = doc.settings().physics_backend != doc_.settings().physics_backend ||
@@ -302,20 +308,22 @@ void Timeline::set_document(const Document &doc, const std::function<bool(double
         segments_.assign(doc_.models().size(), {});
         rotations_.assign(doc_.models().size(), {});
     }
-    if (!baked_any_ || from >= until) return;
-    truncate(from);
-    run_bake(from, until, progress);
+    if (baked_any_ && from < baked_until_) truncate(from);
 }
 
 void Timeline::set_backend(const std::string &id, const std::function<bool(double)> &progress) {
+    const double until = baked_until_;
+    const bool baked = baked_any_;
+    use_backend(id);
+    if (baked) run_bake(0.0, until, progress);
+}
+
+void Timeline::use_backend(const std::string &id) {
     auto physics = physics_instance(plugins_, doc_, id); // throws, leaving everything as it was
     physics_ = std::move(physics);
     backend_override_ = id;
-    const double until = baked_until_;
-    const bool baked = baked_any_;
     truncate(0.0);
     baked_any_ = false;
-    if (baked) run_bake(0.0, until, progress);
 }
 
 } // namespace animator

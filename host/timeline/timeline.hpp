@@ -54,12 +54,20 @@ class Timeline {
     // Takes an edited document: the bake is kept up to the earliest time the edit can change
     // and redone from there to where it was.
     void set_document(const Document &doc, const std::function<bool(double)> &progress = {});
+    // The same without baking again: what is baked stays up to the earliest time the edit can
+    // change, and the next bake() goes on from there (the editor bakes in slices between
+    // frames, so an edit never freezes it). Throws PluginError, changing nothing, when a newly
+    // chosen plugin is missing.
+    void edit(const Document &doc);
 
     // Swaps the physics backend while the program runs: the new one is created first (a
     // PluginError leaves the previous one in place), then the bake is redone with it up to
     // where it was. The document is not changed; `id` overrides its choice from now on, and ""
     // goes back to it.
     void set_backend(const std::string &id, const std::function<bool(double)> &progress = {});
+    // The same without baking again: the next bake() starts over from 0 with the new backend.
+    void use_backend(const std::string &id);
+    const std::string &backend_override() const { return backend_override_; }
     const Document &document() const { return doc_; }
 
     // The earliest time (seconds) at which `after` can move differently from `before`; infinity

@@ -1,0 +1,289 @@
+#include "editor/editor_app.hpp"
+
+#include "editor/editor_panels.hpp"
+#include "editor/editor_session.hpp"
+#include "render/renderer.hpp"
+
+#include <glad/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <malloc.h>
+
+#include <cmath>
+#include <deque>
+#include <iostream>
+
+namespace animator {
+
+namespace {
+
+// What GLFW reported since the last frame, in order: the 1.86 ImGui backend keeps only the
+// state of keys and buttons, so a press and release between two frames (xdotool's `key x`)
+// would be lost without a queue of our own.
+struct InputEvent {
+    enum Kind { Key, Press, Release, Scroll } kind;
+    int code = 0; // the key, or the mouse button
+    int mods = 0;
+    double x = 0, y = 0; // the cursor (screen coordinates) for buttons; the offset for scroll
+};
+
+struct WindowState {
+    std::deque<InputEvent> events;
+    bool woke = false; // anything at all happened: draw a few frames
+    bool close_requested = false;
+};
+
+WindowState &state_of(GLFWwindow *w) { return *static_cast<WindowState *>(glfwGetWindowUserPointer(w)); }
+
+void install_callbacks(GLFWwindow *window) {
+    glfwSetKeyCallback(window, [](GLFWwindow *w, int key, int, int action, int mods) {
+        auto &s = state_of(w);
+        s.woke = true;
+        if (action == GLFW_PRESS || action == GLFW_REPEAT) s.events.push_back({InputEvent::Key, key, mods, 0, 0});
+    });
+    glfwSetMouseButtonCallback(window, [](GLFWwindow *w, int button, int action, int mods) {
+        auto &s = state_of(w);
+        s.woke = true;
+        double x = 0, y = 0;
+        glfwGetCursorPos(w, &x, &y);
+        s.events.push_back({action == GLFW_PRESS ? InputEvent::Press : InputEvent::Release, button, mods, x, y});
+    });
+    glfwSetScrollCallback(window, [](GLFWwindow *w, double, double dy) {
+        auto &s = state_of(w);
+        s.woke = true;
+        s.events.push_back({InputEvent::Scroll, 0, 0, 0, dy});
+    });
+    glfwSetCursorPosCallback(window, [](GLFWwindow *w, double, double) { state_of(w).woke = true; });
+    glfwSetCharCallback(window, [](GLFWwindow *w, unsigned) { state_of(w).woke = true; });
+    glfwSetWindowSizeCallback(window, [](GLFWwindow *w, int, int) { state_of(w).woke = true; });
+    glfwSetWindowRefreshCallback(window, [](GLFWwindow *w) { state_of(w).woke = true; });
+    glfwSetWindowFocusCallback(window, [](GLFWwindow *w, int) { state_of(w).woke = true; });
+    glfwSetCursorEnterCallback(window, [](GLFWwindow *w, int) { state_of(w).woke = true; });
+    glfwSetWindowCloseCallback(window, [](GLFWwindow *w) {
+        auto &s = state_of(w);
+        s.woke = true;
+        s.close_requested = true;
+        glfwSetWindowShouldClose(w, GLFW_FALSE); // the editor decides, after asking
+    });
+}
+
+// The mouse in the 3D view: a press starts a drag (Camera mode: any button; other modes: the
+// middle and right buttons), a left press and release without moving is a click that selects.
+class Pointer {
+  public:
+    void press(EditorSession &session, const InputEvent &e, int viewport_height) {
+        if (button_ >= 0) return;
+        button_ = e.code;
+        start_ = glm::dvec2(e.x, e.y);
+        if (e.code > GLFW_MOUSE_BUTTON_MIDDLE) return;
+        const auto b = static_cast<DragButton>(e.code);
+        if (session.mode() == EditMode::Camera || b != DragButton::Left) session.begin_drag(b, viewport_height);
+    }
+    // Returns the click's position when the release is a click of the left button.
+    std::optional<glm::dvec2> release(EditorSession &session, const InputEvent &e) {
+        if (e.code != button_) return std::nullopt;
+        button_ = -1;
+        const glm::dvec2 delta = glm::dvec2(e.x, e.y) - start_;
+        const bool click = std::abs(delta.x) < 4 && std::abs(delta.y) < 4;
+        if (click) {
+            session.cancel_drag();
+            return e.code == GLFW_MOUSE_BUTTON_LEFT ? std::optional<glm::dvec2>(glm::dvec2(e.x, e.y)) : std::nullopt;
+        }
+        session.update_drag(delta);
+        session.end_drag();
+        return std::nullopt;
+    }
+    void move(EditorSession &session, glm::dvec2 cursor) {
+        if (button_ >= 0) session.update_drag(cursor - start_);
+    }
+    bool down() const { return button_ >= 0; }
+
+  private:
+    int button_ = -1;
+    glm::dvec2 start_{0.0};
+};
+
+void glfw_error(int code, const char *description) {
+    std::cerr << "animator: GLFW error " << code << ": " << description << "\n";
+}
+
+} // namespace
+
+int run_editor(const EditorOptions &options) {
+    // Per-frame allocations must not go back to the kernel each frame (docs/rendering.md).
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 512 << 20);
+
+    glfwSetErrorCallback(glfw_error);
+    if (!glfwInit()) {
+        std::cerr << "animator: cannot open a window: no display (set DISPLAY, or run under "
+                     "xvfb-run; `animator render` draws without one)\n";
+        return 1;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_STENCIL_BITS, 8);
+    glfwWindowHint(GLFW_DEPTH_BITS, 24);
+    GLFWwindow *window = glfwCreateWindow(options.width, options.height, "animator", nullptr, nullptr);
+    if (!window) {
+        std::cerr << "animator: cannot open an OpenGL 3.3 core window\n";
+        glfwTerminate();
+        return 1;
+    }
+    WindowState window_state;
+    glfwSetWindowUserPointer(window, &window_state);
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(1);
+    if (gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)) == 0) {
+        std::cerr << "animator: glad could not load OpenGL 3.3\n";
+        glfwDestroyWindow(window);
+        glfwTerminate();
+        return 1;
+    }
+    install_callbacks(window); // before ImGui's, which call these after their own work
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO &io = ImGui::GetIO();
+    io.IniFilename = nullptr; // no imgui.ini left in the user's folder
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+
+    int exit_code = 0;
+    {
+        Environment env;
+        Panels panels(env);
+        EditorSession session(env);
+        RenderOptions render_options;
+        Renderer renderer(env.plugins, env.assets, render_options,
+                          [&](const std::string &message) { panels.say(message, true); });
+
+        const std::filesystem::path file = options.file.empty() ? EditorSession::demo_path(env.assets)
+                                                                : std::filesystem::path(options.file);
+        std::string error;
+        if (file.empty()) {
+            panels.say("no demo scene found; starting with an empty animation", true);
+        } else if (!session.open(file, error)) {
+            panels.show_error("Could not open " + file.string(), error);
+        } else {
+            for (const std::string &w : session.warnings()) panels.say("warning: " + w, true);
+            panels.say("opened " + file.string());
+        }
+
+        std::uint64_t drawn_version = ~std::uint64_t{0};
+        std::string title;
+        Pointer pointer;
+        int frames_to_draw = 3;
+        bool quitting = false;
+        while (!quitting) {
+            const bool busy = session.playing() || session.baking() || pointer.down() || frames_to_draw > 0;
+            if (busy) glfwPollEvents();
+            else glfwWaitEvents();
+            if (window_state.woke) frames_to_draw = 3; // ImGui settles within a few frames
+            window_state.woke = false;
+
+            ImGui_ImplOpenGL3_NewFrame();
+            ImGui_ImplGlfw_NewFrame();
+            ImGui::NewFrame();
+
+            int fb_w = 0, fb_h = 0, win_w = 0, win_h = 0;
+            glfwGetFramebufferSize(window, &fb_w, &fb_h);
+            glfwGetWindowSize(window, &win_w, &win_h);
+            const double to_fb = win_w > 0 ? static_cast<double>(fb_w) / win_w : 1.0;
+
+            // Events, in the order they came. Keys typed into a text field are the field's.
+            while (!window_state.events.empty()) {
+                const InputEvent e = window_state.events.front();
+                window_state.events.pop_front();
+                switch (e.kind) {
+                case InputEvent::Press:
+                    if (!io.WantCaptureMouse && !pointer.down()) pointer.press(session, e, fb_h);
+                    break;
+                case InputEvent::Release:
+                    if (auto click = pointer.release(session, e)) {
+                        if (session.playing()) break;
+                        const int model = renderer.pick(session.frame(), fb_w, fb_h,
+                                                         static_cast<int>(click->x * to_fb),
+                                                         static_cast<int>(click->y * to_fb));
+                        session.click(model, (e.mods & GLFW_MOD_CONTROL) != 0);
+                    }
+                    break;
+                case InputEvent::Scroll:
+                    if (!io.WantCaptureMouse) session.scroll(e.y);
+                    break;
+                case InputEvent::Key: {
+                    if (io.WantCaptureKeyboard || io.WantTextInput) break;
+                    const bool ctrl = (e.mods & GLFW_MOD_CONTROL) != 0, shift = (e.mods & GLFW_MOD_SHIFT) != 0;
+                    if (e.code == GLFW_KEY_SPACE) session.toggle_play(glfwGetTime());
+                    else if ((e.code == GLFW_KEY_U && !ctrl) || (e.code == GLFW_KEY_Z && ctrl && !shift)) {
+                        if (!session.undo()) panels.say("nothing to undo here");
+                    } else if ((e.code == GLFW_KEY_R && !ctrl) || (e.code == GLFW_KEY_Z && ctrl && shift) ||
+                               (e.code == GLFW_KEY_Y && ctrl)) {
+                        if (!session.redo()) panels.say("nothing to redo here");
+                    } else if (e.code == GLFW_KEY_X && !ctrl) {
+                        const auto r = session.export_animation();
+                        panels.say(r.message, !r.ok);
+                    } else if (e.code == GLFW_KEY_Q && !ctrl) {
+                        window_state.close_requested = true;
+                    } else if (e.code == GLFW_KEY_ESCAPE) {
+                        session.cancel_drag();
+                    }
+                    break;
+                }
+                }
+            }
+            double cx = 0, cy = 0;
+            glfwGetCursorPos(window, &cx, &cy);
+            pointer.move(session, glm::dvec2(cx, cy));
+
+            if (window_state.close_requested) {
+                window_state.close_requested = false;
+                if (session.dirty()) panels.ask_to_quit();
+                else quitting = true;
+            }
+            panels.draw(session, static_cast<float>(win_w), static_cast<float>(win_h), glfwGetTime());
+            if (panels.quit_confirmed()) quitting = true;
+
+            session.tick(glfwGetTime());
+            // Bake between frames: a slice small enough to keep playback and the mouse smooth.
+            session.bake_some(session.playing() || pointer.down() ? 0.008 : 0.03);
+
+            if (drawn_version != session.version()) {
+                try {
+                    renderer.set_document(session.document(), session.meshes());
+                } catch (const std::exception &e) {
+                    panels.say(e.what(), true);
+                }
+                drawn_version = session.version();
+            }
+            if (session.title() != title) {
+                title = session.title();
+                glfwSetWindowTitle(window, title.c_str());
+            }
+
+            ImGui::Render();
+            if (fb_w > 0 && fb_h > 0) renderer.draw(session.frame(), RenderTarget{0, fb_w, fb_h}, session.selection());
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glViewport(0, 0, fb_w, fb_h);
+            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+            glfwSwapBuffers(window);
+            if (frames_to_draw > 0) --frames_to_draw;
+        }
+        exit_code = 0;
+    }
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return exit_code;
+}
+
+} // namespace animator

@@ -1,0 +1,397 @@
+#include "editor/editor_panels.hpp"
+
+#include <animator/shading.h>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+namespace animator {
+
+namespace {
+
+// A value widget commits when let go (a slider, a colour, a typed number) or at once (a
+// checkbox, a radio button), so one gesture is one edit.
+bool let_go(bool changed) { return (changed && !ImGui::IsItemActive()) || ImGui::IsItemDeactivatedAfterEdit(); }
+
+// A dropdown of asset ids with "(none)" first; true when the choice changed.
+bool asset_combo(const char *label, std::string &value, const std::vector<std::string> &ids) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, value.empty() ? "(none)" : value.c_str())) {
+        if (ImGui::Selectable("(none)", value.empty())) {
+            changed = !value.empty();
+            value.clear();
+        }
+        for (const std::string &id : ids)
+            if (ImGui::Selectable(id.c_str(), id == value)) {
+                changed = id != value;
+                value = id;
+            }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+bool colour(const char *label, glm::dvec3 &c) {
+    float rgb[3] = {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
+    const bool changed = ImGui::ColorEdit3(label, rgb);
+    if (changed) c = glm::dvec3(rgb[0], rgb[1], rgb[2]);
+    return changed;
+}
+
+bool slider(const char *label, double &value, double lo, double hi, const char *format = "%.3f",
+            ImGuiSliderFlags flags = 0) {
+    return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
+}
+
+std::string time_label(std::int64_t ms) {
+    char text[64];
+    std::snprintf(text, sizeof text, "t = %lld ms", static_cast<long long>(ms));
+    return text;
+}
+
+} // namespace
+
+void Panels::say(const std::string &message, bool error) {
+    message_ = message;
+    message_error_ = error;
+    (error ? std::cerr : std::cout) << "animator: " << message << std::endl; // a test reads it
+}
+
+void Panels::show_error(const std::string &title, const std::string &message) {
+    error_title_ = title;
+    error_text_ = message;
+    error_pending_ = true;
+    say(title + ": " + message, true);
+}
+
+void Panels::commit(bool ok, const std::string &error) {
+    if (!ok) say(error, true);
+}
+
+void Panels::draw(EditorSession &session, float width, float height, double wall) {
+    // Drafts follow the document unless the user is in the middle of changing one.
+    if (!ImGui::IsAnyItemActive() || draft_version_ != session.version()) {
+        settings_draft_ = session.document().settings();
+        model_draft_.reset();
+        draft_version_ = session.version();
+    }
+    animator_panel(session, height, wall);
+    if (session.last_selected() >= 0) model_panel(session, width, height);
+    dialogs(session);
+}
+
+void Panels::animator_panel(EditorSession &session, float height, double wall) {
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(340, std::min(height - 20.0f, 760.0f)), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Animator Interface")) {
+        ImGui::End();
+        return;
+    }
+    const Document &doc = session.document();
+    Settings &s = *settings_draft_;
+
+    int mode = static_cast<int>(session.mode());
+    ImGui::TextUnformatted("Mode");
+    ImGui::RadioButton("Camera", &mode, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("Rotate", &mode, 1);
+    ImGui::SameLine();
+    ImGui::RadioButton("Translate", &mode, 2);
+    ImGui::SameLine();
+    ImGui::RadioButton("Scale", &mode, 3);
+    session.set_mode(static_cast<EditMode>(mode));
+
+    // The Time slider scrubs: it moves the scene, it is not an edit.
+    std::int64_t t = session.time_ms();
+    const std::int64_t zero = 0, max_ms = doc.settings().max_time_ms;
+    if (ImGui::SliderScalar("Time (ms)", ImGuiDataType_S64, &t, &zero, &max_ms, "%lld")) {
+        session.pause();
+        session.set_time_ms(t);
+    }
+    if (ImGui::Button(session.playing() ? "Pause" : "Play")) session.toggle_play(wall);
+    ImGui::SameLine();
+    if (ImGui::Button("Stop")) {
+        session.pause();
+        session.set_time_ms(0);
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled("(SPACE)");
+
+    // Max Time in seconds, 1 s .. 300000 s; shortening asks before deleting later keyframes.
+    double max_s = static_cast<double>(s.max_time_ms) / 1000.0;
+    if (slider("Max Time (s)", max_s, 1.0, 300000.0, "%.3f", ImGuiSliderFlags_Logarithmic))
+        s.max_time_ms = std::clamp<std::int64_t>(static_cast<std::int64_t>(max_s * 1000.0 + 0.5),
+                                                 Settings::kMinMaxTimeMs, Settings::kMaxMaxTimeMs);
+    if (ImGui::IsItemDeactivatedAfterEdit()) {
+        const auto &keys = doc.keyframes();
+        const bool loses = std::any_of(keys.begin(), keys.end(), [&](const Keyframe &k) { return k.time_ms > s.max_time_ms; });
+        if (loses) {
+            confirm_settings_ = s;
+            ImGui::OpenPopup("Delete keyframes?");
+        } else {
+            std::string error;
+            commit(session.set_settings(s, &error), error);
+        }
+    }
+    if (ImGui::BeginPopupModal("Delete keyframes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        int later = 0;
+        for (const Keyframe &k : doc.keyframes()) later += confirm_settings_ && k.time_ms > confirm_settings_->max_time_ms;
+        ImGui::Text("Shortening the animation deletes %d keyframe%s past the new max time.", later, later == 1 ? "" : "s");
+        if (ImGui::Button("Delete them")) {
+            std::string error;
+            if (confirm_settings_) commit(session.set_settings(*confirm_settings_, &error), error);
+            confirm_settings_.reset();
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) {
+            confirm_settings_.reset();
+            settings_draft_ = doc.settings();
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+
+    ImGui::Separator();
+    ImGui::TextUnformatted("Keyframes");
+    ImGui::BeginChild("keyframes", ImVec2(0, 140), true);
+    std::optional<std::int64_t> to_delete;
+    for (const Keyframe &k : doc.keyframes()) {
+        ImGui::PushID(static_cast<int>(k.time_ms % 2147483647));
+        if (ImGui::RadioButton(time_label(k.time_ms).c_str(), k.time_ms == session.time_ms())) {
+            session.pause();
+            session.set_time_ms(k.time_ms);
+        }
+        if (k.time_ms != 0) {
+            ImGui::SameLine();
+            if (ImGui::SmallButton("Delete")) to_delete = k.time_ms;
+        }
+        ImGui::PopID();
+    }
+    ImGui::EndChild();
+    if (to_delete) {
+        std::string error;
+        commit(session.delete_keyframe(*to_delete, &error), error);
+    }
+
+    ImGui::Separator();
+    if (let_go(slider("Gravity (m/s^2)", s.gravity, 0.0, 50.0, "%.2f"))) {
+        std::string error;
+        commit(session.set_settings(s, &error), error);
+    }
+    int axis = static_cast<int>(s.down_axis);
+    ImGui::TextUnformatted("Down axis");
+    ImGui::SameLine();
+    bool axis_changed = ImGui::RadioButton("X", &axis, 0);
+    ImGui::SameLine();
+    axis_changed |= ImGui::RadioButton("Y", &axis, 1);
+    ImGui::SameLine();
+    axis_changed |= ImGui::RadioButton("Z", &axis, 2);
+    if (axis_changed) {
+        s.down_axis = static_cast<Axis>(axis);
+        std::string error;
+        commit(session.set_settings(s, &error), error);
+    }
+    if (ImGui::Checkbox("Cel Shading", &s.cel_shading)) {
+        std::string error;
+        commit(session.set_settings(s, &error), error);
+    }
+    if (asset_combo("Skybox", s.skybox, env_.assets.list(ANI_ASSET_SKYBOX))) {
+        std::string error;
+        commit(session.set_settings(s, &error), error);
+    }
+
+    ImGui::Separator();
+    physics_backend(session);
+
+    ImGui::Separator();
+    if (ImGui::Button("Undo (u)")) session.undo();
+    ImGui::SameLine();
+    if (ImGui::Button("Redo (r)")) session.redo();
+    ImGui::SameLine();
+    if (ImGui::Button("Export (x)")) {
+        const auto r = session.export_animation();
+        say(r.message, !r.ok);
+    }
+    if (!message_.empty()) {
+        if (message_error_) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", message_.c_str());
+        if (message_error_) ImGui::PopStyleColor();
+    }
+    ImGui::End();
+}
+
+void Panels::physics_backend(EditorSession &session) {
+    const std::string current = session.backend();
+    if (ImGui::BeginCombo("Physics", current.c_str())) {
+        for (const PluginInfo *p : env_.plugins.find_kind(ANI_KIND_PHYSICS)) {
+            const std::string label = p->id + "  (" + p->name + ")";
+            if (ImGui::Selectable(label.c_str(), p->id == current) && p->id != current) {
+                std::string error;
+                if (session.use_backend(p->id, error)) say("physics backend: " + p->id);
+                else say("could not switch to " + p->id + ": " + error, true);
+            }
+        }
+        ImGui::EndCombo();
+    }
+    if (session.baking()) {
+        char text[64];
+        std::snprintf(text, sizeof text, "baking %.0f%%", 100.0 * session.bake_progress());
+        ImGui::ProgressBar(static_cast<float>(session.bake_progress()), ImVec2(-1, 0), text);
+    } else if (!session.bake_error().empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("bake failed: %s", session.bake_error().c_str());
+        ImGui::PopStyleColor();
+    } else {
+        ImGui::ProgressBar(1.0f, ImVec2(-1, 0), "baked");
+    }
+
+    // The backend's parameters, saved in the document (settings.params[backend]).
+    const PluginInfo *info = env_.plugins.find(current);
+    if (!info || !info->descriptor || info->descriptor->param_count == 0) return;
+    if (!ImGui::TreeNode("Backend parameters")) return;
+    Settings &s = *settings_draft_;
+    for (uint32_t i = 0; i < info->descriptor->param_count; ++i) {
+        const ani_param_descriptor &d = info->descriptor->params[i];
+        auto saved = s.params[current].find(d.id);
+        ParamValue value = saved != s.params[current].end()
+                               ? saved->second
+                               : ParamValue{d.default_value.value[0], d.default_value.value[1], d.default_value.value[2], d.default_value.value[3]};
+        bool changed = false;
+        switch (d.kind) {
+        case ANI_PARAM_BOOL: {
+            bool b = value[0] != 0.0;
+            changed = ImGui::Checkbox(d.name, &b);
+            value[0] = b ? 1.0 : 0.0;
+            break;
+        }
+        case ANI_PARAM_ENUM: {
+            int index = static_cast<int>(value[0]);
+            const char *preview = index >= 0 && static_cast<uint32_t>(index) < d.enum_count ? d.enum_labels[index] : "?";
+            if (ImGui::BeginCombo(d.name, preview)) {
+                for (uint32_t e = 0; e < d.enum_count; ++e)
+                    if (ImGui::Selectable(d.enum_labels[e], static_cast<int>(e) == index)) {
+                        changed = static_cast<int>(e) != index;
+                        value[0] = e;
+                    }
+                ImGui::EndCombo();
+            }
+            break;
+        }
+        case ANI_PARAM_INT: {
+            long long v = static_cast<long long>(value[0]);
+            const long long lo = static_cast<long long>(d.min_value), hi = static_cast<long long>(d.max_value);
+            changed = ImGui::SliderScalar(d.name, ImGuiDataType_S64, &v, &lo, &hi, "%lld");
+            value[0] = static_cast<double>(v);
+            break;
+        }
+        case ANI_PARAM_COLOUR: {
+            float rgba[4] = {static_cast<float>(value[0]), static_cast<float>(value[1]), static_cast<float>(value[2]),
+                             static_cast<float>(value[3])};
+            changed = ImGui::ColorEdit4(d.name, rgba);
+            value = {rgba[0], rgba[1], rgba[2], rgba[3]};
+            break;
+        }
+        default: { // float, angle, time
+            const bool wide = d.min_value > 0.0 && d.max_value / d.min_value > 1000.0;
+            changed = slider(d.name, value[0], d.min_value, d.max_value, "%.6g", wide ? ImGuiSliderFlags_Logarithmic : 0);
+            break;
+        }
+        }
+        if (d.description && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", d.description);
+        if (changed) s.params[current][d.id] = value;
+        if (let_go(changed)) {
+            std::string error;
+            commit(session.set_settings(s, &error), error);
+        }
+    }
+    ImGui::TreePop();
+}
+
+void Panels::model_panel(EditorSession &session, float width, float height) {
+    const int index = session.last_selected();
+    if (!model_draft_ || model_draft_index_ != index) {
+        model_draft_ = session.document().models()[static_cast<size_t>(index)];
+        model_draft_index_ = index;
+    }
+    ImGui::SetNextWindowPos(ImVec2(width - 370, 10), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(360, std::min(height - 20.0f, 560.0f)), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Model Interface")) {
+        ImGui::End();
+        return;
+    }
+    ImGui::PushItemWidth(-130.0f); // room for the longest label
+    Model &m = *model_draft_;
+    bool done = false; // a change to commit now
+    ImGui::Text("%s%s", m.name.c_str(), session.selection().size() > 1 ? "  (last selected)" : "");
+
+    if (ImGui::CollapsingHeader("Physics", ImGuiTreeNodeFlags_DefaultOpen)) {
+        done |= ImGui::Checkbox("Dynamics", &m.dynamics);
+        done |= ImGui::Checkbox("Gravity", &m.gravity);
+        done |= let_go(slider("Mass (kg)", m.mass, 0.01, 1000.0, "%.3f", ImGuiSliderFlags_Logarithmic));
+    }
+    if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
+        done |= let_go(colour("kd", m.material.kd));
+        done |= let_go(colour("ks", m.material.ks));
+        done |= asset_combo("Texture", m.texture, env_.assets.list(ANI_ASSET_TEXTURE));
+        if (!m.texture.empty()) done |= let_go(slider("Tint", m.tint, 0.0, 1.0));
+        done |= let_go(slider("Shininess", m.material.shininess, 0.0, ANI_SHININESS_MAX, "%.1f"));
+        done |= let_go(slider("Reflectivity", m.reflectivity, 0.0, 1.0));
+        done |= let_go(slider("Transparency", m.transparency, 0.0, 1.0));
+        done |= let_go(slider("Refractive index", m.refractive_index, 1.0, 3.0));
+    }
+    if (ImGui::CollapsingHeader("Sound", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const auto sounds = env_.assets.list(ANI_ASSET_SOUND);
+        done |= asset_combo("Collision", m.collision_sound, sounds);
+        done |= asset_combo("Moving", m.moving_sound, sounds);
+    }
+    ImGui::PopItemWidth();
+    ImGui::End();
+    if (done) {
+        std::string error;
+        commit(session.set_model(index, m, &error), error);
+        model_draft_.reset();
+    }
+}
+
+void Panels::dialogs(EditorSession &session) {
+    if (error_pending_) {
+        ImGui::OpenPopup("Error");
+        error_pending_ = false;
+    }
+    if (ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::TextUnformatted(error_title_.c_str());
+        ImGui::PushTextWrapPos(600.0f);
+        ImGui::TextUnformatted(error_text_.c_str());
+        ImGui::PopTextWrapPos();
+        if (ImGui::Button("OK")) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+    if (quit_asked_) {
+        ImGui::OpenPopup("Unsaved changes");
+        quit_asked_ = false;
+    }
+    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::TextUnformatted("The animation has changes that were not exported.");
+        if (ImGui::Button("Export and quit")) {
+            const auto r = session.export_animation();
+            say(r.message, !r.ok);
+            quit_confirmed_ = r.ok;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Quit without exporting")) {
+            quit_confirmed_ = true;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+}
+
+} // namespace animator

@@ -1,0 +1,54 @@
+// The editor's Dear ImGui windows (seed, "The Animator Interface" and "The Model Interface"):
+// what they show comes from the session, and every change they make goes back through it as an
+// undoable edit. Sliders and colour editors edit a draft and commit once, when let go, so a drag
+// of a slider is one edit.
+#pragma once
+
+#include "editor/editor_session.hpp"
+
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace animator {
+
+class Panels {
+  public:
+    explicit Panels(Environment &env) : env_(env) {}
+
+    // Draws the Animator Interface (left) and, with a model selected, the Model Interface
+    // (right), in a window `width` x `height` (screen coordinates).
+    void draw(EditorSession &session, float width, float height, double wall);
+
+    // A line for the status bar: the last thing that happened or went wrong.
+    void say(const std::string &message, bool error = false);
+    const std::string &message() const { return message_; }
+
+    // Set by the window when the user asks to quit with unsaved changes; the panel asks.
+    void ask_to_quit() { quit_asked_ = true; }
+    // True once the user has confirmed quitting (or exported first).
+    bool quit_confirmed() const { return quit_confirmed_; }
+    // A dialog with an error the user must see (a file that failed to open).
+    void show_error(const std::string &title, const std::string &message);
+
+  private:
+    void animator_panel(EditorSession &session, float height, double wall);
+    void model_panel(EditorSession &session, float width, float height);
+    void physics_backend(EditorSession &session);
+    void dialogs(EditorSession &session);
+    void commit(bool ok, const std::string &error);
+
+    Environment &env_;
+    std::optional<Settings> settings_draft_;
+    std::optional<Model> model_draft_;
+    int model_draft_index_ = -1;
+    std::uint64_t draft_version_ = 0;
+    std::optional<Settings> confirm_settings_; // a shorter max time, waiting for confirmation
+    std::string message_;
+    bool message_error_ = false;
+    bool quit_asked_ = false, quit_confirmed_ = false;
+    std::string error_title_, error_text_;
+    bool error_pending_ = false;
+};
+
+} // namespace animator

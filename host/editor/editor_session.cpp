@@ -1,0 +1,347 @@
+#include "editor/editor_session.hpp"
+
+#include "io/document_io.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace fs = std::filesystem;
+
+namespace animator {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+constexpr double kMinChunk = 1e-3; // seconds of animation
+
+} // namespace
+
+EditorSession::EditorSession(Environment &env)
+    : env_(env), timeline_(std::make_unique<Timeline>(doc_, env.plugins)) {}
+
+fs::path EditorSession::demo_path(const AssetPaths &assets) {
+    for (const fs::path &root : assets.roots()) {
+        std::error_code ec;
+        if (fs::is_regular_file(root / "scenes" / "simple.lua", ec)) return root / "scenes" / "simple.lua";
+    }
+    return {};
+}
+
+bool EditorSession::open(const fs::path &path, std::string &error) {
+    try {
+        OpenedDocument opened = open_document(env_.plugins, path);
+        auto timeline = std::make_unique<Timeline>(opened.document, env_.plugins);
+        std::vector<std::string> ids, warnings;
+        for (const Model &m : opened.document.models()) ids.push_back(m.mesh);
+        auto meshes = load_meshes(ids, env_.assets, path, warnings);
+        timeline->set_meshes(meshes);
+        // Nothing can fail from here on: the new document replaces the old one whole.
+        doc_ = std::move(opened.document);
+        saved_ = doc_;
+        path_ = path;
+        export_to_path_ = path.extension() == ".ani";
+        timeline_ = std::move(timeline);
+        meshes_ = std::move(meshes);
+        warnings_ = std::move(warnings);
+        history_.clear();
+        selection_.clear();
+        last_selected_ = -1;
+        drag_.reset();
+        playing_ = false;
+        time_ms_ = 0;
+        chunk_ = 0.25;
+        bake_error_.clear();
+        dirty_ = false;
+        ++version_;
+        return true;
+    } catch (const std::exception &e) {
+        error = e.what();
+        return false;
+    }
+}
+
+void EditorSession::set_time_ms(std::int64_t ms) {
+    time_ms_ = std::clamp<std::int64_t>(ms, 0, doc_.settings().max_time_ms);
+}
+
+bool EditorSession::bake_some(double budget) {
+    if (!bake_error_.empty()) return false;
+    const double end = max_time();
+    const auto start = std::chrono::steady_clock::now();
+    while (timeline_->baked_until() < end && seconds_since(start) < budget) {
+        const double until = std::min(end, timeline_->baked_until() + chunk_);
+        const auto slice = std::chrono::steady_clock::now();
+        // A slice far over budget is given up and tried smaller (never the smallest one).
+        const bool may_cancel = chunk_ > kMinChunk;
+        try {
+            timeline_->bake(until, [&](double) { return !may_cancel || seconds_since(slice) < 4.0 * budget; });
+        } catch (const BakeCancelled &) {
+            chunk_ = std::max(kMinChunk, chunk_ / 4.0);
+            continue;
+        } catch (const std::exception &e) {
+            bake_error_ = e.what();
+            return false;
+        }
+        const double took = seconds_since(slice);
+        if (took < budget / 4.0) chunk_ *= 2.0;
+        else if (took > budget) chunk_ = std::max(kMinChunk, chunk_ / 2.0);
+    }
+    return timeline_->baked_until() < end;
+}
+
+void EditorSession::toggle_play(double wall) {
+    if (playing_) {
+        playing_ = false;
+        return;
+    }
+    if (time_ms_ >= doc_.settings().max_time_ms) time_ms_ = 0; // at the end, play from the start
+    playing_ = true;
+    play_from_ = time();
+    play_wall_ = wall;
+}
+
+void EditorSession::tick(double wall) {
+    if (!playing_) return;
+    double t = play_from_ + (wall - play_wall_);
+    // Real time: frames are dropped rather than slowed. Only the bake can hold playback back.
+    const double baked = timeline_->baked_until();
+    if (t > baked && baked < max_time()) {
+        play_wall_ += t - baked;
+        t = baked;
+    }
+    if (t >= max_time()) {
+        t = max_time();
+        playing_ = false;
+    }
+    time_ms_ = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor(t * 1000.0)), 0,
+                                        doc_.settings().max_time_ms);
+}
+
+void EditorSession::click(int model, bool add) {
+    if (model < 0 || model >= static_cast<int>(doc_.models().size())) {
+        if (!add) {
+            selection_.clear();
+            last_selected_ = -1;
+        }
+        return;
+    }
+    if (!add) {
+        selection_ = {model};
+        last_selected_ = model;
+    } else if (selection_.erase(model)) {
+        if (last_selected_ == model) last_selected_ = selection_.empty() ? -1 : *selection_.rbegin();
+    } else {
+        selection_.insert(model);
+        last_selected_ = model;
+    }
+}
+
+Frame EditorSession::frame() const {
+    Frame f = timeline_->evaluate(std::min(time(), timeline_->baked_until()));
+    if (!drag_) return f;
+    if (mode_ == EditMode::Camera) {
+        f.camera = drag_camera(drag_->camera, drag_->button, drag_->delta, drag_->metres_per_pixel);
+        return f;
+    }
+    for (const auto &[m, start] : drag_->models) {
+        const ModelState s = drag_model(start, mode_, drag_->button, drag_->delta, drag_->metres_per_pixel);
+        ModelPose &pose = f.models[static_cast<size_t>(m)];
+        pose.center = s.center;
+        pose.angles = s.angles;
+        pose.scale = s.scale;
+    }
+    return f;
+}
+
+ModelState EditorSession::state_now(int model, const Frame &frame) const {
+    const int k = keyframe_here();
+    if (k >= 0) {
+        const auto &state = doc_.keyframes()[static_cast<size_t>(k)].states[static_cast<size_t>(model)];
+        if (state) return *state;
+    }
+    const ModelPose &pose = frame.models[static_cast<size_t>(model)];
+    ModelState s;
+    s.center = pose.center;
+    s.angles = pose.angles;
+    s.scale = pose.scale;
+    return s;
+}
+
+double EditorSession::view_depth(const Frame &frame) const {
+    // The depth of what is dragged: the selected models' centers, else the scene's.
+    const glm::dvec3 forward = frame.camera.rotation * glm::dvec3(0, 0, -1);
+    double sum = 0.0;
+    int n = 0;
+    const bool models = mode_ != EditMode::Camera && !selection_.empty();
+    for (size_t m = 0; m < frame.models.size(); ++m) {
+        if (models && !selection_.count(static_cast<int>(m))) continue;
+        sum += glm::dot(frame.models[m].center - frame.camera.position, forward);
+        ++n;
+    }
+    const double depth = n > 0 ? sum / n : 10.0;
+    return depth > 0.1 ? depth : 10.0;
+}
+
+void EditorSession::begin_drag(DragButton button, int viewport_height) {
+    if (playing_ || (mode_ != EditMode::Camera && selection_.empty())) return;
+    const Frame f = timeline_->evaluate(std::min(time(), timeline_->baked_until()));
+    Drag d{button, viewport_height, glm::dvec2(0.0), {}, f.camera,
+           metres_per_pixel(view_depth(f), f.camera.fov_degrees, viewport_height)};
+    if (mode_ != EditMode::Camera)
+        for (int m : selection_) d.models.emplace_back(m, state_now(m, f));
+    drag_ = d;
+}
+
+void EditorSession::update_drag(glm::dvec2 delta) {
+    if (drag_) drag_->delta = delta;
+}
+
+std::unique_ptr<Edit> EditorSession::transform_edit(const std::vector<std::pair<int, ModelState>> &models,
+                                                    const std::optional<CameraState> &camera) const {
+    if (keyframe_here() < 0) {
+        // A transformation at a time with no keyframe creates one, keying only what moved.
+        Keyframe k;
+        k.time_ms = time_ms_;
+        k.states.resize(doc_.models().size());
+        for (const auto &[m, s] : models) k.states[static_cast<size_t>(m)] = s;
+        k.camera = camera;
+        return std::make_unique<AddKeyframeEdit>(std::move(k));
+    }
+    std::vector<std::unique_ptr<Edit>> edits;
+    for (const auto &[m, s] : models) edits.push_back(std::make_unique<SetStateEdit>(time_ms_, m, s));
+    if (camera) edits.push_back(std::make_unique<SetCameraEdit>(time_ms_, camera));
+    if (edits.size() == 1) return std::move(edits.front());
+    return std::make_unique<CompositeEdit>("transform models", std::move(edits));
+}
+
+void EditorSession::end_drag() {
+    if (!drag_) return;
+    const Drag d = *drag_;
+    drag_.reset();
+    if (d.delta == glm::dvec2(0.0)) return;
+    if (mode_ == EditMode::Camera) {
+        perform(transform_edit({}, drag_camera(d.camera, d.button, d.delta, d.metres_per_pixel)));
+        return;
+    }
+    std::vector<std::pair<int, ModelState>> after;
+    for (const auto &[m, start] : d.models) {
+        const ModelState s = drag_model(start, mode_, d.button, d.delta, d.metres_per_pixel);
+        if (!(s == start)) after.emplace_back(m, s);
+    }
+    if (!after.empty()) perform(transform_edit(after, std::nullopt));
+}
+
+void EditorSession::scroll(double notches) {
+    if (playing_ || drag_ || mode_ != EditMode::Camera || notches == 0.0) return;
+    const Frame f = frame();
+    perform(transform_edit({}, scroll_camera(f.camera, notches, view_depth(f))));
+}
+
+std::int64_t EditorSession::history_key() const {
+    // Away from a keyframe only the document's stack applies: no keyframe is at -1 ms.
+    return keyframe_here() >= 0 ? time_ms_ : -1;
+}
+
+void EditorSession::changed() {
+    ++version_;
+    dirty_ = !(doc_ == saved_);
+    if (time_ms_ > doc_.settings().max_time_ms) time_ms_ = doc_.settings().max_time_ms;
+    bake_error_.clear();
+    chunk_ = 0.25;
+}
+
+bool EditorSession::perform(std::unique_ptr<Edit> edit, std::string *error) {
+    try {
+        // Tried on a copy first: the timeline may refuse the result (a missing plugin), and then
+        // neither the document nor the history changes.
+        Document trial = doc_;
+        edit->apply(trial);
+        timeline_->edit(trial);
+        history_.perform(doc_, std::move(edit));
+    } catch (const std::exception &e) {
+        if (error) *error = e.what();
+        return false;
+    }
+    changed();
+    return true;
+}
+
+bool EditorSession::set_settings(const Settings &settings, std::string *error) {
+    if (settings == doc_.settings()) return true;
+    return perform(std::make_unique<SetSettingsEdit>(settings), error);
+}
+
+bool EditorSession::set_model(int index, const Model &model, std::string *error) {
+    if (model == doc_.models()[static_cast<size_t>(index)]) return true;
+    return perform(std::make_unique<SetModelEdit>(index, model), error);
+}
+
+bool EditorSession::delete_keyframe(std::int64_t time_ms, std::string *error) {
+    return perform(std::make_unique<DeleteKeyframeEdit>(time_ms), error);
+}
+
+bool EditorSession::undo() {
+    if (drag_ || !history_.undo(doc_, history_key())) return false;
+    timeline_->edit(doc_);
+    changed();
+    return true;
+}
+
+bool EditorSession::redo() {
+    if (drag_ || !history_.redo(doc_, history_key())) return false;
+    timeline_->edit(doc_);
+    changed();
+    return true;
+}
+
+bool EditorSession::use_backend(const std::string &id, std::string &error) {
+    try {
+        timeline_->use_backend(id);
+    } catch (const std::exception &e) {
+        error = e.what();
+        return false;
+    }
+    bake_error_.clear();
+    chunk_ = 0.25;
+    return true;
+}
+
+EditorSession::ExportResult EditorSession::export_animation() {
+    ExportResult r;
+    fs::path target = path_;
+    std::string note;
+    if (!export_to_path_) {
+        // Never over a file the user did not open: animations/new.ani, or a fresh name beside it.
+        const fs::path folder = "animations";
+        target = folder / "new.ani";
+        std::error_code ec;
+        for (int n = 1; fs::exists(target, ec); ++n) target = folder / ("new-" + std::to_string(n) + ".ani");
+        if (target.filename() != "new.ani") note = " (animations/new.ani exists and was not opened here, so a fresh name was chosen)";
+        fs::create_directories(folder, ec);
+    }
+    r.path = target;
+    try {
+        save_document(env_.plugins, doc_, target);
+    } catch (const std::exception &e) {
+        r.message = std::string("export failed, the old file is unchanged: ") + e.what();
+        return r;
+    }
+    r.ok = true;
+    r.message = "exported to " + target.string() + note;
+    path_ = target;
+    export_to_path_ = true;
+    saved_ = doc_;
+    dirty_ = false;
+    return r;
+}
+
+std::string EditorSession::title() const {
+    const std::string name = path_.empty() ? "untitled" : path_.filename().string();
+    return "animator - " + name + (dirty_ ? " *" : "");
+}
+
+} // namespace animator

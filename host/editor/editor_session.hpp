@@ -1,0 +1,158 @@
+// The editor's state without a window: the document being edited and where it came from, its
+// undo history, the timeline and its bake, the current time and playback, the selection, the
+// mode, and a mouse drag in progress. The window (editor_app.hpp) turns events into calls here
+// and draws what this says; everything a user can do is testable without a display.
+#pragma once
+
+#include "document/history.hpp"
+#include "editor/manipulation.hpp"
+#include "io/environment.hpp"
+#include "timeline/timeline.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace animator {
+
+class EditorSession {
+  public:
+    explicit EditorSession(Environment &env);
+
+    // Opens a .lua scene or an .ani animation. On failure the current document stays, and the
+    // message (naming the file, and the line where the format knows it) goes to `error`.
+    bool open(const std::filesystem::path &path, std::string &error);
+    // The demo scene shipped with the program (assets/scenes/simple.lua).
+    static std::filesystem::path demo_path(const AssetPaths &assets);
+
+    const Document &document() const { return doc_; }
+    const std::filesystem::path &path() const { return path_; }
+    const Timeline &timeline() const { return *timeline_; }
+    const std::vector<std::shared_ptr<const Mesh>> &meshes() const { return meshes_; }
+    // Changes on every change of the document, so a view knows when to look again.
+    std::uint64_t version() const { return version_; }
+    // Warnings from opening (a mesh that could not be found...), for the window to show.
+    const std::vector<std::string> &warnings() const { return warnings_; }
+
+    // The current time, in whole milliseconds as the seed's Time slider, within [0, max time].
+    std::int64_t time_ms() const { return time_ms_; }
+    double time() const { return static_cast<double>(time_ms_) / 1000.0; }
+    void set_time_ms(std::int64_t ms);
+    // Index of the keyframe at the current time, or -1.
+    int keyframe_here() const { return doc_.find_keyframe(time_ms_); }
+    double max_time() const { return static_cast<double>(doc_.settings().max_time_ms) / 1000.0; }
+
+    // Bakes on towards the max time for about `budget` seconds of wall time, in slices, so the
+    // window stays responsive. Returns true while more remains to bake.
+    bool bake_some(double budget);
+    bool baking() const { return !bake_error_.empty() ? false : timeline_->baked_until() < max_time(); }
+    double bake_progress() const { return max_time() > 0 ? timeline_->baked_until() / max_time() : 1.0; }
+    // Why the last bake failed (the backend's message), or "".
+    const std::string &bake_error() const { return bake_error_; }
+
+    // Playback in real time from the current time (`wall` is a clock in seconds). While the bake
+    // has not reached the time to show, playback waits for it; at the max time it stops.
+    bool playing() const { return playing_; }
+    void toggle_play(double wall);
+    void pause() { playing_ = false; }
+    void tick(double wall);
+
+    // Selection: a click on model `model` (-1: empty space); with `add` (CTRL) it toggles the
+    // model in the selection, else selects it alone. The last one selected is the one the
+    // Model Interface shows.
+    void click(int model, bool add);
+    const std::set<int> &selection() const { return selection_; }
+    int last_selected() const { return last_selected_; }
+
+    EditMode mode() const { return mode_; }
+    void set_mode(EditMode mode) { mode_ = mode; }
+
+    // A drag with `button` over a viewport `viewport_height` pixels tall: the camera in Camera
+    // mode, else every selected model. The preview shows in frame(); end_drag() makes it one
+    // undoable edit, of the keyframe at the current time, or of a new keyframe there.
+    void begin_drag(DragButton button, int viewport_height);
+    void update_drag(glm::dvec2 delta);
+    void end_drag();
+    void cancel_drag() { drag_.reset(); }
+    bool dragging() const { return drag_.has_value(); }
+    // The scroll wheel in Camera mode: moves the camera along its view, one undoable edit.
+    void scroll(double notches);
+
+    // What to draw: every model and the camera at the current time (within what is baked), with
+    // a drag in progress applied.
+    Frame frame() const;
+
+    // Applies an edit, records it for undo and re-bakes from the earliest time it affects.
+    // Returns false (with the reason in `error`) and changes nothing when it cannot be applied.
+    bool perform(std::unique_ptr<Edit> edit, std::string *error = nullptr);
+    bool set_settings(const Settings &settings, std::string *error = nullptr);
+    bool set_model(int index, const Model &model, std::string *error = nullptr);
+    bool delete_keyframe(std::int64_t time_ms, std::string *error = nullptr);
+    // Undo and redo at the current keyframe (its own stack, then the document's).
+    bool undo();
+    bool redo();
+    bool can_undo() const { return history_.can_undo(history_key()); }
+    bool can_redo() const { return history_.can_redo(history_key()); }
+
+    // Swaps the physics backend while the program runs (not an edit of the document: the file
+    // keeps its own choice). A backend that fails leaves the previous one and says why.
+    bool use_backend(const std::string &id, std::string &error);
+    std::string backend() const { return timeline_->backend_id(); }
+
+    struct ExportResult {
+        bool ok = false;
+        std::filesystem::path path;
+        std::string message; // what happened, for the status line
+    };
+    // Saves to the opened .ani, else to animations/new.ani under the working folder; never
+    // over a file the user did not open (a fresh name is chosen and said). A failed save leaves
+    // the old file and says why.
+    ExportResult export_animation();
+    bool dirty() const { return dirty_; }
+    // "animator - drop.ani *": the file, and a mark for unsaved changes.
+    std::string title() const;
+
+  private:
+    struct Drag {
+        DragButton button;
+        int viewport_height;
+        glm::dvec2 delta{0.0};
+        std::vector<std::pair<int, ModelState>> models; // at the start
+        CameraState camera;                              // at the start
+        double metres_per_pixel;
+    };
+    std::int64_t history_key() const;
+    void changed();
+    ModelState state_now(int model, const Frame &frame) const;
+    std::unique_ptr<Edit> transform_edit(const std::vector<std::pair<int, ModelState>> &models,
+                                         const std::optional<CameraState> &camera) const;
+    double view_depth(const Frame &frame) const;
+
+    Environment &env_;
+    Document doc_, saved_;
+    std::filesystem::path path_;   // the opened file, or the last one exported to
+    bool export_to_path_ = false;  // path_ is an .ani this session may write
+    std::unique_ptr<Timeline> timeline_;
+    std::vector<std::shared_ptr<const Mesh>> meshes_;
+    std::vector<std::string> warnings_;
+    EditHistory history_;
+    std::uint64_t version_ = 0;
+    bool dirty_ = false;
+
+    std::int64_t time_ms_ = 0;
+    bool playing_ = false;
+    double play_from_ = 0.0, play_wall_ = 0.0;
+    double chunk_ = 0.25; // seconds of animation per bake slice, adapted to the budget
+    std::string bake_error_;
+
+    std::set<int> selection_;
+    int last_selected_ = -1;
+    EditMode mode_ = EditMode::Camera;
+    std::optional<Drag> drag_;
+};
+
+} // namespace animator
