@@ -1,14 +1,12 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds animator, and runs its main job on the demo animation.
-# Until the editor lands (issue "The editor"), the main job is `animator info`: it prints the
-# demo's settings, models and keyframes. Extra arguments replace the default command, e.g.
-#   tools/run.sh plugins
+# Installs what is missing, builds animator, and opens the editor on the demo scene (it needs a
+# display; on a machine without one, run it under `xvfb-run -a`). Extra arguments are passed to
+# `animator`, e.g.
+#   tools/run.sh assets/animations/drop.ani      # the editor on another file
+#   tools/run.sh plugins                         # a subcommand
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./tools/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build build -j "$(nproc)"   # the program and every plugin (and the tests)
-if [ $# -eq 0 ]; then
-  set -- info assets/animations/drop.ani
-fi
 exec ./build/bin/animator "$@"
