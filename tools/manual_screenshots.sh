@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Takes the screenshots of docs/manual.md from the real editor: starts it on the demo scene under
+# Xvfb, drives it with xdotool as a user would, and writes docs/manual/*.png.
+# Usage: tools/manual_screenshots.sh [build/bin/animator]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin=$(realpath "${1:-build/bin/animator}")
+out=$(realpath docs/manual)
+mkdir -p "$out"
+work=$(mktemp -d)
+editor=""
+xvfb=""
+cleanup() {
+  [ -n "$editor" ] && kill "$editor" 2>/dev/null
+  [ -n "$xvfb" ] && kill "$xvfb" 2>/dev/null
+  rm -rf "$work"
+}
+trap cleanup EXIT
+# A free display number: the first without a lock file.
+n=90
+while [ -e "/tmp/.X$n-lock" ]; do n=$((n + 1)); done
+Xvfb ":$n" -screen 0 1280x720x24 >/dev/null 2>&1 &
+xvfb=$!
+export DISPLAY=":$n"
+sleep 1
+(cd "$work" && exec "$bin") >"$work/log" 2>&1 &
+editor=$!
+win=""
+for _ in $(seq 50); do
+  win=$(xdotool search --name '^animator' 2>/dev/null | head -1 || true)
+  [ -n "$win" ] && break
+  sleep 0.2
+done
+[ -n "$win" ] || { echo "the editor did not open a window:" >&2; cat "$work/log" >&2; exit 1; }
+sleep 2
+
+shot() { sleep "${2:-0.6}"; import -window root "$out/$1.png"; }
+# ImGui 1.86 sees one mouse position per frame: give it a moment between actions.
+click() { xdotool mousemove --window "$win" "$1" "$2" click 1; sleep 0.4; }
+
+xdotool windowfocus --sync "$win"
+shot 01-editor
+click 415 250                  # the red ball: selected, tinted yellow, its Model Interface opens
+shot 02-selected
+xdotool key space              # play: the ball falls and bounces
+shot 03-playing 0.55
+xdotool key space              # pause
+click 27 370                   # Cel Shading
+shot 04-cel-shading
+click 27 370                   # back to Phong
+click 560 380                  # the textured cube
+click 174 63                   # Translate mode
+xdotool mousemove --window "$win" 128 86 keydown ctrl click 1 keyup ctrl   # the Time slider as a text field
+sleep 0.4
+xdotool key ctrl+a type 4000
+xdotool key Return
+sleep 0.4
+xdotool mousemove --window "$win" 560 380 mousedown 3
+for dx in 20 40 60 80 100 120 140 160; do
+  xdotool mousemove --window "$win" $((560 + dx)) $((380 - dx / 4))
+  sleep 0.05
+done
+xdotool mouseup 3
+shot 05-new-keyframe
+echo "wrote 5 screenshots to $out"
