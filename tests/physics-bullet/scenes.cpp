@@ -63,7 +63,7 @@ template <class F> Measured worst_phase(F &&bake_at_phase) {
 
 } // namespace
 
-Measured drop_on_plane(double dt) {
+Measured drop_on_plane(double dt, const std::string &backend) {
     return worst_phase([&](double phase) {
         const double r = 0.5 * unit_sphere_radius();
         // About 3 m, placed so the ball reaches the floor `phase` of a step later.
@@ -72,7 +72,7 @@ Measured drop_on_plane(double dt) {
         Document doc;
         doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, glm::dvec3(10.0)));
         doc.add_model(model("ball", "sphere", true, true), placed({0.3, h, 0.2}, glm::dvec3(0.5)));
-        auto t = timeline_of(with_param(doc, "step", dt));
+        auto t = timeline_of(with_param(doc, "step", dt), backend);
         return timed_bake(*t, first + 4.5 * period, [&](Measured &m) {
             // Each apex: the vertex of a free segment's parabola, where it lies within the segment.
             for (const ani_motion_segment &s : t->segments(1)) {
@@ -94,7 +94,8 @@ Measured drop_on_plane(double dt) {
     });
 }
 
-Measured two_spheres(double dt, double offset_in_radii, double u1, double u2) {
+Measured two_spheres(double dt, double offset_in_radii, double u1, double u2,
+                     const std::string &backend) {
     return worst_phase([&](double phase) {
         const double r = 0.5 * unit_sphere_radius(), m1 = 1.0, m2 = 3.0;
         const double b = offset_in_radii * r;
@@ -107,7 +108,7 @@ Measured two_spheres(double dt, double offset_in_radii, double u1, double u2) {
         const double shift = phase * dt * (u1 - u2);
         doc.add_model(a, placed({-1.0 - shift, b, 0}, glm::dvec3(0.5)));
         doc.add_model(c, placed({1.0, 0, 0}, glm::dvec3(0.5)));
-        auto t = timeline_of(with_param(doc, "step", dt));
+        auto t = timeline_of(with_param(doc, "step", dt), backend);
         // Contact when the centers are 2 r apart: along x, 2 + shift - (u1 - u2) t = sqrt(4 r^2 -
         // b^2).
         const double along = std::sqrt(4.0 * r * r - b * b);
@@ -131,7 +132,7 @@ Measured two_spheres(double dt, double offset_in_radii, double u1, double u2) {
     });
 }
 
-Measured cradle(double dt) {
+Measured cradle(double dt, const std::string &backend) {
     return worst_phase([&](double phase) {
         Document doc = load("cradle.ani");
         const int striker = doc.find_model("striker");
@@ -139,7 +140,7 @@ Measured cradle(double dt) {
         const double x_striker = start.center.x - phase * dt * 2.0;
         start.center.x = x_striker;
         doc.set_state(0, striker, start);
-        auto t = timeline_of(with_param(doc, "step", dt));
+        auto t = timeline_of(with_param(doc, "step", dt), backend);
         return timed_bake(*t, 5.0, [&](Measured &m) {
             // The striker (2 m/s) meets ball1 (x = 0) when 2 r apart; each ball then moves by the
             // gap between surfaces (the centers are 1.001 apart) and stops; ball4 leaves with 2 m/s
@@ -165,7 +166,7 @@ Measured cradle(double dt) {
     });
 }
 
-Measured ball_in_box(double dt, double seconds) {
+Measured ball_in_box(double dt, double seconds, const std::string &backend) {
     const double r = 0.5 * unit_sphere_radius(), half = 5.0, L = half - r;
     Document doc = no_gravity();
     Settings s = doc.settings();
@@ -176,7 +177,7 @@ Measured ball_in_box(double dt, double seconds) {
     const glm::dvec3 v0(1.3, 0.7, 0.3);
     ball.initial_velocity = v0;
     doc.add_model(ball, placed({0.5, -1.0, 2.0}, glm::dvec3(0.5)));
-    auto t = timeline_of(with_param(doc, "step", dt));
+    auto t = timeline_of(with_param(doc, "step", dt), backend);
     return timed_bake(*t, seconds, [&](Measured &m) {
         const double e0 = glm::dot(v0, v0);
         for (const ani_motion_segment &seg : t->segments(1)) {
@@ -190,12 +191,23 @@ Measured ball_in_box(double dt, double seconds) {
             for (const glm::dvec3 &p : ends)
                 for (int c = 0; c < 3; ++c) m.error2 = std::max(m.error2, std::abs(p[c]) - L);
         }
+        // The exact path: each coordinate unfolded (x0 + v t) and folded back into [-L, L].
+        const glm::dvec3 x0(0.5, -1.0, 2.0);
+        for (int k = 0; k <= 1000; ++k) {
+            const double time = seconds * k / 1000.0;
+            const glm::dvec3 at = t->evaluate(time).models[1].center;
+            for (int c = 0; c < 3; ++c) {
+                const double w = std::fmod(x0[c] + v0[c] * time + L, 4.0 * L);
+                const double exact = w < 2.0 * L ? w - L : 3.0 * L - w;
+                m.error3 = std::max(m.error3, std::abs(at[c] - exact));
+            }
+        }
     });
 }
 
 const double kThrough = 1e300;
 
-Measured thin_wall(double dt, double speed, bool ccd) {
+Measured thin_wall(double dt, double speed, bool ccd, const std::string &backend) {
     return worst_phase([&](double phase) {
         const double r = 0.1 * unit_sphere_radius();
         Document doc = no_gravity();
@@ -206,7 +218,7 @@ Measured thin_wall(double dt, double speed, bool ccd) {
         ball.initial_velocity = {-speed, 0, 0};
         const double x0 = 1.0 + phase * dt * speed;
         doc.add_model(ball, placed({x0, 0.1, 0.1}, glm::dvec3(0.1)));
-        auto t = timeline_of(with_param(with_param(doc, "step", dt), "ccd", ccd ? 1.0 : 0.0));
+        auto t = timeline_of(with_param(with_param(doc, "step", dt), "ccd", ccd ? 1.0 : 0.0), backend);
         const double hit = (x0 - r) / speed;
         const double until = hit + 2.0 * dt;
         return timed_bake(*t, until, [&](Measured &m) {
@@ -260,6 +272,27 @@ Measured stone(double dt) {
             if (f.models[1].velocity != glm::dvec3(0.0) || f.motion[1] != ANI_MOTION_REST)
                 m.error = 1.0;
             m.error2 = t->events().size() == 1 ? std::abs(t->events()[0].t - landing) : 1.0;
+        });
+    });
+}
+
+Measured sliding_on_floor(double dt, const std::string &backend) {
+    return worst_phase([&](double phase) {
+        const double r = 0.25 * unit_sphere_radius(), u = 1.5, until = 2.0;
+        Document doc;
+        doc.add_model(model("floor", "floor_fine", false, false),
+                      placed({0, 0, 0}, glm::dvec3(4.0)));
+        Model ball = model("ball", "sphere", true, true);
+        ball.initial_velocity = {u, 0, 0.3 * u};
+        // Its path crosses the floor's grid lines at `phase` of a step later.
+        doc.add_model(ball, placed({-1.7 + phase * dt * u, r, -0.4}, glm::dvec3(0.25)));
+        auto t = timeline_of(with_param(doc, "step", dt), backend);
+        return timed_bake(*t, until, [&](Measured &m) {
+            for (int k = 0; k <= 100 * static_cast<int>(until); ++k) {
+                const ModelPose p = t->evaluate(0.01 * k).models[1];
+                m.error = std::max(m.error, std::abs(p.center.y - r));
+                m.error2 = std::max(m.error2, std::abs(p.velocity.y));
+            }
         });
     });
 }

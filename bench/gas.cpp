@@ -1,0 +1,167 @@
+// Scaling: a gas of N spheres in a closed box at a fixed density, N = 100 .. 10,000, baked through
+// the timeline by each backend in a process of its own (for its memory).
+#include "bench.hpp"
+
+#include "bullet_support.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+
+namespace animator::bench {
+
+namespace bt = animator::bullet_test;
+
+namespace {
+
+// N balls of radius 0.2 on a jittered cubic lattice of spacing 0.5 (a volume fraction of 0.27),
+// random velocities up to 1 m/s per axis, masses in [0.5, 2], inside a closed box (the cube mesh)
+// just wider than the lattice; no gravity. Model 0 is the box.
+Document gas(int n, double bullet_step, uint64_t seed) {
+    Document doc;
+    Settings s = doc.settings();
+    s.gravity = 0.0;
+    s.max_time_ms = 1000000;
+    s.params["physics.bullet"]["step"] = {bullet_step, 0.0, 0.0, 0.0};
+    doc.set_settings(s);
+    const int side = static_cast<int>(std::ceil(std::cbrt(static_cast<double>(n))));
+    const double spacing = 0.5, scale = 0.2;
+    const double r = bt::unit_sphere_radius() * scale;
+    doc.add_model(bt::model("box", "cube", false, false),
+                  bt::placed({0, 0, 0}, glm::dvec3(0.5 * side * spacing + 0.1)));
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> jitter(-0.1, 0.1), velocity(-1.0, 1.0), mass(0.5, 2.0);
+    for (int k = 0; k < n; ++k) {
+        Model ball = bt::model("ball" + std::to_string(k), "sphere", true, false);
+        ball.mass = mass(rng);
+        ball.initial_velocity = {velocity(rng), velocity(rng), velocity(rng)};
+        const glm::dvec3 cell(k % side, (k / side) % side, k / (side * side));
+        doc.add_model(ball, bt::placed((cell - glm::dvec3(0.5 * (side - 1))) * spacing +
+                                           glm::dvec3(jitter(rng), jitter(rng), jitter(rng)) *
+                                               (spacing - 2.0 * r),
+                                       glm::dvec3(scale)));
+    }
+    return doc;
+}
+
+struct Totals {
+    double energy = 0.0;
+    double overlap = 0.0; // the deepest overlap of two balls, relative to the radius
+};
+
+Totals totals(const Document &doc, const Timeline &t, double time) {
+    const Frame f = t.evaluate(time);
+    Totals out;
+    const size_t n = doc.models().size();
+    for (size_t k = 1; k < n; ++k) {
+        const double m = doc.models()[k].mass;
+        const glm::dvec3 v = f.models[k].velocity;
+        out.energy += 0.5 * m * glm::dot(v, v);
+    }
+    // Every pair (the momentum is not kept: the walls take it).
+    const double r = 0.2 * bt::unit_sphere_radius();
+    for (size_t a = 1; a < n; ++a)
+        for (size_t b = a + 1; b < n; ++b) {
+            const glm::dvec3 d = f.models[a].center - f.models[b].center;
+            const double d2 = glm::dot(d, d);
+            if (d2 < 4.0 * r * r) out.overlap = std::max(out.overlap, (2.0 * r - std::sqrt(d2)) / r);
+        }
+    return out;
+}
+
+double count(const Timeline &t, const char *name) {
+    const auto &c = t.stats().backend_counts;
+    const auto it = c.find(name);
+    return it == c.end() ? 0.0 : it->second;
+}
+
+} // namespace
+
+void run_gas(const Options &o) {
+    const std::vector<int> sizes = o.quick ? std::vector<int>{100, 300}
+                                           : std::vector<int>{100, 300, 1000, 3000, 10000};
+    // Bullet's step for the gas: the largest of 1/240 .. 1/4000 s keeping its energy error near
+    // 1e-3 (measured: see docs/performance.md).
+    const double bullet_step = 1.0 / 1000.0;
+    Csv csv(o.out / "gas.csv",
+            {"backend", "n", "step", "sim_seconds", "wall_s", "wall_per_sim_s", "runs",
+             "collisions", "collisions_per_s", "energy_error", "overlap", "peak_rss_mb",
+             "baseline_rss_mb", "pair_tests_done", "pair_tests_skipped"});
+    const double baseline = resident_mb();
+    std::cout << "N balls (r 0.2, volume fraction 0.27, up to 1 m/s per axis) in a closed box. "
+                 "Simulated time: about "
+              << (o.quick ? "20,000" : "100,000")
+              << " collisions' worth for physics.custom; for Bullet (step 1/"
+              << std::lround(1.0 / bullet_step)
+              << " s) as much but at most 2,500 / N s. Energy error and overlap at the end.\n";
+    std::cout << "| backend | N | sim s | wall s | wall s per sim s | collisions/s | energy "
+                 "error | deepest overlap / r | peak MB | pair tests skipped |\n";
+    std::vector<std::pair<double, double>> fit[2]; // (log N, log wall per sim s) per backend
+    for (int n : sizes) {
+        for (int b = 0; b < 2; ++b) {
+            const std::string backend = b == 0 ? "physics.custom" : "physics.bullet";
+            // About 4.7 collisions per ball per second at this density: physics.custom bakes
+            // about 100,000 collisions (20,000 in a quick run); Bullet (about 3.5 us per ball and
+            // step at 1/1000 s here) at most that, and at most 2,500 / N s.
+            const double sim_custom = (o.quick ? 2e4 : 1e5) / (4.7 * n);
+            const double sim = b == 0 ? sim_custom : std::min(sim_custom, (o.quick ? 25.0 : 2500.0) / n);
+            const int runs = o.runs;
+            double peak = 0.0;
+            const std::vector<double> r = in_child(
+                [&] {
+                    const Document doc = gas(n, bullet_step, 7);
+                    std::vector<double> wall;
+                    std::vector<double> out;
+                    for (int k = 0; k < runs; ++k) {
+                        auto t = bt::timeline_of(doc, backend);
+                        const auto start = std::chrono::steady_clock::now();
+                        t->bake(sim);
+                        wall.push_back(seconds_since(start));
+                        if (k > 0) continue;
+                        const Totals a = totals(doc, *t, 0.0), z = totals(doc, *t, sim);
+                        out = {static_cast<double>(t->events().size()),
+                               std::abs(z.energy - a.energy) / a.energy, z.overlap,
+                               count(*t, "pair tests done"), count(*t, "pair tests skipped")};
+                    }
+                    out.insert(out.begin(), median(wall));
+                    return out;
+                },
+                peak);
+            if (r.size() != 6) throw std::runtime_error("the gas with " + backend + " failed");
+            const double wall = r[0], collisions = r[1];
+            csv << backend << static_cast<double>(n) << (b == 0 ? 0.0 : bullet_step) << sim
+                << wall << wall / sim << static_cast<double>(runs) << collisions
+                << collisions / wall << r[2] << r[3] << peak << baseline << r[4] << r[5];
+            csv.end_row();
+            fit[b].emplace_back(std::log(static_cast<double>(n)), std::log(wall / sim));
+            const double skipped = r[4] + r[5] > 0.0 ? r[5] / (r[4] + r[5]) : 0.0;
+            std::cout << "| " << backend << " | " << n << " | " << fmt(sim) << " | " << fmt(wall)
+                      << " | " << fmt(wall / sim) << " | " << fmt(collisions / wall) << " | "
+                      << fmt(r[2]) << " | " << fmt(r[3]) << " | " << fmt(peak) << " | "
+                      << (b == 0 ? fmt(100.0 * skipped) + "%" : std::string("-")) << " |\n";
+        }
+    }
+    // Least squares of log(wall per simulated second) against log N.
+    Csv exponents(o.out / "gas_fit.csv", {"backend", "exponent", "points"});
+    for (int b = 0; b < 2; ++b) {
+        const auto &pts = fit[b];
+        const auto m = static_cast<double>(pts.size());
+        double sx = 0, sy = 0, sxx = 0, sxy = 0;
+        for (const auto &[x, y] : pts) {
+            sx += x;
+            sy += y;
+            sxx += x * x;
+            sxy += x * y;
+        }
+        const double slope = m > 1 ? (m * sxy - sx * sy) / (m * sxx - sx * sx) : 0.0;
+        const char *backend = b == 0 ? "physics.custom" : "physics.bullet";
+        exponents << backend << slope << m;
+        exponents.end_row();
+        std::cout << backend << ": wall time per simulated second ~ N^" << fmt(slope)
+                  << " (N log N over this range would be about N^1.1)\n";
+    }
+}
+
+} // namespace animator::bench
