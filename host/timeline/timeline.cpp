@@ -103,25 +103,31 @@ ani_body_state Timeline::state_at(int model, double t) const {
 }
 
 void Timeline::set_meshes(const std::vector<std::shared_ptr<const Mesh>> &meshes) {
+    // One view per distinct mesh: a gas of 10,000 balls shares one sphere's vertex array.
+    std::map<const Mesh *, std::shared_ptr<const MeshView>> views;
     meshes_.clear();
     for (const auto &mesh : meshes) {
         if (!mesh) {
             meshes_.push_back(nullptr);
             continue;
         }
-        auto mv = std::make_unique<MeshView>();
-        mv->mesh = mesh;
-        for (const glm::dvec3 &p : mesh->positions) mv->positions.insert(mv->positions.end(), {p.x, p.y, p.z});
-        ani_mesh_view &v = mv->view;
-        v.struct_size = sizeof v;
-        v.positions = mv->positions.data();
-        v.vertex_count = static_cast<uint32_t>(mesh->positions.size());
-        v.triangles = mesh->triangles.data();
-        v.triangle_count = static_cast<uint32_t>(mesh->triangle_count());
-        v.bound_center = to_ani(mesh->bound_center);
-        v.bound_radius = mesh->bound_radius;
-        v.is_sphere = approximates_sphere(*mesh) ? 1 : 0;
-        meshes_.push_back(std::move(mv));
+        auto &shared = views[mesh.get()];
+        if (!shared) {
+            auto mv = std::make_shared<MeshView>();
+            mv->mesh = mesh;
+            for (const glm::dvec3 &p : mesh->positions) mv->positions.insert(mv->positions.end(), {p.x, p.y, p.z});
+            ani_mesh_view &v = mv->view;
+            v.struct_size = sizeof v;
+            v.positions = mv->positions.data();
+            v.vertex_count = static_cast<uint32_t>(mesh->positions.size());
+            v.triangles = mesh->triangles.data();
+            v.triangle_count = static_cast<uint32_t>(mesh->triangle_count());
+            v.bound_center = to_ani(mesh->bound_center);
+            v.bound_radius = mesh->bound_radius;
+            v.is_sphere = approximates_sphere(*mesh) ? 1 : 0;
+            shared = std::move(mv);
+        }
+        meshes_.push_back(shared);
     }
     truncate(0.0);
     baked_any_ = false;

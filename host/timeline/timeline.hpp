@@ -99,7 +99,7 @@ class Timeline {
         std::vector<double> positions;
         ani_mesh_view view{};
     };
-    std::vector<std::unique_ptr<MeshView>> meshes_; // per model, null without a mesh
+    std::vector<std::shared_ptr<const MeshView>> meshes_; // per model (shared by models with one mesh), null without
     std::vector<std::vector<ani_motion_segment>> segments_;
     std::vector<ani_collision_event> events_;
     std::vector<std::vector<ani_rotation_segment>> rotations_; // per model, in time order
