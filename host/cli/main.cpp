@@ -18,6 +18,7 @@ int run_cli(int argc, char **argv) {
     add_bake_command(app, run);
     add_compare_command(app, run);
     add_render_command(app, run);
+    add_soundtrack_command(app, run);
     add_edit_command(app, run);
 
     try {

@@ -1,8 +1,11 @@
 // `animator render FILE --out DIR`: bakes an animation and writes its frames as PNG files
 // (DIR/frame_00000.png, ...), off screen through EGL, so it works on a machine with no display.
+// With `--video PATH.mp4` it also mixes the soundtrack (docs/sound.md) and has ffmpeg, when
+// installed, put frames and sound together.
 #include "cli/cli_support.hpp"
 #include "cli/commands.hpp"
 
+#include "audio/mixer.hpp"
 #include "io/document_io.hpp"
 #include "io/environment.hpp"
 #include "render/framebuffer.hpp"
@@ -12,18 +15,26 @@
 #include "timeline/timeline.hpp"
 
 #include <malloc.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <set>
+#include <sstream>
 
 namespace animator::cli {
 
 namespace {
 
+extern "C" char **environ;
+
 struct RenderCommandOptions {
-    std::string file, out, backend, shading = "shading.phong", size = "1280x720";
+    std::string file, out, backend, shading = "shading.phong", size = "1280x720", video;
     std::vector<std::string> params;
     double from = 0.0, to = -1.0, fps = 30.0;
     int compression = 5;
@@ -40,6 +51,81 @@ std::string parse_size(const std::string &text, int *width = nullptr, int *heigh
     if (width) *width = w;
     if (height) *height = h;
     return "";
+}
+
+// The executable `name` in a folder of PATH, or nothing.
+std::optional<std::filesystem::path> find_on_path(const std::string &name) {
+    const char *path = std::getenv("PATH");
+    std::istringstream folders(path ? path : "");
+    std::string folder;
+    while (std::getline(folders, folder, ':')) {
+        const std::filesystem::path candidate =
+            std::filesystem::path(folder.empty() ? "." : folder) / name;
+        if (::access(candidate.c_str(), X_OK) == 0 && !std::filesystem::is_directory(candidate))
+            return candidate;
+    }
+    return std::nullopt;
+}
+
+// Runs `program` with `args` and waits; its exit status, or -1 when it could not start.
+int run_program(const std::filesystem::path &program, const std::vector<std::string> &args) {
+    std::vector<char *> argv;
+    std::vector<std::string> storage = args;
+    storage.insert(storage.begin(), program.string());
+    for (std::string &a : storage) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    if (posix_spawn(&pid, program.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return -1;
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR) return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The frames in `o.out` and the soundtrack of [from, to] into `o.video`, through ffmpeg. The
+// video is written beside its final name first, so a failure leaves an old one intact.
+int write_video(const RenderCommandOptions &o, const Timeline &timeline, audio::SoundBank &bank,
+                double to) {
+    const std::optional<std::filesystem::path> ffmpeg = find_on_path("ffmpeg");
+    if (!ffmpeg) {
+        std::cerr << "animator: --video needs ffmpeg to put the frames and the soundtrack "
+                     "together, and it is not installed (on Debian: sudo apt-get install "
+                     "ffmpeg); the frames are in "
+                  << o.out << "\n";
+        return kBadInput;
+    }
+    const std::filesystem::path sound = std::filesystem::path(o.out) / "soundtrack.wav";
+    audio::MixOptions mix;
+    mix.from = o.from;
+    mix.until = to;
+    {
+        ProgressBar bar("mixing");
+        audio::write_soundtrack(timeline, bank, mix, sound, [&](double f) { return bar(f); });
+    }
+    const std::filesystem::path video(o.video);
+    const std::filesystem::path partial =
+        video.parent_path() /
+        ("." + video.stem().string() + ".partial" + video.extension().string());
+    std::ostringstream fps;
+    fps.precision(17);
+    fps << o.fps;
+    const int status = run_program(
+        *ffmpeg, {"-y", "-loglevel", "error", "-framerate", fps.str(), "-i",
+                  (std::filesystem::path(o.out) / "frame_%05d.png").string(), "-i", sound.string(),
+                  // 4:2:0 video (what players expect) needs even sizes.
+                  "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", "-c:a", "aac",
+                  partial.string()});
+    if (status != 0) {
+        std::error_code ignored;
+        std::filesystem::remove(partial, ignored);
+        std::cerr << "animator: " << o.video << ": ffmpeg (" << ffmpeg->string() << ") failed"
+                  << (status < 0 ? " to start" : "") << "; the frames and soundtrack.wav are in "
+                  << o.out << "\n";
+        return kBadInput;
+    }
+    std::filesystem::rename(partial, video);
+    std::cout << "wrote " << o.video << " (the frames with " << sound.string() << ")\n";
+    return kSuccess;
 }
 
 int run_render(const RenderCommandOptions &o) {
@@ -75,6 +161,11 @@ int run_render(const RenderCommandOptions &o) {
         apply_params(doc, backend, backend_params);
         apply_params(doc, o.shading, shading_params);
 
+        // A video's sounds are read before anything is rendered, so a missing one is said at
+        // once.
+        audio::SoundBank sounds(env.assets);
+        if (!o.video.empty()) audio::load_document_sounds(doc, sounds);
+
         Timeline timeline(doc, env.plugins, o.backend);
         std::vector<std::string> mesh_ids, warnings;
         for (const Model &m : doc.models()) mesh_ids.push_back(m.mesh);
@@ -108,6 +199,7 @@ int run_render(const RenderCommandOptions &o) {
         std::cout << "wrote " << count << " frame" << (count == 1 ? "" : "s") << " of " << width
                   << "x" << height << " to " << o.out << " (" << PngFrameWriter::file_name(0)
                   << (count > 1 ? " .. " + PngFrameWriter::file_name(count - 1) : "") << ")\n";
+        if (!o.video.empty()) return write_video(o, timeline, sounds, to);
         return kSuccess;
     } catch (const std::exception &e) {
         std::cerr << "animator: " << o.file << ": " << e.what() << "\n";
@@ -140,6 +232,9 @@ void add_render_command(CLI::App &app, std::function<int()> &run) {
     cmd->add_option("--compression", o->compression,
                     "PNG compression 5..9 (default 5, the fastest; higher is smaller and slower)")
         ->check(CLI::Range(5, 9));
+    cmd->add_option("--video", o->video,
+                    "also put the frames and the soundtrack together into this video file "
+                    "(PATH.mp4) with ffmpeg, which must be installed");
     cmd->callback([&run, o] { run = [o] { return run_render(*o); }; });
 }
 

@@ -1,5 +1,6 @@
 #include "editor/editor_app.hpp"
 
+#include "audio/live_player.hpp"
 #include "editor/editor_panels.hpp"
 #include "editor/editor_session.hpp"
 #include "render/renderer.hpp"
@@ -164,6 +165,9 @@ int run_editor(const EditorOptions &options) {
         RenderOptions render_options;
         Renderer renderer(env.plugins, env.assets, render_options,
                           [&](const std::string &message) { panels.say(message, true); });
+        // Sound while playing forward (docs/sound.md); without a device, one warning line.
+        audio::LivePlayer player(env.assets, [&](const std::string &message) { panels.say(message, true); });
+        double played_to = 0.0; // the animation time up to which sounds have been played
 
         const std::filesystem::path file = options.file.empty() ? EditorSession::demo_path(env.assets)
                                                                 : std::filesystem::path(options.file);
@@ -252,12 +256,19 @@ int run_editor(const EditorOptions &options) {
             if (panels.quit_confirmed()) quitting = true;
 
             session.tick(glfwGetTime());
+            if (session.playing() && session.time() > played_to) {
+                player.advance(session.timeline(), played_to, session.time());
+            } else if (!session.playing() && played_to != session.time()) {
+                player.stop_all(); // paused, scrubbed or jumped: silence, and start again from here
+            }
+            played_to = session.time();
             // Bake between frames: a slice small enough to keep playback and the mouse smooth.
             session.bake_some(session.playing() || pointer.down() ? 0.008 : 0.03);
 
             if (drawn_version != session.version()) {
                 try {
                     renderer.set_document(session.document(), session.meshes());
+                    player.set_document(session.document());
                 } catch (const std::exception &e) {
                     panels.say(e.what(), true);
                 }

@@ -257,10 +257,12 @@ void Panels::physics_backend(EditorSession &session) {
     Settings &s = *settings_draft_;
     for (uint32_t i = 0; i < info->descriptor->param_count; ++i) {
         const ani_param_descriptor &d = info->descriptor->params[i];
-        auto saved = s.params[current].find(d.id);
-        ParamValue value = saved != s.params[current].end()
-                               ? saved->second
-                               : ParamValue{d.default_value.value[0], d.default_value.value[1], d.default_value.value[2], d.default_value.value[3]};
+        // A value the document does not hold shows the default, and is not written back unless
+        // changed (an empty entry would count as a change of parameters and re-bake).
+        ParamValue value{d.default_value.value[0], d.default_value.value[1], d.default_value.value[2],
+                         d.default_value.value[3]};
+        if (auto plugin = s.params.find(current); plugin != s.params.end())
+            if (auto saved = plugin->second.find(d.id); saved != plugin->second.end()) value = saved->second;
         bool changed = false;
         switch (d.kind) {
         case ANI_PARAM_BOOL: {
