@@ -75,7 +75,7 @@ Document random_document(std::mt19937 &rng, int models, int keyframes) {
     s.physics_backend = rng() % 2 ? "physics.custom" : "physics.bullet";
     s.interpolation = rng() % 2 ? "interpolation.linear" : "interpolation.smooth";
     s.params["physics.bullet"]["step"] = {1.0 / 240.0, 0.0, 0.0, 0.0};
-    s.params["shading.cel"]["outline"] = {unit(rng), unit(rng), unit(rng), 1.0};
+    s.params["shading.phong"]["cel_outline_colour"] = {unit(rng), unit(rng), unit(rng), 1.0};
     doc.set_settings(s);
     for (int i = 0; i < models; ++i) {
         Model m;

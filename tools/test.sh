@@ -12,7 +12,7 @@ run_suite() {
   local dir=$1; shift
   cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
   cmake --build "$dir" -j "$jobs"
-  # Tests that need a display get one from Xvfb (none do yet; the renderer's will).
+  # The editor tests start their own Xvfb (xvfb-run -a); the renderer draws through EGL without one.
   ctest --test-dir "$dir" --output-on-failure -j "$jobs"
 }
 
