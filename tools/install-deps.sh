@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config python3
   libbullet-dev libglfw3-dev python3-glad libimgui-dev libglm-dev libassimp-dev
   libsfml-dev liblua5.4-dev libstb-dev catch2 libcli11-dev
-  libgl-dev xvfb xauth xdotool mesa-utils libgl1-mesa-dri
+  libgl-dev xvfb xauth xdotool imagemagick mesa-utils libgl1-mesa-dri
   libegl-dev libegl-mesa0
 )
 

@@ -12,11 +12,16 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <dlfcn.h>
+#include <link.h>
 #include <malloc.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <deque>
 #include <iostream>
+#include <vector>
 
 namespace animator {
 
@@ -36,16 +41,20 @@ struct WindowState {
     std::deque<InputEvent> events;
     bool woke = false; // anything at all happened: draw a few frames
     bool close_requested = false;
+    // ImGui 1.86 reads keys as up or down once a frame, so a key pressed and released between
+    // two frames (a fast typist, xdotool) would never reach a text field: keys reach ImGui from
+    // this queue, at most one change of each key per frame.
+    GLFWkeyfun imgui_key = nullptr;
+    struct KeyChange {
+        int key, scancode, action, mods;
+    };
+    std::deque<KeyChange> imgui_keys;
 };
 
 WindowState &state_of(GLFWwindow *w) { return *static_cast<WindowState *>(glfwGetWindowUserPointer(w)); }
 
 void install_callbacks(GLFWwindow *window) {
-    glfwSetKeyCallback(window, [](GLFWwindow *w, int key, int, int action, int mods) {
-        auto &s = state_of(w);
-        s.woke = true;
-        if (action == GLFW_PRESS || action == GLFW_REPEAT) s.events.push_back({InputEvent::Key, key, mods, 0, 0});
-    });
+    // Keys: installed over ImGui's own callback (see install_key_callback), not under it.
     glfwSetMouseButtonCallback(window, [](GLFWwindow *w, int button, int action, int mods) {
         auto &s = state_of(w);
         s.woke = true;
@@ -108,8 +117,44 @@ class Pointer {
     glm::dvec2 start_{0.0};
 };
 
+// Keys go to the editor's queue and, through WindowState::imgui_keys, to ImGui. Installed after
+// ImGui's backend, whose callback it wraps.
+void install_key_callback(GLFWwindow *window) {
+    state_of(window).imgui_key = glfwSetKeyCallback(window, [](GLFWwindow *w, int key, int scancode, int action, int mods) {
+        auto &s = state_of(w);
+        s.woke = true;
+        if (action == GLFW_PRESS || action == GLFW_REPEAT) s.events.push_back({InputEvent::Key, key, mods, 0, 0});
+        s.imgui_keys.push_back({key, scancode, action, mods});
+    });
+}
+
+// Before a frame: hands ImGui the queued key changes, stopping at a second change of a key it
+// already got this frame (the rest wait for the next frame).
+void feed_imgui_keys(GLFWwindow *window) {
+    auto &s = state_of(window);
+    std::vector<int> changed;
+    while (!s.imgui_keys.empty()) {
+        const auto k = s.imgui_keys.front();
+        if (std::find(changed.begin(), changed.end(), k.key) != changed.end()) break;
+        changed.push_back(k.key);
+        s.imgui_keys.pop_front();
+        if (s.imgui_key) s.imgui_key(window, k.key, k.scancode, k.action, k.mods);
+    }
+}
+
 void glfw_error(int code, const char *description) {
     std::cerr << "animator: GLFW error " << code << ": " << description << "\n";
+}
+
+// Mesa's driver and its GL dispatch library stay loaded until the process ends, as
+// render/offscreen_context.cpp does for EGL: glfwTerminate unloads them otherwise, and
+// LeakSanitizer then reports what they still hold (libglapi's strdup'ed names, ~5 KB) as leaks
+// of no module, which no suppression can name. Kept loaded, it stays reachable: no report.
+int pin_gl_driver(dl_phdr_info *info, size_t, void *) {
+    const char *name = info->dlpi_name;
+    if (name && (std::strstr(name, "_dri.so") || std::strstr(name, "libglapi.so")))
+        dlopen(name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+    return 0;
 }
 
 } // namespace
@@ -147,6 +192,7 @@ int run_editor(const EditorOptions &options) {
         glfwTerminate();
         return 1;
     }
+    dl_iterate_phdr(pin_gl_driver, nullptr);
     install_callbacks(window); // before ImGui's, which call these after their own work
 
     IMGUI_CHECKVERSION();
@@ -155,6 +201,7 @@ int run_editor(const EditorOptions &options) {
     io.IniFilename = nullptr; // no imgui.ini left in the user's folder
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window, true);
+    install_key_callback(window);
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
     int exit_code = 0;
@@ -185,15 +232,25 @@ int run_editor(const EditorOptions &options) {
         std::string title;
         Pointer pointer;
         int frames_to_draw = 3;
+        // ImGui's fades run on its clock, not on a count of frames: a modal dialog dims the view
+        // over about 0.17 s. After anything happened, frames go on (at most 60 a second) until
+        // then, or the dimming stops part way when a few frames come fast.
+        constexpr double kSettleSeconds = 0.3;
+        double settle_until = glfwGetTime() + kSettleSeconds;
         bool quitting = false;
         while (!quitting) {
             const bool busy = session.playing() || session.baking() || pointer.down() || frames_to_draw > 0;
-            if (busy) glfwPollEvents();
+            if (busy || !window_state.imgui_keys.empty()) glfwPollEvents();
+            else if (glfwGetTime() < settle_until) glfwWaitEventsTimeout(1.0 / 60.0);
             else glfwWaitEvents();
-            if (window_state.woke) frames_to_draw = 3; // ImGui settles within a few frames
+            if (window_state.woke) {
+                frames_to_draw = 3; // ImGui settles within a few frames
+                settle_until = glfwGetTime() + kSettleSeconds;
+            }
             window_state.woke = false;
 
             ImGui_ImplOpenGL3_NewFrame();
+            feed_imgui_keys(window);
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
 

@@ -320,7 +320,9 @@ void Panels::model_panel(EditorSession &session, float width, float height) {
         model_draft_ = session.document().models()[static_cast<size_t>(index)];
         model_draft_index_ = index;
     }
-    ImGui::SetNextWindowPos(ImVec2(width - 370, 10), ImGuiCond_FirstUseEver);
+    // At the right edge, and back there when the window's width changes.
+    ImGui::SetNextWindowPos(ImVec2(width - 370, 10), width != placed_at_width_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
+    placed_at_width_ = width;
     ImGui::SetNextWindowSize(ImVec2(360, std::min(height - 20.0f, 560.0f)), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Model Interface")) {
         ImGui::End();

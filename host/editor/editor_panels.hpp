@@ -49,6 +49,7 @@ class Panels {
     bool quit_asked_ = false, quit_confirmed_ = false;
     std::string error_title_, error_text_;
     bool error_pending_ = false;
+    float placed_at_width_ = 0.0f; // the window width the Model Interface was placed for
 };
 
 } // namespace animator

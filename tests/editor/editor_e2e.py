@@ -1,0 +1,1217 @@
+#!/usr/bin/env python3
+"""End-to-end tests of the editor: the real `animator` under Xvfb, driven with xdotool.
+
+Each case is a function `case_NAME`; one case runs per invocation:
+
+    xvfb-run -a -s "-screen 0 1280x800x24" python3 editor_e2e.py \
+        --bin build/bin/animator --source . --case select_click
+
+Each case starts the program in a fresh temporary working folder (export writes
+./animations/new.ani there) with its own copies of the input files, drives it as a user would
+(clicks, drags, keys), and checks what it wrote (the exported .ani, parsed), what it showed (a
+screenshot: `import -window root`, converted to binary PPM and read here) and what it said
+(stdout/stderr). It ends by quitting the program with `q` and checks the exit code is 0 and that
+no sanitizer reported anything (the suite runs again in an ASan+UBSan build). Exit status 0 on a
+pass; on a failure a message, and the folder kept with the screenshots and logs.
+
+Stdlib only. Needs xdotool and imagemagick (`import`, `convert`), and a display (xvfb-run).
+"""
+
+import argparse
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import traceback
+
+# --- The layout (window coordinates; the window is at the root's (0, 0), 1280x720) ----------
+# Read from screenshots of the editor at its default size (Dear ImGui 1.86, default style and
+# font). The "Animator Interface" is at (10, 10), 340 px wide; its widgets, top to bottom:
+MODE_CAMERA = (28, 63)
+MODE_ROTATE = (101, 63)
+MODE_TRANSLATE = (174, 63)
+MODE_SCALE = (267, 63)
+TIME_SLIDER = (128, 87)          # x 18..238
+PLAY_BUTTON = (36, 110)
+MAX_TIME_SLIDER = (128, 132)
+KEYFRAME_ROW0 = (36, 185)        # the radio of the first keyframe; rows KEYFRAME_ROW_STEP apart
+KEYFRAME_ROW_STEP = 23
+KEYFRAME_DELETE_ROW1 = (158, 208)  # the Delete button beside the second keyframe
+KEYFRAME_LIST = (18, 168, 342, 306)  # x0, y0, x1, y1 of the list's child window
+GRAVITY_SLIDER = (128, 324)
+CEL_CHECKBOX = (27, 370)
+SKYBOX_COMBO = (128, 393)
+PHYSICS_COMBO = (128, 420)
+BAKE_BAR_END = (336, 443)        # the right end of the bake progress bar
+UNDO_BUTTON = (50, 487)
+REDO_BUTTON = (121, 487)
+EXPORT_BUTTON = (200, 487)
+PANEL_RIGHT = 350                # the 3D view is unobstructed right of this (no model panel)
+MODEL_PANEL = (910, 10, 1270, 570)  # the Model Interface: x0, y0, x1, y1 at 1280x720
+MODEL_GRAVITY_CHECKBOX = (927, 109)  # in it: Physics > Gravity (Dynamics is at (927, 86))
+
+WIDTH, HEIGHT = 1280, 720
+BACKGROUND = (round(0.16 * 255), round(0.17 * 255), round(0.20 * 255))  # (41, 43, 51)
+
+# Timeouts: generous, the ASan build is several times slower.
+START_TIMEOUT = 60.0
+ACTION_PAUSE = 0.4
+
+
+class Failure(Exception):
+    pass
+
+
+def check(condition, message):
+    if not condition:
+        raise Failure(message)
+
+
+# --- Images -------------------------------------------------------------------------------------
+
+class Image:
+    """An RGB image read from a binary PPM (P6, maxval 255)."""
+
+    def __init__(self, path):
+        with open(path, 'rb') as f:
+            data = f.read()
+        fields, pos = [], 0
+        while len(fields) < 4:
+            while data[pos:pos + 1].isspace():
+                pos += 1
+            if data[pos:pos + 1] == b'#':
+                while data[pos:pos + 1] not in (b'\n', b''):
+                    pos += 1
+                continue
+            start = pos
+            while not data[pos:pos + 1].isspace():
+                pos += 1
+            fields.append(data[start:pos])
+        check(fields[0] == b'P6' and fields[3] == b'255', '%s: not an 8-bit binary PPM' % path)
+        self.width, self.height = int(fields[1]), int(fields[2])
+        self.pixels = data[pos + 1:pos + 1 + 3 * self.width * self.height]
+        self.path = path
+
+    def at(self, x, y):
+        i = 3 * (y * self.width + x)
+        return tuple(self.pixels[i:i + 3])
+
+    def region(self, x0, y0, x1, y1, step=1):
+        """Yields (x, y, (r, g, b)) in [x0, x1) x [y0, y1)."""
+        for y in range(max(0, y0), min(self.height, y1), step):
+            row = 3 * y * self.width
+            for x in range(max(0, x0), min(self.width, x1), step):
+                i = row + 3 * x
+                yield x, y, (self.pixels[i], self.pixels[i + 1], self.pixels[i + 2])
+
+    def blob(self, predicate, box, step=2):
+        """Pixels in box matching predicate(rgb): (count, centroid x, centroid y, mean rgb),
+        sampling every step-th pixel of every step-th row (the count is scaled back up)."""
+        n = sx = sy = 0
+        sums = [0, 0, 0]
+        for x, y, c in self.region(*box, step=step):
+            if predicate(c):
+                n += 1
+                sx += x
+                sy += y
+                for k in range(3):
+                    sums[k] += c[k]
+        if n == 0:
+            return 0, None, None, None
+        return n * step * step, sx / n, sy / n, tuple(s / n for s in sums)
+
+    def colours(self, box, predicate=lambda c: True, step=1):
+        """How many pixels of each colour in box (those matching predicate)."""
+        counts = {}
+        for _, _, c in self.region(*box, step=step):
+            if predicate(c):
+                counts[c] = counts.get(c, 0) + 1
+        return counts
+
+
+def near(c, ref, tol=6):
+    return all(abs(a - b) <= tol for a, b in zip(c, ref))
+
+
+def is_background(c):
+    return near(c, BACKGROUND, 4)
+
+
+def reddish(c):
+    r, g, b = c
+    return r > 80 and r > g + 50 and r > b + 50
+
+
+# --- The .ani format (docs/ani-format.md), enough to check what was exported -------------------
+
+def tokens(line):
+    out, i = [], 0
+    while i < len(line):
+        ch = line[i]
+        if ch in ' \t':
+            i += 1
+        elif ch == '#':
+            break
+        elif ch == '"':
+            i += 1
+            s = ''
+            while line[i] != '"':
+                if line[i] == '\\':
+                    i += 1
+                    s += {'n': '\n'}.get(line[i], line[i])
+                else:
+                    s += line[i]
+                i += 1
+            i += 1
+            out.append(s)
+        else:
+            j = i
+            while j < len(line) and line[j] not in ' \t':
+                j += 1
+            out.append(line[i:j])
+            i = j
+    return out
+
+
+def parse_ani(path):
+    """{'version', 'settings': {key: [values]}, 'params': [...], 'models': {name: {key: [values]}},
+    'keyframes': {ms: {'camera': [...] or None, 'states': {name: {'center': (x,y,z), ...}}}}}."""
+    with open(path, encoding='utf-8') as f:
+        lines = [tokens(l) for l in f.read().split('\n')]
+    lines = [l for l in lines if l]
+    check(lines and lines[0][0] == 'animator-ani', '%s: does not start with animator-ani' % path)
+    doc = {'version': int(lines[0][1]), 'settings': {}, 'params': [], 'models': {}, 'keyframes': {}}
+    block = None
+    for l in lines[1:]:
+        if block is None:
+            if l[0] == 'settings':
+                block = doc['settings']
+            elif l[0] == 'model':
+                block = doc['models'].setdefault(l[1], {})
+            elif l[0] == 'keyframe':
+                block = doc['keyframes'].setdefault(int(l[1]), {'camera': None, 'states': {}})
+            else:
+                raise Failure('%s: unexpected %r' % (path, l))
+        elif l[0] == 'end':
+            block = None
+        elif l[0] == 'param':
+            doc['params'].append(l[1:])
+        elif l[0] == 'camera':
+            block['camera'] = l[1:]
+        elif l[0] == 'state':
+            st = {}
+            for k in range(2, len(l), 4):
+                st[l[k]] = tuple(float(v) for v in l[k + 1:k + 4])
+            block['states'][l[1]] = st
+        else:
+            block[l[0]] = l[1:]
+    return doc
+
+
+# A scene for the tests: a blue ball in front of the camera, no floor, plain background, no
+# physics moving it, so what is on screen is only what the test did. The camera at z = 12 looks
+# down -Z with a 50 degree field of view: the ball (radius 1) is at the centre of the 3D view,
+# about 64 px in radius at 1280x720.
+BALL_ANI = '''animator-ani 1
+# A blue ball in front of the camera (editor e2e tests).
+
+settings
+  max_time_ms 5000
+  gravity 9.81
+  down y
+  cel_shading false
+  skybox ""
+  physics_backend "physics.custom"
+end
+
+model "ball"
+  mesh "sphere"
+  kd 0.2 0.3 0.9
+  ks 0.5 0.5 0.5
+  shininess 40
+end
+
+keyframe 0
+  camera position 0 0 12 rotation 1 0 0 0 fov 50
+  state "ball" center 0 0 0 angles 0 0 0 scale 1 1 1 turn 0 0 0
+end
+'''
+
+# The size of one pixel at the ball's depth (12 m) in a 720 px tall view, fov 50 degrees.
+METRES_PER_PIXEL = 2 * 12 * 0.46630765815 / 720
+
+# The same ball as a Lua scene (a scene, not an animation: export goes to animations/new.ani).
+BALL_LUA = '''gr.settings{gravity = 9.81, down = 'y', max_time = 5}
+gr.camera{eye = {0, 0, 12}, look_at = {0, 0, 0}, up = {0, 1, 0}, fov = 50}
+local root = gr.node('root')
+local ball = gr.mesh('sphere', 'ball')
+ball:set_material(gr.material({0.2, 0.3, 0.9}, {0.5, 0.5, 0.5}, 40))
+root:add_child(ball)
+return root
+'''
+
+# The ball with a second keyframe at 2 s, 2.4 m to the right.
+BALL_TWO_KEYS_ANI = BALL_ANI + '''
+keyframe 2000
+  state "ball" center 2.4 0 0 angles 0 0 0 scale 1 1 1 turn 0 0 0
+end
+'''
+
+
+# --- The program ---------------------------------------------------------------------------------
+
+SANITIZER_PATTERNS = [r'ERROR: AddressSanitizer', r'ERROR: LeakSanitizer', r'runtime error:',
+                      r'SUMMARY: (Address|Undefined|Leak)Sanitizer']
+
+
+class Editor:
+    """One run of `animator` in the case's working folder, with its window found."""
+
+    def __init__(self, case, args, name='run'):
+        self.case = case
+        self.name = name
+        self.out_path = os.path.join(case.dir, name + '.stdout.txt')
+        self.err_path = os.path.join(case.dir, name + '.stderr.txt')
+        self.out = open(self.out_path, 'wb')
+        self.err = open(self.err_path, 'wb')
+        env = dict(os.environ)
+        case.log('start: %s %s' % (case.bin, ' '.join(args)))
+        self.proc = subprocess.Popen([case.bin] + list(args), cwd=case.work, stdout=self.out,
+                                     stderr=self.err, env=env, start_new_session=True)
+        self.window = None
+        self.exit_code = None
+        deadline = time.time() + START_TIMEOUT
+        while time.time() < deadline:
+            if self.proc.poll() is not None:
+                raise Failure('animator exited (%s) before its window appeared; stderr:\n%s'
+                              % (self.proc.returncode, self.stderr()))
+            r = subprocess.run(['xdotool', 'search', '--pid', str(self.proc.pid), '--name', 'animator'],
+                               capture_output=True, text=True)
+            ids = r.stdout.split()
+            if ids:
+                self.window = ids[0]
+                break
+            time.sleep(0.2)
+        check(self.window, 'no animator window within %.0f s' % START_TIMEOUT)
+        subprocess.run(['xdotool', 'windowfocus', '--sync', self.window], capture_output=True, timeout=10)
+        # The first frames: the scene drawn and the bake under way.
+        self.wait_for(lambda: self.title().startswith('animator - '), 'the title to show the file')
+        time.sleep(1.0)
+
+    # Reading
+    def title(self):
+        r = subprocess.run(['xdotool', 'getwindowname', self.window], capture_output=True, text=True)
+        return r.stdout.strip()
+
+    def stdout(self):
+        self.out.flush()
+        with open(self.out_path, 'rb') as f:
+            return f.read().decode('utf-8', 'replace')
+
+    def stderr(self):
+        self.err.flush()
+        with open(self.err_path, 'rb') as f:
+            return f.read().decode('utf-8', 'replace')
+
+    def running(self):
+        return self.proc.poll() is None
+
+    def cpu_seconds(self):
+        """utime + stime of the process, from /proc/PID/stat."""
+        with open('/proc/%d/stat' % self.proc.pid) as f:
+            fields = f.read().rsplit(')', 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf('SC_CLK_TCK')
+
+    def wait_for(self, condition, what, timeout=30.0):
+        deadline = time.time() + timeout
+        while True:
+            if condition():
+                return
+            if self.proc.poll() is not None:
+                raise Failure('animator exited (%s) while waiting for %s' % (self.proc.returncode, what))
+            if time.time() > deadline:
+                raise Failure('timed out after %.0f s waiting for %s (title %r)' % (timeout, what, self.title()))
+            time.sleep(0.1)
+
+    def wait_log(self, pattern, what=None, timeout=30.0):
+        """Waits for a line matching the regex in stdout or stderr; returns the match."""
+        found = []
+
+        def seen():
+            m = re.search(pattern, self.stdout() + self.stderr(), re.M)
+            if m:
+                found.append(m)
+            return m is not None
+        self.wait_for(seen, what or 'a line matching %r in the log' % pattern, timeout)
+        return found[0]
+
+    def screenshot(self, name):
+        """The whole screen (the window is at (0, 0)), as an Image; the PNG stays in the folder."""
+        time.sleep(0.15)
+        png = os.path.join(self.case.dir, '%02d-%s.png' % (self.case.next_shot(), name))
+        ppm = png[:-4] + '.ppm'
+        subprocess.run(['import', '-window', 'root', png], check=True, capture_output=True, timeout=30)
+        subprocess.run(['convert', png, ppm], check=True, capture_output=True, timeout=30)
+        img = Image(ppm)
+        os.remove(ppm)
+        self.case.log('screenshot %s' % os.path.basename(png))
+        return img
+
+    # Acting
+    def xdo(self, *args):
+        subprocess.run(['xdotool'] + [str(a) for a in args], check=True, capture_output=True, timeout=30)
+
+    def pause(self, seconds=ACTION_PAUSE):
+        time.sleep(seconds)
+
+    def click(self, x, y, button=1, ctrl=False):
+        self.xdo('mousemove', '--window', self.window, x, y)
+        time.sleep(0.1)
+        if ctrl:
+            self.xdo('keydown', 'ctrl')
+            time.sleep(0.1)
+        self.xdo('click', button)
+        if ctrl:
+            time.sleep(0.1)
+            self.xdo('keyup', 'ctrl')
+        self.pause()
+
+    def drag(self, start, end, button=3, steps=10):
+        self.xdo('mousemove', '--window', self.window, *start)
+        time.sleep(0.15)
+        self.xdo('mousedown', button)
+        time.sleep(0.15)
+        for i in range(1, steps + 1):
+            x = start[0] + (end[0] - start[0]) * i / steps
+            y = start[1] + (end[1] - start[1]) * i / steps
+            self.xdo('mousemove', '--window', self.window, round(x), round(y))
+            time.sleep(0.05)
+        time.sleep(0.15)
+        self.xdo('mouseup', button)
+        self.pause()
+
+    def key(self, *keys):
+        """Presses and releases each key, holding it a moment as a hand does: Dear ImGui 1.86
+        sees only the state of a key at each frame, so a press and release that both arrive
+        before the next frame (`xdotool key`) would never reach an ImGui widget (a text field's
+        Return). The editor's own shortcuts are queued and would see even those."""
+        for k in keys:
+            self.xdo('keydown', k)
+            time.sleep(0.08)
+            self.xdo('keyup', k)
+            time.sleep(0.1)
+        self.pause()
+
+    def type(self, text):
+        self.xdo('type', '--delay', 80, text)
+        self.pause()
+
+    def type_into(self, widget, text):
+        """CTRL+click a slider (it becomes a text field, all selected), type, Return."""
+        self.click(*widget, ctrl=True)
+        self.type(text)
+        self.key('Return')
+
+    def mouse_away(self):
+        """Parks the cursor over the 3D view's bottom-right corner, away from every widget."""
+        self.xdo('mousemove', '--window', self.window, WIDTH - 5, HEIGHT - 5)
+        self.pause(0.2)
+
+    def set_time(self, ms):
+        self.type_into(TIME_SLIDER, str(ms))
+
+    def wait_baked(self, timeout=60.0):
+        """Waits for the bake progress bar to read full (its right end filled)."""
+        def full():
+            img = self.screenshot('bake')
+            c = img.at(*BAKE_BAR_END)
+            return c[0] > 150 and c[1] > 100 and c[2] < 60   # ImGui's PlotHistogram yellow
+        self.wait_for(full, 'the bake to finish', timeout)
+
+    # Ending
+    def quit(self, dirty=False, timeout=30.0):
+        """`q`: quits at once, or (dirty) answers the dialog with "Quit without exporting"."""
+        self.key('q')
+        if dirty:
+            time.sleep(1.0)
+            check(self.running(), '`q` with unsaved changes quit without asking')
+            self.click(*QUIT_WITHOUT_EXPORTING)
+        self.wait_exit(timeout)
+
+    def wait_exit(self, timeout=30.0):
+        try:
+            self.exit_code = self.proc.wait(timeout)
+        except subprocess.TimeoutExpired:
+            raise Failure('animator did not exit within %.0f s' % timeout)
+        self.case.log('exit code %d' % self.exit_code)
+        self.check_sanitizers()
+        check(self.exit_code == 0, 'animator exited with %d; stderr:\n%s' % (self.exit_code, self.stderr()[-3000:]))
+
+    def check_sanitizers(self):
+        err = self.stderr()
+        for p in SANITIZER_PATTERNS:
+            m = re.search(p, err)
+            check(m is None, 'a sanitizer reported a problem (%s); see %s' % (m and m.group(0), self.err_path))
+
+    def kill(self):
+        if self.proc.poll() is None:
+            try:
+                os.killpg(self.proc.pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+            self.proc.wait(10)
+        self.out.close()
+        self.err.close()
+
+
+class Case:
+    def __init__(self, args, name):
+        self.bin = os.path.abspath(args.bin)
+        self.source = os.path.abspath(args.source)
+        self.name = name
+        self.dir = tempfile.mkdtemp(prefix='editor-e2e-%s-' % name)
+        self.work = os.path.join(self.dir, 'work')
+        os.makedirs(self.work)
+        self.editors = []
+        self.shots = 0
+        self.log_file = open(os.path.join(self.dir, 'case.log'), 'w')
+
+    def log(self, message):
+        line = '[%7.2f] %s' % (time.time() - START, message)
+        self.log_file.write(line + '\n')
+        self.log_file.flush()
+
+    def next_shot(self):
+        self.shots += 1
+        return self.shots
+
+    def start(self, *args, name=None):
+        e = Editor(self, args, name or 'run%d' % (len(self.editors) + 1))
+        self.editors.append(e)
+        return e
+
+    def write(self, rel, text):
+        path = os.path.join(self.work, rel)
+        os.makedirs(os.path.dirname(path) or '.', exist_ok=True)
+        with open(path, 'w', encoding='utf-8') as f:
+            f.write(text)
+        return path
+
+    def copy(self, source_rel, rel=None):
+        dst = os.path.join(self.work, rel or os.path.basename(source_rel))
+        os.makedirs(os.path.dirname(dst), exist_ok=True)
+        shutil.copyfile(os.path.join(self.source, source_rel), dst)
+        return dst
+
+    def path(self, rel):
+        return os.path.join(self.work, rel)
+
+    def finish(self):
+        for e in self.editors:
+            e.kill()
+        self.log_file.close()
+
+
+START = time.time()
+
+# Popups and dialogs (screenshots at 1280x720):
+SKYBOX_ITEM_DAY = (60, 435)      # the open Skybox list: (none) 418, day 435, night 452, sunset 469
+PHYSICS_ITEM_1 = (100, 444)      # the open Physics list: physics.custom, then physics.bullet
+PHYSICS_ITEM_2 = (100, 461)
+TITLE_BG_ACTIVE = (41, 74, 122)  # ImGui's dark style: a focused window's title bar
+ERROR_DIALOG_TITLE = (640, 326)  # the "Error" modal, centred
+ERROR_DIALOG_BODY = (640, 396)
+ERROR_DIALOG_OK = (18, 387)      # from the dialog's left edge (its width follows the message)
+QUIT_DIALOG_TITLE = (640, 334)   # the "Unsaved changes" modal, centred
+QUIT_EXPORT_AND_QUIT = (524, 378)
+QUIT_WITHOUT_EXPORTING = (669, 378)
+QUIT_CANCEL = (783, 378)
+
+VIEW_BOX = (PANEL_RIGHT + 10, 0, 900, HEIGHT)  # the 3D view left of where the Model Interface goes
+
+
+# --- Checks on screenshots ------------------------------------------------------------------------
+
+def ball_on_screen(e, name):
+    """Screenshot; the test ball's pixels (whatever is not background in the 3D view)."""
+    img = e.screenshot(name)
+    n, x, y, mean = img.blob(lambda px: not is_background(px), VIEW_BOX)
+    check(n > 5000, '%s: the ball is not on screen (%d pixels not background)' % (name, n))
+    e.case.log('%s: ball %d px at (%.1f, %.1f), mean colour %s' % (name, n, x, y, tuple(round(v) for v in mean)))
+    return img, n, x, y, mean
+
+
+def check_selected_tint(name, mean, selected):
+    r, g, b = mean
+    if selected:
+        check(r > b + 40 and g > b + 40, '%s: the selected ball is not tinted yellow (mean colour %s)' % (name, mean))
+    else:
+        check(b > r + 40 and b > g + 40, '%s: the unselected ball is not its own blue (mean colour %s)' % (name, mean))
+
+
+def model_panel_shown(img):
+    """The Model Interface window's title bar and body are drawn at the right."""
+    x0, y0, x1, y1 = MODEL_PANEL
+    title = img.at(x0 + 150, y0 + 9)
+    body = img.at(x0 + 200, y1 - 60)
+    return not is_background(title) and sum(body) < 90  # ImGui's dark window body
+
+
+def keyframe_rows(img):
+    """How many keyframes the list shows: the radio buttons down its left edge."""
+    rows = 0
+    for i in range(6):
+        c = img.at(KEYFRAME_ROW0[0], KEYFRAME_ROW0[1] + i * KEYFRAME_ROW_STEP)
+        # A radio is filled (the current one, blue) or its frame (blue-grey), never the list's
+        # near-black background.
+        if sum(c) > 90:
+            rows += 1
+    return rows
+
+
+def check_moved(name, x, y, dx, dy, tol=4):
+    check(abs(x - (640 + dx)) < tol and abs(y - (360 + dy)) < tol,
+          '%s: the ball is at (%.1f, %.1f), expected near (%d, %d)' % (name, x, y, 640 + dx, 360 + dy))
+
+
+def top_colour_share(img, k=12):
+    """How much of the ball (the non-background pixels of the view) its k most common colours
+    cover: cel shading bands it into about ten flat colours (about 0.99), smooth shading spreads
+    it over hundreds (about 0.16). Also returns the ball's pixel count."""
+    counts = img.colours(VIEW_BOX, lambda c: not is_background(c))
+    total = sum(counts.values())
+    return sum(sorted(counts.values(), reverse=True)[:k]) / max(total, 1), total
+
+
+def check_cel(name, img, cel):
+    share, total = top_colour_share(img)
+    check(total > 5000, '%s: the ball is not on screen' % name)
+    if cel:
+        check(share > 0.9, '%s: not cel shaded: the 12 commonest colours cover %.0f%% of the ball' % (name, 100 * share))
+    else:
+        check(share < 0.5, '%s: not smooth shaded: the 12 commonest colours cover %.0f%% of the ball' % (name, 100 * share))
+
+
+def dialog_left(img, y=ERROR_DIALOG_TITLE[1]):
+    """The left edge of a centred dialog: where its title bar starts on row y."""
+    for x in range(0, WIDTH // 2):
+        if near(img.at(x, y), TITLE_BG_ACTIVE, 12):
+            return x
+    raise Failure('no dialog title bar on row %d' % y)
+
+
+def click_error_ok(e, img):
+    e.click(dialog_left(img) + ERROR_DIALOG_OK[0], ERROR_DIALOG_OK[1])
+
+
+def red_ball_y(e, name):
+    """drop.ani's red ball: the y of its centroid."""
+    img = e.screenshot(name)
+    n, x, y, _ = img.blob(reddish, VIEW_BOX)
+    check(n > 2000, '%s: the red ball is not on screen' % name)
+    e.case.log('%s: red ball at (%.1f, %.1f)' % (name, x, y))
+    return y
+
+
+def translate_ball(e, dx, dy, time_ms):
+    """Selects the ball (at the centre), Translate mode, goes to time_ms, drags with the right
+    button by (dx, dy) pixels."""
+    e.click(640, 360)
+    e.click(*MODE_TRANSLATE)
+    if time_ms is not None:
+        e.set_time(time_ms)
+    e.drag((640, 360), (640 + dx, 360 + dy), button=3)
+
+
+# --- Cases ---------------------------------------------------------------------------------------
+
+def case_select_click(c):
+    """Clicking a model selects it (yellow tint, Model Interface), clicking space deselects it;
+    CTRL+click toggles it."""
+    c.write('ball.ani', BALL_ANI)
+    e = c.start('ball.ani')
+    img, n0, x0, y0, mean = ball_on_screen(e, 'before')
+    check(abs(x0 - 640) < 4 and abs(y0 - 360) < 4, 'the ball is not at the centre of the view: (%.0f, %.0f)' % (x0, y0))
+    check_selected_tint('before', mean, False)
+    check(not model_panel_shown(img), 'a Model Interface is shown before anything was selected')
+
+    e.click(round(x0), round(y0))
+    img, n, x, y, mean = ball_on_screen(e, 'selected')
+    check_selected_tint('after the click', mean, True)
+    check(abs(x - x0) < 2 and abs(y - y0) < 2, 'selecting moved the ball')
+    check(model_panel_shown(img), 'no Model Interface after selecting the ball')
+    check(e.title() == 'animator - ball.ani', 'selecting is not an edit, yet the title is %r' % e.title())
+
+    e.click(500, 650)  # empty space
+    img, n, x, y, mean = ball_on_screen(e, 'deselected')
+    check_selected_tint('after a click on empty space', mean, False)
+    check(not model_panel_shown(img), 'the Model Interface stays after deselecting')
+
+    e.click(round(x0), round(y0), ctrl=True)
+    img, n, x, y, mean = ball_on_screen(e, 'ctrl-selected')
+    check_selected_tint('after CTRL+click', mean, True)
+    e.click(round(x0), round(y0), ctrl=True)
+    img, n, x, y, mean = ball_on_screen(e, 'ctrl-deselected')
+    check_selected_tint('after a second CTRL+click', mean, False)
+    e.quit()
+
+
+def case_translate_keyframe(c):
+    """Translate mode at a new time: the ball follows the cursor, a keyframe appears in the
+    list, the title marks the change, `x` exports it into the opened .ani."""
+    c.write('ball.ani', BALL_ANI)
+    e = c.start('ball.ani')
+    check(keyframe_rows(e.screenshot('start')) == 1, 'the list does not show exactly one keyframe at the start')
+    translate_ball(e, 150, -60, 2000)
+    img, n, x, y, mean = ball_on_screen(e, 'dragged')
+    check_moved('after the drag', x, y, 150, -60)
+    check_selected_tint('after the drag', mean, True)
+    check(keyframe_rows(img) == 2, 'no second keyframe in the list after the drag (%d rows)' % keyframe_rows(img))
+    e.wait_for(lambda: e.title() == 'animator - ball.ani *', 'the title to mark the unsaved change')
+
+    # The keyframe at t = 0 still has the ball at the centre.
+    e.click(*KEYFRAME_ROW0)
+    img, n, x, y, mean = ball_on_screen(e, 'at-t0')
+    check_moved('at the t = 0 keyframe', x, y, 0, 0)
+
+    e.key('x')
+    e.wait_log(r'^animator: exported to ball\.ani$', 'the export to the opened file')
+    e.wait_for(lambda: e.title() == 'animator - ball.ani', 'the title to drop the " *" after the export')
+    doc = parse_ani(c.path('ball.ani'))
+    check(sorted(doc['keyframes']) == [0, 2000], 'exported keyframes %s, expected [0, 2000]' % sorted(doc['keyframes']))
+    k = doc['keyframes'][2000]
+    check(list(k['states']) == ['ball'] and k['camera'] is None, 'the new keyframe should key the ball only: %s' % k)
+    cx, cy, cz = k['states']['ball']['center']
+    ex, ey = 150 * METRES_PER_PIXEL, 60 * METRES_PER_PIXEL
+    check(abs(cx - ex) < 0.03 * ex + 0.02 and abs(cy - ey) < 0.03 * ey + 0.02 and abs(cz) < 1e-9,
+          'the exported center (%g, %g, %g), expected about (%.3f, %.3f, 0)' % (cx, cy, cz, ex, ey))
+    check(doc['keyframes'][0]['states']['ball']['center'] == (0.0, 0.0, 0.0), 'keyframe 0 changed')
+
+    # The keyframe's Delete button (beside it in the list), and undo of that.
+    e.click(*KEYFRAME_DELETE_ROW1)
+    e.mouse_away()
+    check(keyframe_rows(e.screenshot('deleted')) == 1, 'Delete did not take the keyframe out of the list')
+    e.wait_for(lambda: e.title() == 'animator - ball.ani *', 'the title to mark the deletion')
+    e.key('u')
+    check(keyframe_rows(e.screenshot('undeleted')) == 2, 'u did not bring the deleted keyframe back')
+    e.wait_for(lambda: e.title() == 'animator - ball.ani', 'the title to be clean again after undoing the deletion')
+    e.quit()
+
+
+def case_model_gravity(c):
+    """The seed's first animation: select the ball, tick Model Interface > Physics > Gravity,
+    press SPACE: the ball falls; the export says the ball has gravity."""
+    # A gentle gravity (2 m/s^2) keeps the ball on screen for the second or so it plays.
+    c.write('ball.ani', BALL_ANI.replace('gravity 9.81', 'gravity 2'))
+    e = c.start('ball.ani')
+    e.click(640, 360)
+    check(model_panel_shown(e.screenshot('selected')), 'no Model Interface after selecting the ball')
+    e.click(*MODEL_GRAVITY_CHECKBOX)
+    e.wait_for(lambda: e.title() == 'animator - ball.ani *', 'the title to mark the change')
+    e.mouse_away()
+    e.wait_baked()
+    _, _, x0, y0, _ = ball_on_screen(e, 't0')
+    check_moved('at t = 0', x0, y0, 0, 0)
+    e.key('space')
+    time.sleep(0.5)
+    e.key('space')
+    _, _, x, y, _ = ball_on_screen(e, 'fallen')
+    # About 1 s of free fall at 2 m/s^2: 1 m, some 64 px at this depth.
+    check(y > y0 + 20 and abs(x - x0) < 2, 'the ball did not fall while playing: (%.1f, %.1f) -> (%.1f, %.1f)' % (x0, y0, x, y))
+    e.key('x')
+    e.wait_log(r'^animator: exported to ball\.ani$', 'the export')
+    check(parse_ani(c.path('ball.ani'))['models']['ball'].get('gravity') == ['true'], 'the ball is not exported with gravity')
+    e.quit()
+
+
+def case_play_space(c):
+    """SPACE plays in real time (the ball interpolates between two keyframes and stops at its
+    last one), SPACE at the end plays again from the start, SPACE pauses; playing is not an edit."""
+    c.write('ball.ani', BALL_TWO_KEYS_ANI)
+    e = c.start('ball.ani')
+    e.mouse_away()
+    e.wait_baked()
+    _, _, x0, y0, _ = ball_on_screen(e, 't0')
+    check_moved('at t = 0', x0, y0, 0, 0)
+    end_x = 640 + 2.4 / METRES_PER_PIXEL
+    e.key('space')
+    start = time.time()
+    xs = []
+    while time.time() - start < 3.5:
+        _, _, x, y, _ = ball_on_screen(e, 'playing')
+        xs.append((time.time() - start, x))
+        check(abs(y - 360) < 4, 'playing moved the ball off its line: y = %.1f' % y)
+    e.case.log('x over time: %s' % [(round(t, 2), round(x)) for t, x in xs])
+    check([x for t, x in xs if x0 + 20 < x < end_x - 20], 'the ball never showed between its keyframes while playing: %s' % xs)
+    check(all(b >= a - 1 for (_, a), (_, b) in zip(xs, xs[1:])), 'the ball went backwards while playing: %s' % xs)
+    check(abs(xs[-1][1] - end_x) < 4, 'after 3.5 s the ball is at x = %.1f, not at its last keyframe (%.1f)' % (xs[-1][1], end_x))
+
+    e.set_time(5000)  # the end: SPACE plays again from the start
+    e.mouse_away()
+    e.key('space')
+    time.sleep(0.8)
+    e.key('space')
+    _, _, xp, _, _ = ball_on_screen(e, 'paused')
+    time.sleep(1.0)
+    _, _, xq, _, _ = ball_on_screen(e, 'still-paused')
+    check(x0 + 5 < xp < end_x - 5, 'paused after ~1 s of playing from the start, the ball is at x = %.1f' % xp)
+    check(abs(xq - xp) < 1, 'the ball moved while paused: %.1f -> %.1f' % (xp, xq))
+    check(e.title() == 'animator - ball.ani', 'playing marked the document changed: %r' % e.title())
+    e.quit()
+
+
+def case_undo_redo(c):
+    """`u` and `r`, and the Undo and Redo buttons, take back and bring back a drag that made a
+    keyframe and one that changed it; the title's " *" follows; the export holds what is current."""
+    c.write('ball.ani', BALL_ANI)
+    e = c.start('ball.ani')
+    translate_ball(e, 150, 0, 2000)
+    img, n, x, y, _ = ball_on_screen(e, 'dragged')
+    check_moved('after the drag', x, y, 150, 0)
+    check(keyframe_rows(img) == 2, 'no keyframe made by the drag')
+
+    e.key('u')
+    img, n, x, y, _ = ball_on_screen(e, 'undone')
+    check_moved('after u', x, y, 0, 0)
+    check(keyframe_rows(img) == 1, 'the keyframe is still listed after u')
+    e.wait_for(lambda: e.title() == 'animator - ball.ani', 'the title to drop " *" after undoing the only change')
+
+    e.key('r')
+    img, n, x, y, _ = ball_on_screen(e, 'redone')
+    check_moved('after r', x, y, 150, 0)
+    check(keyframe_rows(img) == 2, 'the keyframe did not come back with r')
+    e.wait_for(lambda: e.title() == 'animator - ball.ani *', 'the title to show " *" after redo')
+
+    # A second drag at the same keyframe changes it; then the buttons.
+    e.drag((640, 360), (640, 300), button=3)
+    _, _, x, y, _ = ball_on_screen(e, 'dragged-again')
+    check_moved('after the second drag', x, y, 150, -60)
+    e.click(*UNDO_BUTTON)
+    _, _, x, y, _ = ball_on_screen(e, 'undo-button')
+    check_moved('after the Undo button', x, y, 150, 0)
+    e.click(*REDO_BUTTON)
+    _, _, x, y, _ = ball_on_screen(e, 'redo-button')
+    check_moved('after the Redo button', x, y, 150, -60)
+    e.click(*UNDO_BUTTON)
+
+    e.key('x')
+    e.wait_log(r'^animator: exported to ball\.ani$', 'the export')
+    doc = parse_ani(c.path('ball.ani'))
+    check(sorted(doc['keyframes']) == [0, 2000], 'exported keyframes %s' % sorted(doc['keyframes']))
+    cx, cy, _ = doc['keyframes'][2000]['states']['ball']['center']
+    check(abs(cx - 150 * METRES_PER_PIXEL) < 0.05 and abs(cy) < 1e-6,
+          'exported center (%g, %g): expected the first drag only (%.3f, 0)' % (cx, cy, 150 * METRES_PER_PIXEL))
+    e.quit()
+
+
+def case_cel_skybox(c):
+    """The Cel Shading checkbox bands the ball into few colours; the Skybox combo puts a sky
+    behind it; both are edits, saved by the export and taken back by undo."""
+    c.write('ball.ani', BALL_ANI)
+    e = c.start('ball.ani')
+    e.mouse_away()
+    img = e.screenshot('smooth')
+    check_cel('at the start', img, False)
+    check(is_background(img.at(1200, 650)) and is_background(img.at(500, 100)), 'the background is not the plain colour')
+
+    e.click(*CEL_CHECKBOX)
+    e.mouse_away()
+    check_cel('after the Cel Shading checkbox', e.screenshot('cel'), True)
+    e.wait_for(lambda: e.title() == 'animator - ball.ani *', 'the title to mark the change')
+
+    e.click(*SKYBOX_COMBO)
+    e.screenshot('skybox-list')
+    e.click(*SKYBOX_ITEM_DAY)
+    e.mouse_away()
+    img = e.screenshot('skybox')
+    plain = len([1 for _, _, px in img.region(PANEL_RIGHT + 10, 0, WIDTH, HEIGHT, step=7) if is_background(px)])
+    check(plain < 50, 'with a skybox, %d sampled pixels are still the plain background colour' % plain)
+    r, g, b = img.at(1100, 60)
+    check(b > r + 20, 'the day sky above the ball is not blue: %s' % ((r, g, b),))
+
+    e.key('x')
+    e.wait_log(r'^animator: exported to ball\.ani$', 'the export')
+    s = parse_ani(c.path('ball.ani'))['settings']
+    check(s['cel_shading'] == ['true'] and s['skybox'] == ['day'], 'exported settings: %s' % s)
+
+    e.key('u')  # the skybox
+    e.mouse_away()
+    img = e.screenshot('skybox-undone')
+    check(is_background(img.at(1200, 650)) and is_background(img.at(500, 100)), 'u did not take the skybox away')
+    check_cel('after undoing the skybox', img, True)
+    e.key('u')  # cel shading
+    e.mouse_away()
+    check_cel('after undoing cel shading', e.screenshot('cel-undone'), False)
+    e.quit(dirty=True)
+
+
+def case_gravity(c):
+    """Typing a new gravity into the slider changes the fall (the ball is lower at the same
+    time) and the exported settings."""
+    c.copy('assets/animations/drop.ani')
+    e = c.start('drop.ani')
+    y0 = red_ball_y(e, 't0')
+    e.set_time(600)
+    e.mouse_away()
+    e.wait_baked()
+    y_981 = red_ball_y(e, 't600-g9.81')
+    check(y_981 > y0 + 20, 'the ball did not fall by t = 600 ms (%.1f -> %.1f)' % (y0, y_981))
+    e.type_into(GRAVITY_SLIDER, '20')
+    e.mouse_away()
+    e.wait_baked()
+    y_20 = red_ball_y(e, 't600-g20')
+    # y = 5 - g t^2 / 2: 3.23 m at 9.81, 1.4 m at 20 (about 20 px per metre here).
+    check(y_20 > y_981 + 20, 'with gravity 20 the ball is not lower at t = 600 ms (%.1f vs %.1f)' % (y_20, y_981))
+    e.wait_for(lambda: e.title() == 'animator - drop.ani *', 'the title to mark the change')
+    e.click(*EXPORT_BUTTON)
+    e.wait_log(r'^animator: exported to drop\.ani$', 'the export')
+    check(parse_ani(c.path('drop.ani'))['settings']['gravity'] == ['20'], 'gravity not exported as 20')
+    e.quit()
+
+
+def case_text_field_keys(c):
+    """Keys typed into an ImGui text field are the field's: CTRL+click the Gravity slider, type
+    "1xqu2.5" (x, q and u are shortcuts; the number field drops them as characters) and Return:
+    gravity 12.5, and no export, no quit, no undo happened."""
+    c.copy('assets/animations/drop.ani')
+    e = c.start('drop.ani')
+    e.type_into(GRAVITY_SLIDER, '20')   # an edit that a stray `u` would take back
+    e.wait_for(lambda: e.title() == 'animator - drop.ani *', 'the title to mark the change')
+    e.click(*GRAVITY_SLIDER, ctrl=True)
+    e.type('1xqu')
+    e.screenshot('typing')
+    check(e.running(), 'typing q into the text field quit the program')
+    check(not os.path.exists(c.path('animations')) and 'exported' not in e.stdout(), 'typing x into the text field exported')
+    e.type('2.5')
+    e.key('Return')
+    time.sleep(0.5)
+    check(e.running(), 'the program quit')
+    e.screenshot('typed')
+    e.click(*EXPORT_BUTTON)
+    e.wait_log(r'^animator: exported to drop\.ani$', 'the export')
+    check(e.stdout().count('exported') == 1, 'more than one export:\n' + e.stdout())
+    g = parse_ani(c.path('drop.ani'))['settings']['gravity']
+    check(g == ['12.5'], 'gravity exported as %s, expected 12.5 (typed "1xqu2.5")' % g)
+    # One undo takes back 12.5 and finds 20 (a stray `u` would have taken the 20 back already).
+    e.key('u')
+    e.key('x')
+    e.wait_for(lambda: e.stdout().count('exported') == 2, 'the second export')
+    g = parse_ani(c.path('drop.ani'))['settings']['gravity']
+    check(g == ['20'], 'after one undo gravity is %s, expected 20' % g)
+    e.quit()
+
+
+def case_backend_switch(c):
+    """The Physics combo swaps the backend while the program runs: the log says so, the bake
+    runs again and the ball falls as before (both backends agree on a free fall); it is not an
+    edit of the document."""
+    c.copy('assets/animations/drop.ani')
+    e = c.start('drop.ani')
+    e.set_time(600)
+    e.mouse_away()
+    e.wait_baked()
+    y_custom = red_ball_y(e, 'custom')
+    e.click(*PHYSICS_COMBO)
+    e.screenshot('backends')
+    e.click(*PHYSICS_ITEM_2)
+    e.wait_log(r'^animator: physics backend: physics\.bullet$', 'the switch to physics.bullet')
+    e.mouse_away()
+    e.wait_baked()
+    y_bullet = red_ball_y(e, 'bullet')
+    check(abs(y_bullet - y_custom) < 3, 'the ball at t = 600 ms: %.1f with custom, %.1f with bullet' % (y_custom, y_bullet))
+    e.set_time(0)
+    e.mouse_away()
+    y0 = red_ball_y(e, 'bullet-t0')
+    check(y_bullet > y0 + 20, 'with bullet the ball did not fall by t = 600 ms')
+    check(e.title() == 'animator - drop.ani', 'switching the backend marked the document changed: %r' % e.title())
+    e.click(*PHYSICS_COMBO)
+    e.click(*PHYSICS_ITEM_1)
+    e.wait_log(r'^animator: physics backend: physics\.custom$', 'the switch back to physics.custom')
+    e.quit()
+
+
+def case_title(c):
+    """The window title names the file and marks unsaved changes with " *"."""
+    c.copy('assets/animations/drop.ani')
+    e = c.start('drop.ani')
+    check(e.title() == 'animator - drop.ani', 'title %r' % e.title())
+    e.click(*CEL_CHECKBOX)
+    e.wait_for(lambda: e.title() == 'animator - drop.ani *', 'the " *" after a change')
+    e.click(*CEL_CHECKBOX)
+    e.wait_for(lambda: e.title() == 'animator - drop.ani', 'no " *" once the change is taken back by hand')
+    e.click(*CEL_CHECKBOX)
+    e.wait_for(lambda: e.title() == 'animator - drop.ani *', 'the " *" after a change')
+    e.key('x')
+    e.wait_for(lambda: e.title() == 'animator - drop.ani', 'no " *" after the export')
+    e.quit()
+    # A .lua scene: its name, then the exported file's.
+    c.copy('assets/scenes/simple.lua')
+    e = c.start('simple.lua', name='lua')
+    check(e.title() == 'animator - simple.lua', 'title %r' % e.title())
+    e.click(*CEL_CHECKBOX)
+    e.wait_for(lambda: e.title() == 'animator - simple.lua *', 'the " *" after a change')
+    e.key('x')
+    e.wait_for(lambda: e.title() == 'animator - new.ani', 'the title to name the exported file')
+    e.quit()
+
+
+def case_idle(c):
+    """Idle means idle: once the bake is done and nothing plays, the process uses (almost) no
+    CPU, also after the mouse moved over it and after playing to the end."""
+    c.copy('assets/animations/drop.ani')
+    e = c.start('drop.ani')
+    e.mouse_away()
+    e.wait_baked()
+
+    def idle_cpu(what):
+        time.sleep(0.5)  # the few frames ImGui draws after an event
+        a = e.cpu_seconds()
+        time.sleep(2.0)
+        used = e.cpu_seconds() - a
+        e.case.log('%s: %.3f s of CPU in 2 s' % (what, used))
+        check(used < 0.05, '%s: %.3f s of CPU in 2 s of doing nothing (limit 0.05 s)' % (what, used))
+    idle_cpu('after the bake')
+    e.xdo('mousemove', '--window', e.window, 700, 300)
+    e.xdo('mousemove', '--window', e.window, 720, 320)
+    idle_cpu('after the mouse moved')
+    e.set_time(9000)
+    e.mouse_away()
+    e.key('space')  # plays to the end (10 s) and stops there
+    time.sleep(1.5)
+    idle_cpu('after playing to the end')
+    e.quit()
+
+
+def case_bad_file(c):
+    """A file that fails to load: the error, naming the file and the line, on stderr and in a
+    dialog; the program keeps running, and OK closes the dialog."""
+    c.copy('tests/data/bad/ani_string.ani')
+    e = c.start('ani_string.ani')
+    m = e.wait_log(r'^animator: Could not open ani_string\.ani: ani_string\.ani:3: .*string.*not closed', 'the error on stderr')
+    check(m.group(0) in e.stderr(), 'the error went to stdout, not stderr')
+    time.sleep(0.5)
+    check(e.running(), 'the program stopped after a bad file')
+    check(e.title() == 'animator - untitled', 'title %r' % e.title())
+    img = e.screenshot('error-dialog')
+    check(near(img.at(*ERROR_DIALOG_TITLE), TITLE_BG_ACTIVE, 12),
+          'no dialog title bar at %s: %s' % (ERROR_DIALOG_TITLE, img.at(*ERROR_DIALOG_TITLE)))
+    body = img.at(*ERROR_DIALOG_BODY)
+    check(sum(body) < 90, 'no dark dialog body at %s: %s' % (ERROR_DIALOG_BODY, body))
+    # A modal dialog dims what is behind it, fading in over about 0.17 s of ImGui's clock
+    # (ModalWindowDimBg: 0.8 grey at 35%); the editor must draw until the fade is done.
+    dimmed = img.at(1100, 600)
+    full_dim = tuple(round(0.65 * v + 0.35 * 204) for v in BACKGROUND)
+    check(near(dimmed, full_dim, 6), 'the view behind the modal dialog is %s, not fully dimmed %s' % (dimmed, full_dim))
+    text = [px for _, _, px in img.region(465, 342, 815, 375) if sum(px) > 450]
+    check(len(text) > 200, 'the dialog shows no text (%d bright pixels)' % len(text))
+    click_error_ok(e, img)
+    e.mouse_away()
+    img = e.screenshot('dismissed')
+    check(is_background(img.at(1100, 600)) and is_background(img.at(*ERROR_DIALOG_BODY)), 'OK did not close the dialog')
+    e.quit()
+    # A Lua scene with a syntax error: the same, with the Lua file's line.
+    c.copy('tests/data/bad/lua_syntax.lua')
+    e = c.start('lua_syntax.lua', name='lua')
+    e.wait_log(r'^animator: Could not open lua_syntax\.lua: .*lua_syntax\.lua:3:', 'the Lua error on stderr')
+    time.sleep(0.5)
+    check(e.running(), 'the program stopped after a bad scene')
+    img = e.screenshot('lua-error-dialog')
+    check(near(img.at(*ERROR_DIALOG_TITLE), TITLE_BG_ACTIVE, 12), 'no error dialog for the Lua scene')
+    # The dialog is modal: `q` waits until it is answered.
+    e.key('q')
+    time.sleep(0.5)
+    check(e.running(), '`q` quit past the modal error dialog')
+    click_error_ok(e, img)
+    e.quit()
+
+
+def case_export_fresh_name(c):
+    """`x` never overwrites a file the user did not open: with animations/new.ani present and a
+    .lua opened, the export goes to animations/new-1.ani, and new.ani is left as it was."""
+    c.copy('assets/scenes/simple.lua')
+    sentinel = c.write('animations/new.ani', "# not an animation: the user's own file\n")
+    before = open(sentinel, 'rb').read()
+    e = c.start('simple.lua')
+    e.key('x')
+    e.wait_log(r'^animator: exported to animations/new-1\.ani', 'the export to a fresh name')
+    check(open(sentinel, 'rb').read() == before, 'animations/new.ani was changed')
+    doc = parse_ani(c.path('animations/new-1.ani'))
+    check(sorted(doc['models']) == ['ball', 'cone', 'cube', 'cylinder', 'floor', 'torus'],
+          'new-1.ani holds models %s' % sorted(doc['models']))
+    check(doc['settings']['skybox'] == ['day'] and doc['settings']['max_time_ms'] == ['20000'],
+          'new-1.ani settings %s' % doc['settings'])
+    # The exported file is now this session's: a second export writes it again.
+    e.click(*CEL_CHECKBOX)
+    e.key('x')
+    e.wait_for(lambda: e.stdout().count('exported to') == 2, 'the second export')
+    check(e.stdout().strip().splitlines()[-1] == 'animator: exported to animations/new-1.ani',
+          'the second export went elsewhere:\n' + e.stdout())
+    check(parse_ani(c.path('animations/new-1.ani'))['settings']['cel_shading'] == ['true'], 'the second export lacks the change')
+    check(open(sentinel, 'rb').read() == before, 'animations/new.ani was changed')
+    check(sorted(os.listdir(c.path('animations'))) == ['new-1.ani', 'new.ani'], 'files: %s' % os.listdir(c.path('animations')))
+    e.quit()
+
+
+def case_export_reopen(c):
+    """A .lua scene, the ball moved at a new time and cel shading on, `x` exports
+    animations/new.ani; reopened, the editor shows both keyframes, the moved ball, cel shading."""
+    c.write('ball.lua', BALL_LUA)
+    e = c.start('ball.lua')
+    translate_ball(e, 150, -60, 2000)
+    _, _, x, y, _ = ball_on_screen(e, 'dragged')
+    check_moved('after the drag', x, y, 150, -60)
+    e.click(*CEL_CHECKBOX)
+    e.key('x')
+    e.wait_log(r'^animator: exported to animations/new\.ani$', 'the export to animations/new.ani')
+    doc = parse_ani(c.path('animations/new.ani'))
+    check(sorted(doc['keyframes']) == [0, 2000], 'exported keyframes %s' % sorted(doc['keyframes']))
+    check(doc['settings']['cel_shading'] == ['true'], 'cel shading not exported')
+    e.quit()
+
+    e = c.start('animations/new.ani', name='reopened')
+    check(e.title() == 'animator - new.ani', 'title %r' % e.title())
+    e.mouse_away()
+    img, n, x, y, mean = ball_on_screen(e, 'reopened-t0')
+    check_moved('reopened, at t = 0', x, y, 0, 0)
+    check(keyframe_rows(img) == 2, 'the reopened file does not list two keyframes')
+    check_cel('reopened', img, True)
+    e.click(KEYFRAME_ROW0[0], KEYFRAME_ROW0[1] + KEYFRAME_ROW_STEP)
+    e.mouse_away()
+    _, _, x, y, _ = ball_on_screen(e, 'reopened-t2000')
+    check_moved('reopened, at the t = 2000 keyframe', x, y, 150, -60)
+    check(e.title() == 'animator - new.ani', 'looking at a keyframe changed the title: %r' % e.title())
+    e.quit()
+
+
+def case_quit(c):
+    """`q` without changes quits at once; with changes it asks; Cancel stays, "Quit without
+    exporting" quits with exit code 0 and leaves the file as it was; "Export and quit" saves it."""
+    c.copy('assets/animations/drop.ani')
+    before = open(c.path('drop.ani'), 'rb').read()
+    e = c.start('drop.ani')
+    t = time.time()
+    e.key('q')
+    e.wait_exit(10)
+    e.case.log('quit %.2f s after q' % (time.time() - t))
+
+    e = c.start('drop.ani', name='dirty')
+    e.click(*CEL_CHECKBOX)
+    e.key('q')
+    time.sleep(1.0)
+    check(e.running(), '`q` with unsaved changes quit without asking')
+    img = e.screenshot('asked')
+    check(near(img.at(*QUIT_DIALOG_TITLE), TITLE_BG_ACTIVE, 12),
+          'no dialog title bar at %s: %s' % (QUIT_DIALOG_TITLE, img.at(*QUIT_DIALOG_TITLE)))
+    e.click(*QUIT_CANCEL)
+    e.mouse_away()
+    img = e.screenshot('cancelled')
+    check(e.running(), 'Cancel quit')
+    check(not near(img.at(*QUIT_DIALOG_TITLE), TITLE_BG_ACTIVE, 12), 'Cancel did not close the dialog')
+    e.key('q')
+    time.sleep(1.0)
+    check(e.running(), 'the second `q` quit without asking')
+    e.screenshot('asked-again')
+    e.click(*QUIT_WITHOUT_EXPORTING)
+    e.wait_exit(20)
+    check(open(c.path('drop.ani'), 'rb').read() == before, 'drop.ani changed')
+    check(not os.path.exists(c.path('animations')), 'something was exported')
+
+    # "Export and quit" saves the opened file, then quits.
+    e = c.start('drop.ani', name='export-and-quit')
+    e.click(*CEL_CHECKBOX)
+    e.key('q')
+    time.sleep(1.0)
+    check(e.running(), '`q` with unsaved changes quit without asking')
+    e.click(*QUIT_EXPORT_AND_QUIT)
+    e.wait_exit(20)
+    check('animator: exported to drop.ani' in e.stdout(), 'no export said:\n' + e.stdout())
+    check(parse_ani(c.path('drop.ani'))['settings']['cel_shading'] == ['true'], '"Export and quit" did not save the change')
+
+
+def case_resize(c):
+    """The window resizes (xdotool windowsize) and the 3D view fills the new size, the ball at
+    its centre and scaled with its height; a click picks the ball at its new place."""
+    c.write('ball.ani', BALL_ANI)
+    e = c.start('ball.ani')
+    # Larger first: the Model Interface keeps the place it was first shown at (ImGui's
+    # FirstUseEver), so shown first in a narrow window it would cover the centre of a wider one.
+    for w, h in ((1260, 790), (900, 560)):
+        e.xdo('windowsize', e.window, w, h)
+        e.wait_for(lambda: ('%dx%d' % (w, h)) in subprocess.run(
+            ['xdotool', 'getwindowgeometry', e.window], capture_output=True, text=True).stdout,
+            'the window to be %dx%d' % (w, h))
+        e.xdo('mousemove', '--window', e.window, w - 5, h - 5)
+        e.pause(0.6)
+        img = e.screenshot('%dx%d' % (w, h))
+        for x, y in ((w - 3, h - 3), (w - 3, 3), (PANEL_RIGHT + 20, h - 3), (w // 2, h - 3)):
+            check(is_background(img.at(x, y)), 'at %dx%d the view does not reach (%d, %d): %s' % (w, h, x, y, img.at(x, y)))
+        if w < WIDTH:
+            check(img.at(w + 5, 100) == (0, 0, 0) and img.at(100, h + 5) == (0, 0, 0),
+                  'something is drawn outside the %dx%d window' % (w, h))
+        n, x, y, _ = img.blob(lambda px: not is_background(px), (PANEL_RIGHT + 10, 0, w, h))
+        e.case.log('%dx%d: ball %d px at (%.1f, %.1f)' % (w, h, n, x or -1, y or -1))
+        check(n > 1000 and abs(x - w / 2) < 4 and abs(y - h / 2) < 4,
+              'at %dx%d the ball is not at the centre of the view: (%s, %s)' % (w, h, x, y))
+        # Its size follows the height (the field of view is vertical): 64.3 px at 720.
+        radius = (n / 3.14159) ** 0.5
+        check(abs(radius - h / 720 * 64.3) < 4, 'at %dx%d the ball is %.1f px in radius' % (w, h, radius))
+        e.click(round(x), round(y))
+        img = e.screenshot('%dx%d-selected' % (w, h))
+        _, _, _, mean = img.blob(lambda px: not is_background(px), (round(x) - 30, round(y) - 30, round(x) + 30, round(y) + 30))
+        check_selected_tint('at %dx%d, clicked' % (w, h), mean, True)
+        e.click(PANEL_RIGHT + 20, h - 20)  # empty space: deselect
+    e.quit()
+
+
+CASES = {name[5:]: f for name, f in globals().items() if name.startswith('case_')}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument('--bin', required=True, help='the animator executable')
+    parser.add_argument('--source', required=True, help='the source tree (assets/, tests/data/)')
+    parser.add_argument('--case', required=True, choices=sorted(CASES))
+    parser.add_argument('--keep', action='store_true', help='keep the folder after a pass too')
+    parser.add_argument('--timeout', type=float, default=240, help='seconds for the whole case')
+    args = parser.parse_args()
+
+    def out_of_time(signum, frame):
+        raise Failure('the case took longer than %.0f s' % args.timeout)
+    signal.signal(signal.SIGALRM, out_of_time)
+    signal.alarm(int(args.timeout))
+    if not os.environ.get('DISPLAY'):
+        print('editor_e2e: no DISPLAY; run under xvfb-run -a -s "-screen 0 1280x800x24"', file=sys.stderr)
+        return 2
+    for tool in ('xdotool', 'import', 'convert'):
+        if not shutil.which(tool):
+            print('editor_e2e: %s not found (apt-get install xdotool imagemagick)' % tool, file=sys.stderr)
+            return 2
+    c = Case(args, args.case)
+    ok = False
+    try:
+        CASES[args.case](c)
+        ok = True
+    except Failure as f:
+        print('FAIL %s: %s' % (args.case, f), file=sys.stderr)
+    except Exception:
+        print('FAIL %s: the test itself broke:\n%s' % (args.case, traceback.format_exc()), file=sys.stderr)
+    finally:
+        signal.alarm(0)
+        c.finish()
+    if ok:
+        print('PASS %s (%.1f s)' % (args.case, time.time() - START))
+        if not args.keep:
+            shutil.rmtree(c.dir, ignore_errors=True)
+        else:
+            print('kept: %s' % c.dir)
+        return 0
+    print('screenshots and logs kept in %s' % c.dir, file=sys.stderr)
+    return 1
+
+
+if __name__ == '__main__':
+    sys.exit(main())
