@@ -5,6 +5,7 @@
 #include "bench.hpp"
 
 #include "mesh_contact.hpp"
+#include "physics/test_meshes.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -19,48 +20,12 @@ using namespace physics_custom;
 
 namespace {
 
-using Vertices = std::vector<glm::dvec3>;
-using Triangles = std::vector<std::array<uint32_t, 3>>;
-
-// Turns every triangle counter-clockwise seen from outside (the mesh is star-shaped around 0).
-Triangles facing_out(const Vertices &v, Triangles tris) {
-    for (auto &t : tris) {
-        const glm::dvec3 n = glm::cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]);
-        if (glm::dot(n, v[t[0]] + v[t[1]] + v[t[2]]) < 0.0) std::swap(t[1], t[2]);
-    }
-    return tris;
-}
+using namespace test_meshes;
 
 // An irregular rock: an icosahedron subdivided `level` times (20 * 4^level triangles), its
 // vertices moved in and out by smooth lumps and a little noise, then turned at random.
 MeshShape rock(int level, uint64_t seed) {
-    const double p = (1.0 + std::sqrt(5.0)) / 2.0;
-    Vertices v = {{-1, p, 0},  {1, p, 0},  {-1, -p, 0}, {1, -p, 0}, {0, -1, p},  {0, 1, p},
-                  {0, -1, -p}, {0, 1, -p}, {p, 0, -1},  {p, 0, 1},  {-p, 0, -1}, {-p, 0, 1}};
-    Triangles t = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                   {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                   {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                   {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-    for (auto &x : v) x = glm::normalize(x);
-    for (int l = 0; l < level; ++l) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> middle;
-        auto mid = [&](uint32_t a, uint32_t b) {
-            const auto key = std::minmax(a, b);
-            const auto found = middle.find(key);
-            if (found != middle.end()) return found->second;
-            v.push_back(glm::normalize(v[a] + v[b]));
-            return middle[key] = static_cast<uint32_t>(v.size() - 1);
-        };
-        Triangles next;
-        for (const auto &f : t) {
-            const uint32_t ab = mid(f[0], f[1]), bc = mid(f[1], f[2]), ca = mid(f[2], f[0]);
-            next.push_back({f[0], ab, ca});
-            next.push_back({f[1], bc, ab});
-            next.push_back({f[2], ca, bc});
-            next.push_back({ab, bc, ca});
-        }
-        t = std::move(next);
-    }
+    auto [v, t] = subdivided_icosahedron(level);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     for (auto &x : v)
@@ -72,22 +37,6 @@ MeshShape rock(int level, uint64_t seed) {
     k = glm::normalize(k);
     const double angle = 3.14159265358979 * unit(rng), c = std::cos(angle), s = std::sin(angle);
     for (auto &x : v) x = x * c + glm::cross(k, x) * s + k * glm::dot(k, x) * (1.0 - c);
-    return MeshShape::build(v, t);
-}
-
-// A square of side 2 s at y = 0 in n x n cells of two triangles each (an open mesh).
-MeshShape floor_square(double s, int n) {
-    Vertices v;
-    Triangles t;
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; j <= n; ++j)
-            v.emplace_back(-s + 2.0 * s * i / n, 0.0, -s + 2.0 * s * j / n);
-    auto at = [&](int i, int j) { return static_cast<uint32_t>(i * (n + 1) + j); };
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-            t.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
-            t.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
-        }
     return MeshShape::build(v, t);
 }
 

@@ -5,97 +5,12 @@
 // kept quiet (the scenes' overlaps and warnings are expected).
 #include "bullet_support.hpp"
 
-#include "assets/mesh.hpp"
-
-#include <map>
-#include <mutex>
-#include <stdexcept>
-
 namespace animator::bullet_test {
 
 Environment &env() {
     static Environment e(AssetPaths::default_roots(), PluginRegistry::default_search_dirs(),
                          [](ani_log_level, const std::string &, const std::string &) {});
     return e;
-}
-
-std::unique_ptr<Timeline> timeline_of(const Document &doc, const std::string &backend) {
-    // Each mesh is read once (assimp takes a few milliseconds a mesh): not part of a bake's time.
-    static std::map<std::string, std::shared_ptr<const Mesh>> cache;
-    static std::mutex cache_mutex;
-    auto t = std::make_unique<Timeline>(doc, env().plugins, backend);
-    std::vector<std::shared_ptr<const Mesh>> meshes;
-    std::lock_guard<std::mutex> lock(cache_mutex);
-    for (const Model &m : doc.models()) {
-        if (m.mesh.empty()) { // an empty: no geometry
-            meshes.push_back(nullptr);
-            continue;
-        }
-        auto it = cache.find(m.mesh);
-        if (it == cache.end()) {
-            std::vector<std::string> warnings;
-            auto loaded = load_meshes({m.mesh}, env().assets, {}, warnings);
-            if (!warnings.empty() || !loaded[0])
-                throw std::runtime_error("mesh '" + m.mesh + "' not found (build animator_assets)");
-            it = cache.emplace(m.mesh, loaded[0]).first;
-        }
-        meshes.push_back(it->second);
-    }
-    t->set_meshes(meshes);
-    return t;
-}
-
-Document with_param(Document doc, const std::string &param, double value) {
-    Settings s = doc.settings();
-    s.params["physics.bullet"][param] = {value, 0.0, 0.0, 0.0};
-    doc.set_settings(s);
-    return doc;
-}
-
-double unit_sphere_radius() {
-    static const double r =
-        load_mesh(env().assets.resolve(ANI_ASSET_MESH, "sphere").value()).mesh.bound_radius;
-    return r;
-}
-
-Model model(const std::string &name, const std::string &mesh, bool dynamics, bool gravity) {
-    Model m;
-    m.name = name;
-    m.mesh = mesh;
-    m.dynamics = dynamics;
-    m.gravity = gravity;
-    return m;
-}
-
-ModelState placed(glm::dvec3 center, glm::dvec3 scale, glm::dvec3 angles) {
-    ModelState s;
-    s.center = center;
-    s.scale = scale;
-    s.angles = angles;
-    return s;
-}
-
-void key(Document &doc, std::int64_t ms, int model, const ModelState &state) {
-    if (doc.find_keyframe(ms) < 0) {
-        Keyframe k;
-        k.time_ms = ms;
-        k.states.assign(doc.models().size(), std::nullopt);
-        doc.insert_keyframe(k);
-    }
-    doc.set_state(ms, model, state);
-}
-
-Document load(const std::string &animation) {
-    return open_document(env().plugins,
-                         std::filesystem::path(ANIMATOR_SOURCE_DIR) / "assets/animations" / animation)
-        .document;
-}
-
-const ani_motion_segment *segment_at(const Timeline &t, int model, double time) {
-    const ani_motion_segment *found = nullptr;
-    for (const auto &s : t.segments(model))
-        if (s.t0 <= time) found = &s;
-    return found;
 }
 
 } // namespace animator::bullet_test

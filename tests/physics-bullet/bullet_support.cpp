@@ -2,7 +2,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <map>
 #include <mutex>
 
 namespace animator::bullet_test {
@@ -28,77 +27,6 @@ std::vector<std::string> take_log() {
     std::vector<std::string> out;
     out.swap(log_lines);
     return out;
-}
-
-std::unique_ptr<Timeline> timeline_of(const Document &doc, const std::string &backend) {
-    // Each mesh is read once for all the tests (assimp takes a few milliseconds a mesh).
-    static std::map<std::string, std::shared_ptr<const Mesh>> cache;
-    static std::mutex cache_mutex;
-    auto t = std::make_unique<Timeline>(doc, env().plugins, backend);
-    std::vector<std::shared_ptr<const Mesh>> meshes;
-    std::lock_guard<std::mutex> lock(cache_mutex);
-    for (const Model &m : doc.models()) {
-        auto it = cache.find(m.mesh);
-        if (it == cache.end()) {
-            std::vector<std::string> warnings;
-            it = cache.emplace(m.mesh, load_meshes({m.mesh}, env().assets, {}, warnings)[0]).first;
-        }
-        meshes.push_back(it->second);
-    }
-    t->set_meshes(meshes);
-    return t;
-}
-
-Document with_param(Document doc, const std::string &param, double value) {
-    Settings s = doc.settings();
-    s.params["physics.bullet"][param] = {value, 0.0, 0.0, 0.0};
-    doc.set_settings(s);
-    return doc;
-}
-
-double unit_sphere_radius() {
-    static const double r =
-        load_mesh(env().assets.resolve(ANI_ASSET_MESH, "sphere").value()).mesh.bound_radius;
-    return r;
-}
-
-Model model(const std::string &name, const std::string &mesh, bool dynamics, bool gravity) {
-    Model m;
-    m.name = name;
-    m.mesh = mesh;
-    m.dynamics = dynamics;
-    m.gravity = gravity;
-    return m;
-}
-
-ModelState placed(glm::dvec3 center, glm::dvec3 scale, glm::dvec3 angles) {
-    ModelState s;
-    s.center = center;
-    s.scale = scale;
-    s.angles = angles;
-    return s;
-}
-
-void key(Document &doc, std::int64_t ms, int model, const ModelState &state) {
-    if (doc.find_keyframe(ms) < 0) {
-        Keyframe k;
-        k.time_ms = ms;
-        k.states.assign(doc.models().size(), std::nullopt);
-        doc.insert_keyframe(k);
-    }
-    doc.set_state(ms, model, state);
-}
-
-Document load(const std::string &animation) {
-    return open_document(env().plugins, test::source_dir() / "assets/animations" / animation)
-        .document;
-}
-
-const ani_motion_segment *segment_at(const Timeline &t, int model, double time) {
-    const ani_motion_segment *found = nullptr;
-    for (const auto &s : t.segments(model))
-        if (s.t0 <= time) found = &s;
-    return found;
 }
 
 void check_converges(const char *what, const double (&errors)[3], const double (&bounds)[3],

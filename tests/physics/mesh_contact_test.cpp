@@ -3,6 +3,7 @@
 // oracle on random queries.
 #include "mesh_contact.hpp"
 #include "response.hpp"
+#include "test_meshes.hpp"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
@@ -20,8 +21,7 @@ const double G = 9.81;
 const glm::dvec3 gravity(0.0, -G, 0.0);
 const double pi = 3.14159265358979323846;
 
-using Vertices = std::vector<glm::dvec3>;
-using Triangles = std::vector<std::array<uint32_t, 3>>;
+using namespace test_meshes;
 
 glm::dvec3 rotate_x(const glm::dvec3 &v, double angle) {
     const double c = std::cos(angle), s = std::sin(angle);
@@ -30,17 +30,6 @@ glm::dvec3 rotate_x(const glm::dvec3 &v, double angle) {
 glm::dvec3 rotate_z(const glm::dvec3 &v, double angle) {
     const double c = std::cos(angle), s = std::sin(angle);
     return {c * v.x - s * v.y, s * v.x + c * v.y, v.z};
-}
-
-// Turns every triangle counter-clockwise seen from outside, for a mesh that is star-shaped
-// around `inside`.
-Triangles facing_out(const Vertices &v, Triangles tris,
-                     const glm::dvec3 &inside = glm::dvec3(0.0)) {
-    for (auto &t : tris) {
-        const glm::dvec3 n = glm::cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]);
-        if (glm::dot(n, (v[t[0]] + v[t[1]] + v[t[2]]) / 3.0 - inside) < 0.0) std::swap(t[1], t[2]);
-    }
-    return tris;
 }
 
 // A cube of side 2 h around the origin; vertex i has x > 0 when bit 0 is set, y bit 1, z bit 2.
@@ -67,24 +56,6 @@ MeshShape box_of(const glm::dvec3 &h) {
     Vertices v = unit.vertices;
     for (auto &p : v) p *= h;
     return MeshShape::build(v, unit.triangles);
-}
-
-// A square of side 2 s in the plane y = 0, facing +Y, in n x n cells of two triangles each (an
-// open mesh: a floor).
-MeshShape floor_square(double s, int n = 1) {
-    Vertices v;
-    Triangles t;
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; j <= n; ++j)
-            v.emplace_back(-s + 2.0 * s * i / n, 0.0, -s + 2.0 * s * j / n);
-    auto at = [&](int i, int j) { return static_cast<uint32_t>(i * (n + 1) + j); };
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-            // (i, j) -> (i, j + 1) -> (i + 1, j + 1) runs counter-clockwise seen from above.
-            t.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
-            t.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
-        }
-    return MeshShape::build(v, t);
 }
 
 // A UV sphere: poles on Y, `stacks` bands of `slices` quads (triangles at the poles).
@@ -118,33 +89,7 @@ Triangles uv_sphere_triangles(int stacks, int slices) {
 
 // An icosahedron's faces subdivided `level` times, on the sphere of radius r.
 MeshShape icosphere(int level, double r) {
-    const double p = (1.0 + std::sqrt(5.0)) / 2.0;
-    Vertices v = {{-1, p, 0},  {1, p, 0},  {-1, -p, 0}, {1, -p, 0}, {0, -1, p},  {0, 1, p},
-                  {0, -1, -p}, {0, 1, -p}, {p, 0, -1},  {p, 0, 1},  {-p, 0, -1}, {-p, 0, 1}};
-    Triangles t = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                   {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                   {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                   {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-    for (auto &x : v) x = glm::normalize(x);
-    for (int l = 0; l < level; ++l) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> middle;
-        auto mid = [&](uint32_t a, uint32_t b) {
-            const auto key = std::minmax(a, b);
-            const auto found = middle.find(key);
-            if (found != middle.end()) return found->second;
-            v.push_back(glm::normalize(v[a] + v[b]));
-            return middle[key] = static_cast<uint32_t>(v.size() - 1);
-        };
-        Triangles next;
-        for (const auto &f : t) {
-            const uint32_t ab = mid(f[0], f[1]), bc = mid(f[1], f[2]), ca = mid(f[2], f[0]);
-            next.push_back({f[0], ab, ca});
-            next.push_back({f[1], bc, ab});
-            next.push_back({f[2], ca, bc});
-            next.push_back({ab, bc, ca});
-        }
-        t = std::move(next);
-    }
+    auto [v, t] = subdivided_icosahedron(level);
     for (auto &x : v) x *= r;
     return MeshShape::build(v, facing_out(v, t));
 }
