@@ -35,27 +35,6 @@ void *create_instance(const ani_plugin_descriptor &descriptor, ani_status *statu
 
 void destroy_instance(void *instance) { delete static_cast<Instance *>(instance); }
 
-ani_status_code get_param(void *instance, const char *id, ani_param_value *value, ani_status *status) {
-    return ani::guarded(status, [&] {
-        if (instance == nullptr || value == nullptr)
-            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "get_param: null instance or value");
-        ani_status refusal{};
-        if (static_cast<Instance *>(instance)->params.get(id, value, &refusal) != ANI_OK)
-            throw ani::Failure(static_cast<ani_status_code>(refusal.code), refusal.message);
-    });
-}
-
-ani_status_code set_param(void *instance, const char *id, const ani_param_value *value,
-                          ani_status *status) {
-    return ani::guarded(status, [&] {
-        if (instance == nullptr || value == nullptr)
-            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "set_param: null instance or value");
-        ani_status refusal{};
-        if (static_cast<Instance *>(instance)->params.set(id, value, &refusal) != ANI_OK)
-            throw ani::Failure(static_cast<ani_status_code>(refusal.code), refusal.message);
-    });
-}
-
 // Checks everything, builds the plugin's curve for the channel, sweeps the times once, and
 // refuses to hand back anything that is not finite.
 template <class MakeCurve>
@@ -90,7 +69,7 @@ ani_status_code linear_evaluate(void *instance, const ani_channel *channel, cons
 
 const ani_interpolator_api linear_api = {
     sizeof(ani_interpolator_api),
-    {sizeof(ani_instance_api), linear_create, destroy_instance, get_param, set_param},
+    {sizeof(ani_instance_api), linear_create, destroy_instance, ani::store_get_param<Instance>, ani::store_set_param<Instance>},
     kEveryChannel,
     linear_evaluate,
 };
@@ -127,7 +106,7 @@ ani_status_code kinematic_evaluate(void *instance, const ani_channel *channel, c
 
 const ani_interpolator_api kinematic_api = {
     sizeof(ani_interpolator_api),
-    {sizeof(ani_instance_api), kinematic_create, destroy_instance, get_param, set_param},
+    {sizeof(ani_instance_api), kinematic_create, destroy_instance, ani::store_get_param<Instance>, ani::store_set_param<Instance>},
     bit(ANI_CHANNEL_POSITION),
     kinematic_evaluate,
 };
@@ -173,7 +152,7 @@ ani_status_code smooth_evaluate(void *instance, const ani_channel *channel, cons
 
 const ani_interpolator_api smooth_api = {
     sizeof(ani_interpolator_api),
-    {sizeof(ani_instance_api), smooth_create, destroy_instance, get_param, set_param},
+    {sizeof(ani_instance_api), smooth_create, destroy_instance, ani::store_get_param<Instance>, ani::store_set_param<Instance>},
     kEveryChannel,
     smooth_evaluate,
 };
@@ -196,21 +175,6 @@ const ani_plugin_descriptor smooth_descriptor = {
 const ani_plugin_descriptor *const kPlugins[] = {&linear_descriptor, &kinematic_descriptor,
                                                   &smooth_descriptor};
 
-ani_status_code interpolation_init(const ani_host *, ani_status *status) {
-    return ani::set_status(status, ANI_OK, "");
-}
-void interpolation_deinit() {}
-uint32_t interpolation_plugin_count() { return sizeof(kPlugins) / sizeof(kPlugins[0]); }
-const ani_plugin_descriptor *interpolation_plugin(uint32_t index) {
-    return index < interpolation_plugin_count() ? kPlugins[index] : nullptr;
-}
-
 } // namespace
 
-extern "C" {
-ANI_DECLARE_ENTRY;
-const ani_plugin_entry animator_plugin_entry = {
-    sizeof(ani_plugin_entry), {ANI_ABI_MAJOR, ANI_ABI_MINOR, 0}, interpolation_init,
-    interpolation_deinit, interpolation_plugin_count, interpolation_plugin,
-};
-}
+ANI_PLUGIN_ENTRY(kPlugins)

@@ -87,17 +87,8 @@ const ani_plugin_descriptor ani_descriptor = {
     &ani_api,
 };
 
-ani_status_code ani_init(const ani_host *, ani_status *status) { return ani::set_status(status, ANI_OK, ""); }
-void ani_deinit() {}
-uint32_t ani_plugin_count() { return 1; }
-const ani_plugin_descriptor *ani_plugin_get(uint32_t index) { return index == 0 ? &ani_descriptor : nullptr; }
+const ani_plugin_descriptor *const kPlugins[] = {&ani_descriptor};
 
 } // namespace
 
-extern "C" {
-ANI_DECLARE_ENTRY;
-const ani_plugin_entry animator_plugin_entry = {
-    sizeof(ani_plugin_entry), {ANI_ABI_MAJOR, ANI_ABI_MINOR, 0}, ani_init, ani_deinit,
-    ani_plugin_count, ani_plugin_get,
-};
-}
+ANI_PLUGIN_ENTRY(kPlugins)

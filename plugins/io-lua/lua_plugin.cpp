@@ -79,17 +79,8 @@ const ani_plugin_descriptor lua_descriptor = {
     &lua_api,
 };
 
-ani_status_code lua_init(const ani_host *, ani_status *status) { return ani::set_status(status, ANI_OK, ""); }
-void lua_deinit() {}
-uint32_t lua_plugin_count() { return 1; }
-const ani_plugin_descriptor *lua_plugin_get(uint32_t index) { return index == 0 ? &lua_descriptor : nullptr; }
+const ani_plugin_descriptor *const kPlugins[] = {&lua_descriptor};
 
 } // namespace
 
-extern "C" {
-ANI_DECLARE_ENTRY;
-const ani_plugin_entry animator_plugin_entry = {
-    sizeof(ani_plugin_entry), {ANI_ABI_MAJOR, ANI_ABI_MINOR, 0}, lua_init, lua_deinit,
-    lua_plugin_count, lua_plugin_get,
-};
-}
+ANI_PLUGIN_ENTRY(kPlugins)

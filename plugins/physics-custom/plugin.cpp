@@ -37,14 +37,6 @@ void *create(const ani_host *host, ani_status *status) {
 
 void destroy(void *instance) { delete static_cast<Instance *>(instance); }
 
-ani_status_code get_param(void *instance, const char *id, ani_param_value *out, ani_status *status) {
-    return static_cast<Instance *>(instance)->params.get(id, out, status);
-}
-
-ani_status_code set_param(void *instance, const char *id, const ani_param_value *value, ani_status *status) {
-    return static_cast<Instance *>(instance)->params.set(id, value, status);
-}
-
 ani_status_code bake(void *instance, const ani_physics_scene *scene, double t_begin, double t_end,
                      const ani_bake_sink *sink, ani_status *status) {
     return ani::guarded(status, [&] {
@@ -66,7 +58,7 @@ ani_status_code bake(void *instance, const ani_physics_scene *scene, double t_be
 
 const ani_physics_api api = {
     sizeof(ani_physics_api),
-    {sizeof(ani_instance_api), create, destroy, get_param, set_param},
+    {sizeof(ani_instance_api), create, destroy, ani::store_get_param<Instance>, ani::store_set_param<Instance>},
     bake,
 };
 
@@ -83,16 +75,8 @@ const ani_plugin_descriptor descriptor = {
     &api,
 };
 
-ani_status_code init(const ani_host *, ani_status *status) { return ani::set_status(status, ANI_OK, ""); }
-void deinit() {}
-uint32_t count() { return 1; }
-const ani_plugin_descriptor *get(uint32_t index) { return index == 0 ? &descriptor : nullptr; }
+const ani_plugin_descriptor *const kPlugins[] = {&descriptor};
 
 } // namespace
 
-extern "C" {
-ANI_DECLARE_ENTRY;
-const ani_plugin_entry animator_plugin_entry = {
-    sizeof(ani_plugin_entry), {ANI_ABI_MAJOR, ANI_ABI_MINOR, 0}, init, deinit, count, get,
-};
-}
+ANI_PLUGIN_ENTRY(kPlugins)

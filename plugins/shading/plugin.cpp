@@ -77,28 +77,6 @@ void phong_destroy(void *instance) {
     delete static_cast<Instance *>(instance);
 }
 
-ani_status_code phong_get_param(void *instance, const char *id, ani_param_value *value,
-                                ani_status *status) {
-    return ani::guarded(status, [&] {
-        if (instance == nullptr || value == nullptr)
-            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "get_param: null instance or value");
-        ani_status refusal{};
-        if (static_cast<Instance *>(instance)->params.get(id, value, &refusal) != ANI_OK)
-            throw ani::Failure(static_cast<ani_status_code>(refusal.code), refusal.message);
-    });
-}
-
-ani_status_code phong_set_param(void *instance, const char *id, const ani_param_value *value,
-                                ani_status *status) {
-    return ani::guarded(status, [&] {
-        if (instance == nullptr || value == nullptr)
-            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "set_param: null instance or value");
-        ani_status refusal{};
-        if (static_cast<Instance *>(instance)->params.set(id, value, &refusal) != ANI_OK)
-            throw ani::Failure(static_cast<ani_status_code>(refusal.code), refusal.message);
-    });
-}
-
 ani_status_code phong_get_program(void *instance, uint32_t features, ani_shader_program *program,
                                   ani_status *status) {
     return ani::guarded(status, [&] {
@@ -124,7 +102,7 @@ ani_status_code phong_get_program(void *instance, uint32_t features, ani_shader_
 
 const ani_shading_api phong_api = {
     sizeof(ani_shading_api),
-    {sizeof(ani_instance_api), phong_create, phong_destroy, phong_get_param, phong_set_param},
+    {sizeof(ani_instance_api), phong_create, phong_destroy, ani::store_get_param<Instance>, ani::store_set_param<Instance>},
     phong_get_program,
 };
 
@@ -142,27 +120,8 @@ const ani_plugin_descriptor phong_descriptor = {
     &phong_api,
 };
 
-ani_status_code shading_init(const ani_host *, ani_status *status) {
-    return ani::set_status(status, ANI_OK, "");
-}
-void shading_deinit() {}
-uint32_t shading_plugin_count() {
-    return 1;
-}
-const ani_plugin_descriptor *shading_plugin(uint32_t index) {
-    return index == 0 ? &phong_descriptor : nullptr;
-}
+const ani_plugin_descriptor *const kPlugins[] = {&phong_descriptor};
 
 } // namespace
 
-extern "C" {
-ANI_DECLARE_ENTRY;
-const ani_plugin_entry animator_plugin_entry = {
-    sizeof(ani_plugin_entry),
-    {ANI_ABI_MAJOR, ANI_ABI_MINOR, 0},
-    shading_init,
-    shading_deinit,
-    shading_plugin_count,
-    shading_plugin,
-};
-}
+ANI_PLUGIN_ENTRY(kPlugins)

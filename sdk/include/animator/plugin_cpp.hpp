@@ -3,7 +3,8 @@
 // Header-only, so nothing of the host's C++ crosses the boundary: each plugin library compiles
 // its own copy. `guarded` turns exceptions into a status code plus message, as the ABI requires
 // of every C++ entry point; `ParamStore` implements get_param/set_param over a plugin's
-// parameter descriptors.
+// parameter descriptors (`store_get_param`/`store_set_param` for an instance that holds one);
+// `ANI_PLUGIN_ENTRY` defines the entry of a library that lists its plugins and needs no set-up.
 #ifndef ANIMATOR_SDK_PLUGIN_CPP_HPP
 #define ANIMATOR_SDK_PLUGIN_CPP_HPP
 
@@ -101,6 +102,44 @@ class ParamStore {
     std::vector<ani_param_value> values_;
 };
 
+// get_param and set_param for an instance type whose `params` member is a ParamStore.
+template <class Instance>
+ani_status_code store_get_param(void *instance, const char *id, ani_param_value *value, ani_status *status) {
+    if (instance == nullptr || value == nullptr)
+        return set_status(status, ANI_ERR_INVALID_ARGUMENT, "get_param: null instance or value");
+    return static_cast<const Instance *>(instance)->params.get(id, value, status);
+}
+template <class Instance>
+ani_status_code store_set_param(void *instance, const char *id, const ani_param_value *value, ani_status *status) {
+    if (instance == nullptr || value == nullptr)
+        return set_status(status, ANI_ERR_INVALID_ARGUMENT, "set_param: null instance or value");
+    return static_cast<Instance *>(instance)->params.set(id, value, status);
+}
+
+// The parts of an entry for a library whose plugins are a fixed list and that needs no set-up.
+template <const ani_plugin_descriptor *const *List, uint32_t Count> struct ListedPlugins {
+    static ani_status_code init(const ani_host *, ani_status *status) { return set_status(status, ANI_OK, ""); }
+    static void deinit() {}
+    static uint32_t count() { return Count; }
+    static const ani_plugin_descriptor *get(uint32_t index) { return index < Count ? List[index] : nullptr; }
+};
+
 } // namespace ani
+
+// Defines the library's entry from a namespace-scope array of descriptor pointers, e.g.
+//   const ani_plugin_descriptor *const kPlugins[] = {&descriptor};
+//   ANI_PLUGIN_ENTRY(kPlugins)
+#define ANI_PLUGIN_ENTRY(list)                                                                     \
+    extern "C" {                                                                                   \
+    ANI_DECLARE_ENTRY;                                                                             \
+    const ani_plugin_entry animator_plugin_entry = {                                              \
+        sizeof(ani_plugin_entry),                                                                  \
+        {ANI_ABI_MAJOR, ANI_ABI_MINOR, 0},                                                         \
+        ani::ListedPlugins<list, sizeof(list) / sizeof(list[0])>::init,                           \
+        ani::ListedPlugins<list, sizeof(list) / sizeof(list[0])>::deinit,                         \
+        ani::ListedPlugins<list, sizeof(list) / sizeof(list[0])>::count,                          \
+        ani::ListedPlugins<list, sizeof(list) / sizeof(list[0])>::get,                            \
+    };                                                                                             \
+    }
 
 #endif // ANIMATOR_SDK_PLUGIN_CPP_HPP
