@@ -50,6 +50,10 @@ void VoiceEngine::fade_out(Voice &v) {
 }
 
 bool VoiceEngine::play(std::shared_ptr<const SoundData> sound, double volume, double pan) {
+    return start(std::move(sound), volume, pan, -1);
+}
+
+bool VoiceEngine::start(std::shared_ptr<const SoundData> sound, double volume, double pan, int loop_key) {
     if (!sound || sound->samples.empty() || !(volume > 0.0)) return false;
     if (!admit(volume)) return false;
     Voice v;
@@ -59,6 +63,7 @@ bool VoiceEngine::play(std::shared_ptr<const SoundData> sound, double volume, do
     const StereoGain g = pan_gains(pan);
     v.left = v.target_left = volume / 100.0 * g.left;
     v.right = v.target_right = volume / 100.0 * g.right;
+    v.loop_key = loop_key;
     voices_.push_back(std::move(v));
     ++stats_.started;
     stats_.peak = std::max(stats_.peak, sounding());
@@ -74,19 +79,7 @@ bool VoiceEngine::loop(int key, std::shared_ptr<const SoundData> sound, double v
         v->ramp = ramp_frames_;
         return true;
     }
-    if (!sound || sound->samples.empty() || !(volume > 0.0)) return false;
-    if (!admit(volume)) return false;
-    Voice v;
-    v.step = static_cast<double>(sound->rate) / rate_;
-    v.sound = std::move(sound);
-    v.loudness = volume;
-    v.left = v.target_left = volume / 100.0 * g.left;
-    v.right = v.target_right = volume / 100.0 * g.right;
-    v.loop_key = key;
-    voices_.push_back(std::move(v));
-    ++stats_.started;
-    stats_.peak = std::max(stats_.peak, sounding());
-    return true;
+    return start(std::move(sound), volume, pan, key);
 }
 
 void VoiceEngine::stop_loop(int key) {

@@ -94,6 +94,8 @@ class VoiceEngine {
     };
     // Finds room for a voice of `loudness`; false when it is the one dropped.
     bool admit(double loudness);
+    // A new voice (loop_key -1: a one-shot), if the pool admits it.
+    bool start(std::shared_ptr<const SoundData> sound, double volume, double pan, int loop_key);
     void fade_out(Voice &v);
     Voice *find_loop(int key);
     const Voice *find_loop(int key) const;
