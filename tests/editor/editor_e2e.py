@@ -1190,6 +1190,16 @@ def main():
         if not shutil.which(tool):
             print('editor_e2e: %s not found (apt-get install xdotool imagemagick)' % tool, file=sys.stderr)
             return 2
+    # xvfb-run starts the case when Xvfb says it is ready, but under load a client has been seen
+    # refused right after ("Failed to open display"): wait until the server takes a connection.
+    deadline = time.time() + 30
+    while subprocess.run(['xdotool', 'getdisplaygeometry'], stdout=subprocess.DEVNULL,
+                         stderr=subprocess.DEVNULL).returncode != 0:
+        if time.time() > deadline:
+            print('editor_e2e: the X server on %s never took a connection' % os.environ['DISPLAY'],
+                  file=sys.stderr)
+            return 2
+        time.sleep(0.2)
     c = Case(args, args.case)
     ok = False
     try:
