@@ -286,16 +286,25 @@ bool EditorSession::delete_keyframe(std::int64_t time_ms, std::string *error) {
 
 bool EditorSession::undo() {
     if (drag_ || !history_.undo(doc_, history_key())) return false;
-    timeline_->edit(doc_);
-    changed();
+    follow_document();
     return true;
 }
 
 bool EditorSession::redo() {
     if (drag_ || !history_.redo(doc_, history_key())) return false;
-    timeline_->edit(doc_);
-    changed();
+    follow_document();
     return true;
+}
+
+void EditorSession::follow_document() {
+    changed();
+    // The document went back to a state the timeline accepted before; should a plugin it names
+    // have gone since, the document is still kept and the bake says why it cannot follow.
+    try {
+        timeline_->edit(doc_);
+    } catch (const std::exception &e) {
+        bake_error_ = e.what();
+    }
 }
 
 bool EditorSession::use_backend(const std::string &id, std::string &error) {

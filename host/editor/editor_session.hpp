@@ -127,6 +127,8 @@ class EditorSession {
     };
     std::int64_t history_key() const;
     void changed();
+    // After undo or redo: the timeline takes the document back.
+    void follow_document();
     ModelState state_now(int model, const Frame &frame) const;
     std::unique_ptr<Edit> transform_edit(const std::vector<std::pair<int, ModelState>> &models,
                                          const std::optional<CameraState> &camera) const;
