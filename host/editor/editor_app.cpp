@@ -265,7 +265,9 @@ int run_editor(const EditorOptions &options) {
                 window_state.events.pop_front();
                 switch (e.kind) {
                 case InputEvent::Press:
-                    if (!io.WantCaptureMouse && !pointer.down()) pointer.press(session, e, fb_h);
+                    // Drags are in window coordinates, so the viewport height is too (on a
+                    // HiDPI screen the framebuffer has more pixels than the window).
+                    if (!io.WantCaptureMouse && !pointer.down()) pointer.press(session, e, win_h);
                     break;
                 case InputEvent::Release:
                     if (auto click = pointer.release(session, e)) {
