@@ -3,8 +3,9 @@
 
 Each case is a function `case_NAME`; one case runs per invocation:
 
-    xvfb-run -a -s "-screen 0 1280x800x24" python3 editor_e2e.py \
-        --bin build/bin/animator --source . --case select_click
+    python3 editor_e2e.py --bin build/bin/animator --source . --case select_click
+
+Each run starts its own Xvfb (no display of yours is needed or touched).
 
 Each case starts the program in a fresh temporary working folder (export writes
 ./animations/new.ani there) with its own copies of the input files, drives it as a user would
@@ -14,7 +15,7 @@ screenshot: `import -window root`, converted to binary PPM and read here) and wh
 no sanitizer reported anything (the suite runs again in an ASan+UBSan build). Exit status 0 on a
 pass; on a failure a message, and the folder kept with the screenshots and logs.
 
-Stdlib only. Needs xdotool and imagemagick (`import`, `convert`), and a display (xvfb-run).
+Stdlib only. Needs Xvfb, xdotool and imagemagick (`import`, `convert`).
 """
 
 import argparse
@@ -1183,23 +1184,42 @@ def main():
         raise Failure('the case took longer than %.0f s' % args.timeout)
     signal.signal(signal.SIGALRM, out_of_time)
     signal.alarm(int(args.timeout))
-    if not os.environ.get('DISPLAY'):
-        print('editor_e2e: no DISPLAY; run under xvfb-run -a -s "-screen 0 1280x800x24"', file=sys.stderr)
-        return 2
-    for tool in ('xdotool', 'import', 'convert'):
+    for tool in ('Xvfb', 'xdotool', 'import', 'convert'):
         if not shutil.which(tool):
-            print('editor_e2e: %s not found (apt-get install xdotool imagemagick)' % tool, file=sys.stderr)
+            print('editor_e2e: %s not found (apt-get install xvfb xdotool imagemagick)' % tool, file=sys.stderr)
             return 2
-    # xvfb-run starts the case when Xvfb says it is ready, but under load a client has been seen
-    # refused right after ("Failed to open display"): wait until the server takes a connection.
-    deadline = time.time() + 30
-    while subprocess.run(['xdotool', 'getdisplaygeometry'], stdout=subprocess.DEVNULL,
-                         stderr=subprocess.DEVNULL).returncode != 0:
-        if time.time() > deadline:
-            print('editor_e2e: the X server on %s never took a connection' % os.environ['DISPLAY'],
-                  file=sys.stderr)
-            return 2
-        time.sleep(0.2)
+    # A display of the case's own: Xvfb picks a free number itself (-displayfd) and writes it when
+    # it takes connections, so cases running side by side never share or race for one (xvfb-run -a
+    # did: two cases picked one number, and a dying server unlinked a new one's socket).
+    read_end, write_end = os.pipe()
+    xvfb = subprocess.Popen(['Xvfb', '-displayfd', str(write_end), '-screen', '0', '1280x800x24',
+                             '-nolisten', 'tcp'], pass_fds=(write_end,),
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    os.close(write_end)
+    number = b''
+    with os.fdopen(read_end, 'rb') as pipe:
+        while not number.endswith(b'\n'):
+            chunk = pipe.read(1)
+            if not chunk:
+                break
+            number += chunk
+    if not number.strip().isdigit():
+        print('editor_e2e: Xvfb did not start', file=sys.stderr)
+        xvfb.kill()
+        return 2
+    os.environ['DISPLAY'] = ':' + number.strip().decode()
+    try:
+        return run_case(args)
+    finally:
+        xvfb.terminate()
+        try:
+            xvfb.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            xvfb.kill()
+            xvfb.wait()
+
+
+def run_case(args):
     c = Case(args, args.case)
     ok = False
     try:
