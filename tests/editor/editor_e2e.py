@@ -20,6 +20,7 @@ Stdlib only. Needs Xvfb, xdotool and imagemagick (`import`, `convert`).
 
 import argparse
 import os
+import random
 import re
 import shutil
 import signal
@@ -286,8 +287,21 @@ class Editor:
         self.window = None
         self.exit_code = None
         deadline = time.time() + START_TIMEOUT
+        retries = 2
         while time.time() < deadline:
             if self.proc.poll() is not None:
+                # Under load a client of a fresh Xvfb has now and then been refused its
+                # connection (Xvfb logs nothing; the next client connects). That is the test
+                # machine, not the editor: start it again, at most twice, and say so.
+                if retries > 0 and 'Failed to open display' in self.stderr():
+                    retries -= 1
+                    case.log('the X server refused the connection; starting again')
+                    time.sleep(0.5)
+                    self.err.seek(0)
+                    self.err.truncate()
+                    self.proc = subprocess.Popen([case.bin] + list(args), cwd=case.work, stdout=self.out,
+                                                 stderr=self.err, env=env, start_new_session=True)
+                    continue
                 raise Failure('animator exited (%s) before its window appeared; stderr:\n%s'
                               % (self.proc.returncode, self.stderr()))
             r = subprocess.run(['xdotool', 'search', '--pid', str(self.proc.pid), '--name', 'animator'],
@@ -1188,26 +1202,31 @@ def main():
         if not shutil.which(tool):
             print('editor_e2e: %s not found (apt-get install xvfb xdotool imagemagick)' % tool, file=sys.stderr)
             return 2
-    # A display of the case's own: Xvfb picks a free number itself (-displayfd) and writes it when
-    # it takes connections, so cases running side by side never share or race for one (xvfb-run -a
-    # did: two cases picked one number, and a dying server unlinked a new one's socket).
-    read_end, write_end = os.pipe()
-    xvfb = subprocess.Popen(['Xvfb', '-displayfd', str(write_end), '-screen', '0', '1280x800x24',
-                             '-nolisten', 'tcp'], pass_fds=(write_end,),
-                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    os.close(write_end)
-    number = b''
-    with os.fdopen(read_end, 'rb') as pipe:
-        while not number.endswith(b'\n'):
-            chunk = pipe.read(1)
-            if not chunk:
-                break
-            number += chunk
-    if not number.strip().isdigit():
-        print('editor_e2e: Xvfb did not start', file=sys.stderr)
+    # A display of the case's own, at a random number: Xvfb says on -displayfd when it takes
+    # connections. Not the lowest free number (xvfb-run -a, or -displayfd alone): a number
+    # reused right after another case's server shut down was seen refusing clients (the old
+    # server's exit removed the new one's socket), so numbers are spread over a wide range.
+    xvfb = None
+    for _ in range(20):
+        n = random.randrange(1000, 30000)
+        if os.path.exists('/tmp/.X%d-lock' % n):
+            continue
+        read_end, write_end = os.pipe()
+        xvfb = subprocess.Popen(['Xvfb', ':%d' % n, '-displayfd', str(write_end), '-screen', '0',
+                                 '1280x800x24', '-nolisten', 'tcp'], pass_fds=(write_end,),
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        os.close(write_end)
+        with os.fdopen(read_end, 'rb') as pipe:
+            said = pipe.readline().strip()
+        if said == str(n).encode():
+            break
         xvfb.kill()
+        xvfb.wait()
+        xvfb = None
+    if xvfb is None:
+        print('editor_e2e: Xvfb did not start', file=sys.stderr)
         return 2
-    os.environ['DISPLAY'] = ':' + number.strip().decode()
+    os.environ['DISPLAY'] = ':%d' % n
     try:
         return run_case(args)
     finally:
