@@ -2,19 +2,14 @@
 
 #include "lua_sandbox.hpp"
 
-#include <animator/assets.h>
-
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtx/euler_angles.hpp>
 
 #include <cmath>
-#include <fstream>
+#include <deque>
 #include <map>
 #include <optional>
-#include <set>
-#include <sstream>
-#include <vector>
 
 namespace lua_scene {
 
@@ -22,6 +17,13 @@ namespace {
 
 const char *kNodeMeta = "animator.node";
 const char *kMaterialMeta = "animator.material";
+
+// What the scene may build on our side of the sandbox, beyond Lua's own memory budget: nodes,
+// their names and sound and texture names are copies that outlive Lua's strings.
+constexpr std::size_t kSceneDataBudget = 256u << 20; // 256 MiB
+// How far up add_child looks for a cycle: deeper trees are refused, so that building one
+// cannot cost time that no instruction count sees (a chain of n nodes would cost n^2 / 2).
+constexpr int kMaxDepth = 1000;
 
 struct Material {
     glm::dvec3 kd{0.7}, ks{0.3};
@@ -43,19 +45,21 @@ struct Node {
     double tint = 0.0, reflectivity = 0.0, transparency = 0.0, refractive_index = 1.0;
 };
 
+// The scene as the script builds it.
+//
+// Every gr.* function and node method may call back into the scene's own Lua code: reading a
+// field of an options table runs its __index, an unknown key's name runs its __tostring, and any
+// allocation may run a __gc finalizer. That code may call gr.* in turn. So no function holds a
+// reference into `nodes` or `materials` across a Lua call: each reads and checks all of its
+// arguments first, then looks its node up and writes in one step with no Lua call between. The
+// deques (which never move an element when they grow) are a second line of defence.
 struct Scene {
-    std::string path;
-    const ani_host *host = nullptr;
-    std::vector<Node> nodes;
-    std::vector<Material> materials;
+    std::deque<Node> nodes;
+    std::deque<Material> materials;
     std::map<std::string, int> by_name;
+    std::size_t data_bytes = 0;
     std::optional<int> settings_line, camera_line;
-    std::int64_t max_time_ms = 60000;
-    double gravity = 9.81;
-    int down = ANI_AXIS_Y;
-    bool cel = false;
-    std::string skybox, backend = "physics.custom", interpolation = "interpolation.linear";
-    ani_camera_state camera{{0, 0, 0}, {1, 0, 0, 0}, 50.0};
+    SceneResult settings; // the settings and camera; its models are filled at the end
 };
 
 Scene &scene_of(lua_State *L) {
@@ -71,31 +75,48 @@ int current_line(lua_State *L) {
     return 0;
 }
 
-Node &check_node(lua_State *L, int arg) {
-    auto *index = static_cast<int *>(luaL_checkudata(L, arg, kNodeMeta));
-    return scene_of(L).nodes[static_cast<size_t>(*index)];
+// Counts `bytes` of scene data against kSceneDataBudget.
+void charge(lua_State *L, std::size_t bytes) {
+    Scene &scene = scene_of(L);
+    scene.data_bytes += bytes;
+    if (scene.data_bytes > kSceneDataBudget)
+        luaL_error(L, "the scene made more than its budget of %d MiB of nodes and names",
+                   static_cast<int>(kSceneDataBudget >> 20));
 }
 
-int node_index(lua_State *L, int arg) { return *static_cast<int *>(luaL_checkudata(L, arg, kNodeMeta)); }
+// The node at argument `arg`, as an index: a reference would not survive a call into Lua.
+int check_node(lua_State *L, int arg) { return *static_cast<int *>(luaL_checkudata(L, arg, kNodeMeta)); }
+
+Node &node_at(lua_State *L, int index) { return scene_of(L).nodes[static_cast<size_t>(index)]; }
+
+std::string checked_string(lua_State *L, int arg) {
+    size_t size = 0;
+    const char *s = luaL_checklstring(L, arg, &size);
+    return std::string(s, size);
+}
 
 int push_node(lua_State *L, Node node) {
-    Scene &scene = scene_of(L);
     if (node.name.empty()) return luaL_error(L, "a node needs a non-empty name");
-    auto [it, fresh] = scene.by_name.emplace(node.name, static_cast<int>(scene.nodes.size()));
+    // The name is kept twice (in the node and as the key of by_name), with a map entry's overhead.
+    charge(L, sizeof(Node) + 2 * node.name.size() + node.mesh.size() + 64);
+    node.line = current_line(L);
+    Scene &scene = scene_of(L);
+    const int index = static_cast<int>(scene.nodes.size());
+    const auto [it, fresh] = scene.by_name.emplace(node.name, index);
     if (!fresh)
         return luaL_error(L, "a node named '%s' already exists (made on line %d)", node.name.c_str(),
                           scene.nodes[static_cast<size_t>(it->second)].line);
-    node.line = current_line(L);
     scene.nodes.push_back(std::move(node));
-    *static_cast<int *>(lua_newuserdatauv(L, sizeof(int), 0)) = static_cast<int>(scene.nodes.size() - 1);
+    // The userdata's allocation may run finalizers that make nodes too: `index` is already fixed.
+    *static_cast<int *>(lua_newuserdatauv(L, sizeof(int), 0)) = index;
     luaL_setmetatable(L, kNodeMeta);
     return 1;
 }
 
-// {a, b, c}: exactly `n` numbers.
+// {a, b, c}: exactly `n` finite numbers (read raw: no metamethod runs).
 std::vector<double> numbers(lua_State *L, int arg, int n, const char *what) {
     luaL_checktype(L, arg, LUA_TTABLE);
-    if (static_cast<int>(lua_rawlen(L, arg)) != n)
+    if (lua_rawlen(L, arg) != static_cast<lua_Unsigned>(n))
         luaL_error(L, "%s must be a table of %d numbers", what, n);
     std::vector<double> out;
     for (int i = 1; i <= n; ++i) {
@@ -107,14 +128,6 @@ std::vector<double> numbers(lua_State *L, int arg, int n, const char *what) {
         lua_pop(L, 1);
     }
     return out;
-}
-
-glm::dvec3 vec3_field(lua_State *L, int table, const char *key) {
-    lua_getfield(L, table, key);
-    const int at = lua_gettop(L);
-    const auto v = numbers(L, at, 3, key);
-    lua_pop(L, 1);
-    return {v[0], v[1], v[2]};
 }
 
 // Every key of the options table at `arg` must be one of `allowed`.
@@ -135,14 +148,12 @@ void check_keys(lua_State *L, int arg, const char *function, std::initializer_li
     }
 }
 
-bool has(lua_State *L, int table, const char *key) {
-    const bool present = lua_getfield(L, table, key) != LUA_TNIL;
-    lua_pop(L, 1);
-    return present;
-}
-
-double number_field(lua_State *L, int table, const char *key, double lo, double hi) {
-    lua_getfield(L, table, key);
+// The optional fields of an options table, each read once (lua_getfield may run __index).
+std::optional<double> number_field(lua_State *L, int table, const char *key, double lo, double hi) {
+    if (lua_getfield(L, table, key) == LUA_TNIL) {
+        lua_pop(L, 1);
+        return std::nullopt;
+    }
     int ok = 0;
     const double v = lua_tonumberx(L, -1, &ok);
     lua_pop(L, 1);
@@ -151,57 +162,68 @@ double number_field(lua_State *L, int table, const char *key, double lo, double 
     return v;
 }
 
-bool bool_field(lua_State *L, int table, const char *key) {
-    if (lua_getfield(L, table, key) != LUA_TBOOLEAN) luaL_error(L, "'%s' must be true or false", key);
+std::optional<bool> bool_field(lua_State *L, int table, const char *key) {
+    const int type = lua_getfield(L, table, key);
     const bool b = lua_toboolean(L, -1);
     lua_pop(L, 1);
+    if (type == LUA_TNIL) return std::nullopt;
+    if (type != LUA_TBOOLEAN) luaL_error(L, "'%s' must be true or false", key);
     return b;
 }
 
-std::string string_field(lua_State *L, int table, const char *key) {
-    if (lua_getfield(L, table, key) != LUA_TSTRING) luaL_error(L, "'%s' must be a string", key);
-    std::string s = lua_tostring(L, -1);
+std::optional<std::string> string_field(lua_State *L, int table, const char *key) {
+    const int type = lua_getfield(L, table, key);
+    if (type == LUA_TNIL) {
+        lua_pop(L, 1);
+        return std::nullopt;
+    }
+    if (type != LUA_TSTRING) luaL_error(L, "'%s' must be a string", key);
+    size_t size = 0;
+    const char *s = lua_tolstring(L, -1, &size);
+    std::string out(s, size);
     lua_pop(L, 1);
-    return s;
+    return out;
+}
+
+std::optional<glm::dvec3> vec3_field(lua_State *L, int table, const char *key) {
+    if (lua_getfield(L, table, key) == LUA_TNIL) {
+        lua_pop(L, 1);
+        return std::nullopt;
+    }
+    const auto v = numbers(L, lua_gettop(L), 3, key);
+    lua_pop(L, 1);
+    return glm::dvec3(v[0], v[1], v[2]);
 }
 
 // ---- gr.* --------------------------------------------------------------------------------
 
 int gr_node(lua_State *L) {
     Node n;
-    n.name = luaL_checkstring(L, 1);
-    return push_node(L, n);
+    n.name = checked_string(L, 1);
+    return push_node(L, std::move(n));
 }
 
+// The mesh is named here and found later, by the plugin (the scene runs where no file is seen).
 int gr_mesh(lua_State *L) {
     Node n;
-    n.mesh = luaL_checkstring(L, 1);
-    n.name = luaL_optstring(L, 2, n.mesh.c_str());
+    n.mesh = checked_string(L, 1);
+    n.name = lua_isnoneornil(L, 2) ? n.mesh : checked_string(L, 2);
     if (n.mesh.empty()) return luaL_error(L, "gr.mesh needs a mesh id");
-    const Scene &scene = scene_of(L);
-    const auto *assets = scene.host && scene.host->get_extension
-                             ? static_cast<const ani_assets_ext *>(scene.host->get_extension(scene.host, ANI_EXT_ASSETS))
-                             : nullptr;
-    if (assets) {
-        char where[2048];
-        if (!assets->resolve(scene.host, ANI_ASSET_MESH, n.mesh.c_str(), scene.path.c_str(), where, sizeof where))
-            return luaL_error(L, "unknown mesh '%s' (%s)", n.mesh.c_str(), where);
-    }
-    return push_node(L, n);
+    return push_node(L, std::move(n));
 }
 
 // gr.joint(name, {xmin, xinit, xmax}, {ymin, yinit, ymax}): a node turned to its initial angles.
 // The ranges are checked, not kept: the document has no joint limits yet.
 int gr_joint(lua_State *L) {
     Node n;
-    n.name = luaL_checkstring(L, 1);
+    n.name = checked_string(L, 1);
     const auto x = numbers(L, 2, 3, "the joint's x range");
     const auto y = numbers(L, 3, 3, "the joint's y range");
     for (const auto &r : {x, y})
         if (!(r[0] <= r[1] && r[1] <= r[2])) return luaL_error(L, "a joint range must be {min, init, max} with min <= init <= max");
     n.local = glm::rotate(glm::dmat4(1.0), glm::radians(y[1]), glm::dvec3(0, 1, 0)) *
               glm::rotate(glm::dmat4(1.0), glm::radians(x[1]), glm::dvec3(1, 0, 0));
-    return push_node(L, n);
+    return push_node(L, std::move(n));
 }
 
 int gr_material(lua_State *L) {
@@ -214,150 +236,201 @@ int gr_material(lua_State *L) {
         if (c < 0.0 || c > 1.0) return luaL_error(L, "material colours must be in [0, 1]");
     m.shininess = luaL_checknumber(L, 3);
     if (!(m.shininess >= 0.0) || !std::isfinite(m.shininess)) return luaL_error(L, "shininess must be >= 0");
+    charge(L, sizeof(Material));
     Scene &scene = scene_of(L);
+    const int index = static_cast<int>(scene.materials.size());
     scene.materials.push_back(m);
-    *static_cast<int *>(lua_newuserdatauv(L, sizeof(int), 0)) = static_cast<int>(scene.materials.size() - 1);
+    *static_cast<int *>(lua_newuserdatauv(L, sizeof(int), 0)) = index;
     luaL_setmetatable(L, kMaterialMeta);
     return 1;
 }
 
 int gr_settings(lua_State *L) {
+    {
+        const Scene &scene = scene_of(L);
+        if (scene.settings_line) return luaL_error(L, "gr.settings is called twice (first on line %d)", *scene.settings_line);
+    }
+    const int line = current_line(L);
+    check_keys(L, 1, "gr.settings", {"gravity", "down", "max_time", "skybox", "cel", "backend", "interpolation"});
+    const auto gravity = number_field(L, 1, "gravity", -1e6, 1e6);
+    const auto down = string_field(L, 1, "down");
+    if (down && *down != "x" && *down != "y" && *down != "z")
+        return luaL_error(L, "'down' must be 'x', 'y' or 'z', got '%s'", down->c_str());
+    const auto max_time = number_field(L, 1, "max_time", 1.0, 300000.0);
+    const auto skybox = string_field(L, 1, "skybox");
+    const auto cel = bool_field(L, 1, "cel");
+    const auto backend = string_field(L, 1, "backend");
+    const auto interpolation = string_field(L, 1, "interpolation");
+    charge(L, (skybox ? skybox->size() : 0) + (backend ? backend->size() : 0) +
+                  (interpolation ? interpolation->size() : 0));
+
     Scene &scene = scene_of(L);
     if (scene.settings_line) return luaL_error(L, "gr.settings is called twice (first on line %d)", *scene.settings_line);
-    scene.settings_line = current_line(L);
-    check_keys(L, 1, "gr.settings", {"gravity", "down", "max_time", "skybox", "cel", "backend", "interpolation"});
-    if (has(L, 1, "gravity")) scene.gravity = number_field(L, 1, "gravity", -1e6, 1e6);
-    if (has(L, 1, "down")) {
-        const std::string d = string_field(L, 1, "down");
-        if (d != "x" && d != "y" && d != "z") return luaL_error(L, "'down' must be 'x', 'y' or 'z', got '%s'", d.c_str());
-        scene.down = d == "x" ? ANI_AXIS_X : d == "y" ? ANI_AXIS_Y : ANI_AXIS_Z;
-    }
-    if (has(L, 1, "max_time"))
-        scene.max_time_ms = std::llround(1000.0 * number_field(L, 1, "max_time", 1.0, 300000.0));
-    if (has(L, 1, "skybox")) scene.skybox = string_field(L, 1, "skybox");
-    if (has(L, 1, "cel")) scene.cel = bool_field(L, 1, "cel");
-    if (has(L, 1, "backend")) scene.backend = string_field(L, 1, "backend");
-    if (has(L, 1, "interpolation")) scene.interpolation = string_field(L, 1, "interpolation");
+    scene.settings_line = line;
+    SceneResult &s = scene.settings;
+    if (gravity) s.gravity = *gravity;
+    if (down) s.down_axis = *down == "x" ? ANI_AXIS_X : *down == "y" ? ANI_AXIS_Y : ANI_AXIS_Z;
+    if (max_time) s.max_time_ms = std::llround(1000.0 * *max_time);
+    if (skybox) s.skybox = *skybox;
+    if (cel) s.cel_shading = *cel;
+    if (backend) s.backend = *backend;
+    if (interpolation) s.interpolation = *interpolation;
     return 0;
 }
 
 int gr_camera(lua_State *L) {
+    {
+        const Scene &scene = scene_of(L);
+        if (scene.camera_line) return luaL_error(L, "gr.camera is called twice (first on line %d)", *scene.camera_line);
+    }
+    const int line = current_line(L);
+    check_keys(L, 1, "gr.camera", {"eye", "look_at", "up", "fov"});
+    const glm::dvec3 eye = vec3_field(L, 1, "eye").value_or(glm::dvec3(0.0));
+    const glm::dvec3 at = vec3_field(L, 1, "look_at").value_or(eye + glm::dvec3(0, 0, -1));
+    const glm::dvec3 up = vec3_field(L, 1, "up").value_or(glm::dvec3(0, 1, 0));
+    const auto fov = number_field(L, 1, "fov", 0.0, 180.0);
+    const glm::dvec3 forward = at - eye;
+    if (!(glm::length(forward) >= 1e-12)) return luaL_error(L, "the camera's look_at must differ from its eye");
+    if (!(glm::length(glm::cross(glm::normalize(forward), up)) >= 1e-9))
+        return luaL_error(L, "the camera's up must not be parallel to its view direction");
+    if (fov && (*fov <= 0.0 || *fov >= 180.0))
+        return luaL_error(L, "'fov' must be strictly between 0 and 180 degrees");
+    const glm::dquat q = glm::quatLookAtRH(glm::normalize(forward), glm::normalize(up));
+
     Scene &scene = scene_of(L);
     if (scene.camera_line) return luaL_error(L, "gr.camera is called twice (first on line %d)", *scene.camera_line);
-    scene.camera_line = current_line(L);
-    check_keys(L, 1, "gr.camera", {"eye", "look_at", "up", "fov"});
-    const glm::dvec3 eye = has(L, 1, "eye") ? vec3_field(L, 1, "eye") : glm::dvec3(0.0);
-    const glm::dvec3 at = has(L, 1, "look_at") ? vec3_field(L, 1, "look_at") : eye + glm::dvec3(0, 0, -1);
-    const glm::dvec3 up = has(L, 1, "up") ? vec3_field(L, 1, "up") : glm::dvec3(0, 1, 0);
-    const glm::dvec3 forward = at - eye;
-    if (glm::length(forward) < 1e-12) return luaL_error(L, "the camera's look_at must differ from its eye");
-    if (glm::length(glm::cross(glm::normalize(forward), up)) < 1e-9)
-        return luaL_error(L, "the camera's up must not be parallel to its view direction");
-    const glm::dquat q = glm::quatLookAtRH(glm::normalize(forward), glm::normalize(up));
-    scene.camera.position = {eye.x, eye.y, eye.z};
-    scene.camera.rotation = {q.w, q.x, q.y, q.z};
-    if (has(L, 1, "fov")) {
-        scene.camera.fov_degrees = number_field(L, 1, "fov", 0.0, 180.0);
-        if (scene.camera.fov_degrees <= 0.0 || scene.camera.fov_degrees >= 180.0)
-            return luaL_error(L, "'fov' must be strictly between 0 and 180 degrees");
-    }
+    scene.camera_line = line;
+    ani_camera_state &camera = scene.settings.camera;
+    camera.position = {eye.x, eye.y, eye.z};
+    camera.rotation = {q.w, q.x, q.y, q.z};
+    if (fov) camera.fov_degrees = *fov;
     return 0;
 }
 
 // ---- node methods --------------------------------------------------------------------------
 
 int node_translate(lua_State *L) {
-    Node &n = check_node(L, 1);
+    const int index = check_node(L, 1);
     const glm::dvec3 v(luaL_checknumber(L, 2), luaL_checknumber(L, 3), luaL_checknumber(L, 4));
+    Node &n = node_at(L, index);
     n.local = glm::translate(glm::dmat4(1.0), v) * n.local; // CS488: later calls apply after earlier ones
     return 0;
 }
 
 int node_rotate(lua_State *L) {
-    Node &n = check_node(L, 1);
-    const std::string axis = luaL_checkstring(L, 2);
+    const int index = check_node(L, 1);
+    const std::string axis = checked_string(L, 2);
     const double degrees = luaL_checknumber(L, 3);
     glm::dvec3 a;
     if (axis == "x" || axis == "X") a = {1, 0, 0};
     else if (axis == "y" || axis == "Y") a = {0, 1, 0};
     else if (axis == "z" || axis == "Z") a = {0, 0, 1};
     else return luaL_error(L, "rotate's axis must be 'x', 'y' or 'z', got '%s'", axis.c_str());
+    Node &n = node_at(L, index);
     n.local = glm::rotate(glm::dmat4(1.0), glm::radians(degrees), a) * n.local;
     return 0;
 }
 
 int node_scale(lua_State *L) {
-    Node &n = check_node(L, 1);
+    const int index = check_node(L, 1);
     const glm::dvec3 s(luaL_checknumber(L, 2), luaL_checknumber(L, 3), luaL_checknumber(L, 4));
     if (!(s.x > 0.0 && s.y > 0.0 && s.z > 0.0)) return luaL_error(L, "scale factors must be > 0");
+    Node &n = node_at(L, index);
     n.local = glm::scale(glm::dmat4(1.0), s) * n.local;
     return 0;
 }
 
 int node_add_child(lua_State *L) {
-    const int parent = node_index(L, 1);
-    const int child = node_index(L, 2);
+    const int parent = check_node(L, 1);
+    const int child = check_node(L, 2);
     Scene &scene = scene_of(L);
-    Node &c = scene.nodes[static_cast<size_t>(child)];
-    if (c.parent >= 0)
-        return luaL_error(L, "node '%s' is already a child of '%s'", c.name.c_str(),
-                          scene.nodes[static_cast<size_t>(c.parent)].name.c_str());
-    for (int up = parent; up >= 0; up = scene.nodes[static_cast<size_t>(up)].parent)
-        if (up == child) return luaL_error(L, "adding '%s' under '%s' would make a cycle", c.name.c_str(),
-                                           scene.nodes[static_cast<size_t>(parent)].name.c_str());
-    c.parent = parent;
+    // The checks copy what their messages need: luaL_error allocates, and so may run Lua.
+    auto name = [&](int i) { return scene.nodes[static_cast<size_t>(i)].name; };
+    const int child_parent = scene.nodes[static_cast<size_t>(child)].parent;
+    if (child_parent >= 0) {
+        const std::string message = "node '" + name(child) + "' is already a child of '" + name(child_parent) + "'";
+        return luaL_error(L, "%s", message.c_str());
+    }
+    int depth = 0;
+    for (int up = parent; up >= 0; up = scene.nodes[static_cast<size_t>(up)].parent) {
+        if (up == child) {
+            const std::string message = "adding '" + name(child) + "' under '" + name(parent) + "' would make a cycle";
+            return luaL_error(L, "%s", message.c_str());
+        }
+        if (++depth > kMaxDepth) {
+            const std::string message = "node '" + name(parent) + "' is more than " + std::to_string(kMaxDepth) +
+                                        " levels deep; a scene tree may have at most that many";
+            return luaL_error(L, "%s", message.c_str());
+        }
+    }
+    charge(L, sizeof(int));
+    scene.nodes[static_cast<size_t>(child)].parent = parent;
     scene.nodes[static_cast<size_t>(parent)].children.push_back(child);
     return 0;
 }
 
 int node_set_material(lua_State *L) {
-    Node &n = check_node(L, 1);
-    n.material = *static_cast<int *>(luaL_checkudata(L, 2, kMaterialMeta));
+    const int index = check_node(L, 1);
+    const int material = *static_cast<int *>(luaL_checkudata(L, 2, kMaterialMeta));
+    node_at(L, index).material = material;
     return 0;
 }
 
 int node_set_physics(lua_State *L) {
-    Node &n = check_node(L, 1);
+    const int index = check_node(L, 1);
     check_keys(L, 2, "set_physics", {"dynamics", "gravity", "mass", "velocity"});
-    if (has(L, 2, "dynamics")) n.dynamics = bool_field(L, 2, "dynamics");
-    if (has(L, 2, "gravity")) n.gravity = bool_field(L, 2, "gravity");
-    if (has(L, 2, "mass")) {
-        n.mass = number_field(L, 2, "mass", 0.0, 1e30);
-        if (n.mass <= 0.0) return luaL_error(L, "'mass' must be > 0");
-    }
-    if (has(L, 2, "velocity")) n.velocity = vec3_field(L, 2, "velocity");
+    const auto dynamics = bool_field(L, 2, "dynamics");
+    const auto gravity = bool_field(L, 2, "gravity");
+    const auto mass = number_field(L, 2, "mass", 0.0, 1e30);
+    if (mass && *mass <= 0.0) return luaL_error(L, "'mass' must be > 0");
+    const auto velocity = vec3_field(L, 2, "velocity");
+    Node &n = node_at(L, index);
+    if (dynamics) n.dynamics = *dynamics;
+    if (gravity) n.gravity = *gravity;
+    if (mass) n.mass = *mass;
+    if (velocity) n.velocity = *velocity;
     return 0;
 }
 
 int node_set_texture(lua_State *L) {
-    check_node(L, 1).texture = luaL_checkstring(L, 2);
+    const int index = check_node(L, 1);
+    std::string texture = checked_string(L, 2);
+    charge(L, texture.size());
+    node_at(L, index).texture = std::move(texture);
     return 0;
 }
 
 int node_set_tint(lua_State *L) {
-    Node &n = check_node(L, 1);
-    n.tint = luaL_checknumber(L, 2);
-    if (!(n.tint >= 0.0 && n.tint <= 1.0)) return luaL_error(L, "tint must be in [0, 1]");
+    const int index = check_node(L, 1);
+    const double tint = luaL_checknumber(L, 2);
+    if (!(tint >= 0.0 && tint <= 1.0)) return luaL_error(L, "tint must be in [0, 1]");
+    node_at(L, index).tint = tint;
     return 0;
 }
 
 int node_set_optics(lua_State *L) {
-    Node &n = check_node(L, 1);
+    const int index = check_node(L, 1);
     check_keys(L, 2, "set_optics", {"reflectivity", "transparency", "refractive_index"});
-    if (has(L, 2, "reflectivity")) n.reflectivity = number_field(L, 2, "reflectivity", 0.0, 1.0);
-    if (has(L, 2, "transparency")) n.transparency = number_field(L, 2, "transparency", 0.0, 1.0);
-    if (has(L, 2, "refractive_index")) {
-        n.refractive_index = number_field(L, 2, "refractive_index", 0.0, 100.0);
-        if (n.refractive_index <= 0.0) return luaL_error(L, "'refractive_index' must be > 0");
-    }
+    const auto reflectivity = number_field(L, 2, "reflectivity", 0.0, 1.0);
+    const auto transparency = number_field(L, 2, "transparency", 0.0, 1.0);
+    const auto refractive_index = number_field(L, 2, "refractive_index", 0.0, 100.0);
+    if (refractive_index && *refractive_index <= 0.0) return luaL_error(L, "'refractive_index' must be > 0");
+    Node &n = node_at(L, index);
+    if (reflectivity) n.reflectivity = *reflectivity;
+    if (transparency) n.transparency = *transparency;
+    if (refractive_index) n.refractive_index = *refractive_index;
     return 0;
 }
 
 int node_set_sound(lua_State *L) {
-    Node &n = check_node(L, 1);
+    const int index = check_node(L, 1);
     check_keys(L, 2, "set_sound", {"collision", "moving"});
-    if (has(L, 2, "collision")) n.collision_sound = string_field(L, 2, "collision");
-    if (has(L, 2, "moving")) n.moving_sound = string_field(L, 2, "moving");
+    auto collision = string_field(L, 2, "collision");
+    auto moving = string_field(L, 2, "moving");
+    charge(L, (collision ? collision->size() : 0) + (moving ? moving->size() : 0));
+    Node &n = node_at(L, index);
+    if (collision) n.collision_sound = std::move(*collision);
+    if (moving) n.moving_sound = std::move(*moving);
     return 0;
 }
 
@@ -388,13 +461,9 @@ void register_api(lua_State *L) {
     lua_setglobal(L, "gr");
 }
 
-void warn(const ani_host *host, const std::string &message) {
-    if (host && host->log) host->log(host, ANI_LOG_WARNING, "format.lua", message.c_str());
-}
-
 // The node's local matrix as a keyframe state: T(center) Rx Ry Rz S(scale). A shear (a
 // non-uniform scale under a rotation, in CS488 call order) cannot be held and is dropped.
-bool to_state(const glm::dmat4 &m, const Node &node, const std::string &path, const ani_host *host,
+bool to_state(const glm::dmat4 &m, const Node &node, const std::string &path, SceneResult &out,
               ani_model_state &state, std::string &error) {
     glm::dvec3 axis[3] = {glm::dvec3(m[0]), glm::dvec3(m[1]), glm::dvec3(m[2])};
     glm::dvec3 scale(0.0);
@@ -408,8 +477,8 @@ bool to_state(const glm::dmat4 &m, const Node &node, const std::string &path, co
     }
     if (std::abs(glm::dot(axis[0], axis[1])) > 1e-6 || std::abs(glm::dot(axis[1], axis[2])) > 1e-6 ||
         std::abs(glm::dot(axis[0], axis[2])) > 1e-6)
-        warn(host, path + ":" + std::to_string(node.line) + ": node '" + node.name +
-                       "' is sheared (scaled unevenly after a rotation); the shear is dropped");
+        out.warnings.push_back(path + ":" + std::to_string(node.line) + ": node '" + node.name +
+                               "' is sheared (scaled unevenly after a rotation); the shear is dropped");
     glm::dmat4 rotation(1.0);
     rotation[0] = glm::dvec4(axis[0], 0.0);
     rotation[1] = glm::dvec4(glm::normalize(axis[1] - glm::dot(axis[1], axis[0]) * axis[0]), 0.0);
@@ -426,43 +495,18 @@ bool to_state(const glm::dmat4 &m, const Node &node, const std::string &path, co
     state.angles = {wrap(ax), wrap(ay), wrap(az)};
     state.scale = {scale.x, scale.y, scale.z};
     state.turn = {0.0, 0.0, 0.0};
+    if (!std::isfinite(state.center.x) || !std::isfinite(state.center.y) || !std::isfinite(state.center.z)) {
+        error = path + ":" + std::to_string(node.line) + ": node '" + node.name + "' is moved out of range";
+        return false;
+    }
     return true;
 }
 
-} // namespace
-
-bool read_scene(const char *path, const ani_host *host, ani::OwnedDocument &doc, std::string &error) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = std::string(path) + ": cannot open the file";
-        return false;
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-
-    Scene scene;
-    scene.path = path;
-    scene.host = host;
-    Sandbox sandbox;
-    lua_State *L = sandbox.state();
-    if (!L) {
-        error = std::string(path) + ": cannot create a Lua state";
-        return false;
-    }
-    lua_pushlightuserdata(L, &scene);
-    lua_setfield(L, LUA_REGISTRYINDEX, "animator.scene");
-    register_api(L);
-    if (!sandbox.run(path, text.str(), 1, error)) return false;
-    auto *root_index = static_cast<int *>(luaL_testudata(L, -1, kNodeMeta));
-    if (!root_index) {
-        error = std::string(path) + ": the scene must return its root node (return rootnode), got " +
-                luaL_typename(L, -1);
-        return false;
-    }
-
-    // Models in depth-first order, so a parent always comes before its children. A root without
-    // a mesh is not a model: its transform moves into its children's.
-    const Node &root = scene.nodes[static_cast<size_t>(*root_index)];
+// The tree under the returned root as models in depth-first order, so a parent always comes
+// before its children. A root without a mesh is not a model: its transform moves into its
+// children's.
+bool flatten(const Scene &scene, int root_index, const std::string &path, SceneResult &out, std::string &error) {
+    const Node &root = scene.nodes[static_cast<size_t>(root_index)];
     struct Visit {
         int node;
         int parent_model;
@@ -472,14 +516,16 @@ bool read_scene(const char *path, const ani_host *host, ani::OwnedDocument &doc,
     if (root.mesh.empty()) {
         for (auto it = root.children.rbegin(); it != root.children.rend(); ++it) stack.push_back({*it, -1, root.local});
     } else {
-        stack.push_back({*root_index, -1, glm::dmat4(1.0)});
+        stack.push_back({root_index, -1, glm::dmat4(1.0)});
     }
-    std::vector<ani_model_state> states;
     while (!stack.empty()) {
         const Visit v = stack.back();
         stack.pop_back();
         const Node &n = scene.nodes[static_cast<size_t>(v.node)];
-        ani_model_desc m = doc.default_model(n.name, n.mesh);
+        SceneModel m;
+        m.name = n.name;
+        m.mesh = n.mesh;
+        m.line = n.line;
         m.parent = v.parent_model;
         if (n.material >= 0) {
             const Material &mat = scene.materials[static_cast<size_t>(n.material)];
@@ -487,7 +533,7 @@ bool read_scene(const char *path, const ani_host *host, ani::OwnedDocument &doc,
             m.ks = {mat.ks.x, mat.ks.y, mat.ks.z};
             m.shininess = mat.shininess;
         }
-        m.texture = doc.keep(n.texture);
+        m.texture = n.texture;
         m.tint = n.tint;
         m.reflectivity = n.reflectivity;
         m.transparency = n.transparency;
@@ -496,36 +542,41 @@ bool read_scene(const char *path, const ani_host *host, ani::OwnedDocument &doc,
         m.gravity = n.gravity;
         m.mass = n.mass;
         m.initial_velocity = {n.velocity.x, n.velocity.y, n.velocity.z};
-        m.collision_sound = doc.keep(n.collision_sound);
-        m.moving_sound = doc.keep(n.moving_sound);
-        ani_model_state state{};
-        if (!to_state(v.prefix * n.local, n, path, host, state, error)) return false;
-        const int index = static_cast<int>(doc.models.size());
-        doc.models.push_back(m);
-        states.push_back(state);
+        m.collision_sound = n.collision_sound;
+        m.moving_sound = n.moving_sound;
+        if (!to_state(v.prefix * n.local, n, path, out, m.state, error)) return false;
+        const int index = static_cast<int>(out.models.size());
+        out.models.push_back(std::move(m));
         for (auto it = n.children.rbegin(); it != n.children.rend(); ++it)
             stack.push_back({*it, index, glm::dmat4(1.0)});
     }
-
-    doc.default_settings();
-    ani_settings_view &s = doc.view.settings;
-    s.max_time_ms = scene.max_time_ms;
-    s.gravity = scene.gravity;
-    s.down_axis = scene.down;
-    s.cel_shading = scene.cel ? 1 : 0;
-    s.skybox = doc.keep(scene.skybox);
-    s.physics_backend = doc.keep(scene.backend);
-    s.interpolation = doc.keep(scene.interpolation);
-    ani_keyframe_view k{};
-    k.struct_size = sizeof k;
-    k.time_ms = 0;
-    k.camera = scene.camera;
-    k.camera_keyed = 1;
-    doc.keyed.emplace_back(states.size(), 1);
-    doc.keyframes.push_back(k);
-    doc.states.push_back(std::move(states));
-    doc.finish();
     return true;
+}
+
+} // namespace
+
+bool run_scene(const std::string &path, const std::string &text, SceneResult &out, std::string &error) {
+    // The scene outlives the sandbox: closing the Lua state runs finalizers, which may call gr.*.
+    Scene scene;
+    Sandbox sandbox;
+    lua_State *L = sandbox.state();
+    if (!L) {
+        error = path + ": cannot create a Lua state";
+        return false;
+    }
+    lua_pushlightuserdata(L, &scene);
+    lua_setfield(L, LUA_REGISTRYINDEX, "animator.scene");
+    register_api(L);
+    if (!sandbox.run(path, text, 1, error)) return false;
+    const auto *root_index = static_cast<const int *>(luaL_testudata(L, -1, kNodeMeta));
+    if (!root_index) {
+        error = path + ": the scene must return its root node (return rootnode), got " + luaL_typename(L, -1);
+        return false;
+    }
+    out = std::move(scene.settings);
+    out.models.clear();
+    out.warnings.clear();
+    return flatten(scene, *root_index, path, out, error);
 }
 
 } // namespace lua_scene

@@ -1,16 +1,16 @@
 // The CS488 scene API (gr.node, gr.mesh, gr.joint, gr.material and node methods) plus the
-// animator's extensions (docs/scene-lua.md), run in a sandbox, turned into a document.
+// animator's extensions (docs/scene-lua.md), run in a sandbox, turned into plain scene data.
 #pragma once
 
-#include <animator/document_builder.hpp>
-#include <animator/plugin.h>
+#include "scene_result.hpp"
 
 #include <string>
 
 namespace lua_scene {
 
-// Runs the scene file at `path` and fills `doc` (one keyframe, at t = 0). On failure returns
-// false with "path:line: what went wrong" in `error`. Warnings go to the host's log.
-bool read_scene(const char *path, const ani_host *host, ani::OwnedDocument &doc, std::string &error);
+// Runs the scene `text` (read from `path`, which names it in messages) in a sandbox and fills
+// `out`. On failure returns false with "path:line: what went wrong" in `error`. Touches no file
+// and calls nothing of the host's: it is what runs in the isolated child (scene_isolation).
+bool run_scene(const std::string &path, const std::string &text, SceneResult &out, std::string &error);
 
 } // namespace lua_scene

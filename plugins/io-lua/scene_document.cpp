@@ -1,0 +1,84 @@
+#include "scene_document.hpp"
+
+#include <animator/assets.h>
+
+#include <algorithm>
+
+namespace lua_scene {
+
+namespace {
+
+// The first model, by line, whose mesh the host cannot find; the scene ran where no file is seen,
+// so its meshes are looked for here.
+bool resolve_meshes(const SceneResult &scene, const std::string &path, const ani_host *host, std::string &error) {
+    const auto *assets = host && host->get_extension
+                             ? static_cast<const ani_assets_ext *>(host->get_extension(host, ANI_EXT_ASSETS))
+                             : nullptr;
+    if (!assets) return true;
+    std::vector<const SceneModel *> by_line;
+    for (const SceneModel &m : scene.models)
+        if (!m.mesh.empty()) by_line.push_back(&m);
+    std::stable_sort(by_line.begin(), by_line.end(),
+                     [](const SceneModel *a, const SceneModel *b) { return a->line < b->line; });
+    for (const SceneModel *m : by_line) {
+        char where[2048];
+        if (!assets->resolve(host, ANI_ASSET_MESH, m->mesh.c_str(), path.c_str(), where, sizeof where)) {
+            error = path + ":" + std::to_string(m->line) + ": unknown mesh '" + m->mesh + "' (" + where + ")";
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+bool build_document(const SceneResult &scene, const std::string &path, const ani_host *host,
+                    ani::OwnedDocument &doc, std::string &error) {
+    if (!resolve_meshes(scene, path, host, error)) return false;
+    if (host && host->log)
+        for (const std::string &warning : scene.warnings) host->log(host, ANI_LOG_WARNING, "format.lua", warning.c_str());
+
+    std::vector<ani_model_state> states;
+    for (const SceneModel &n : scene.models) {
+        ani_model_desc m = doc.default_model(n.name, n.mesh);
+        m.parent = n.parent;
+        m.kd = n.kd;
+        m.ks = n.ks;
+        m.shininess = n.shininess;
+        m.texture = doc.keep(n.texture);
+        m.tint = n.tint;
+        m.reflectivity = n.reflectivity;
+        m.transparency = n.transparency;
+        m.refractive_index = n.refractive_index;
+        m.dynamics = n.dynamics;
+        m.gravity = n.gravity;
+        m.mass = n.mass;
+        m.initial_velocity = n.initial_velocity;
+        m.collision_sound = doc.keep(n.collision_sound);
+        m.moving_sound = doc.keep(n.moving_sound);
+        doc.models.push_back(m);
+        states.push_back(n.state);
+    }
+
+    doc.default_settings();
+    ani_settings_view &s = doc.view.settings;
+    s.max_time_ms = scene.max_time_ms;
+    s.gravity = scene.gravity;
+    s.down_axis = scene.down_axis;
+    s.cel_shading = scene.cel_shading ? 1 : 0;
+    s.skybox = doc.keep(scene.skybox);
+    s.physics_backend = doc.keep(scene.backend);
+    s.interpolation = doc.keep(scene.interpolation);
+    ani_keyframe_view k{};
+    k.struct_size = sizeof k;
+    k.time_ms = 0;
+    k.camera = scene.camera;
+    k.camera_keyed = 1;
+    doc.keyed.emplace_back(states.size(), 1);
+    doc.keyframes.push_back(k);
+    doc.states.push_back(std::move(states));
+    doc.finish();
+    return true;
+}
+
+} // namespace lua_scene
