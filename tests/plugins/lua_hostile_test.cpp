@@ -221,3 +221,27 @@ TEST_CASE("a call into Lua's C library that never returns is stopped with a clea
         CHECK_THAT(error, Catch::Contains("it used up its 5 s of processor time"));
     }
 }
+
+TEST_CASE("runaway scenes of every kind end in a clear error") {
+    struct Runaway {
+        const char *name;
+        const char *lua;
+        const char *expected;
+    };
+    const Runaway runaways[] = {
+        {"concat",
+         "local t = {}\nfor i = 1, 3e6 do t[i] = 'abcdefghijklmnopqrstuvwxyz0123456789' end\n"
+         "local s = table.concat(t)\nlocal u = table.concat({s, s, s, s})\n",
+         "concat.lua: the scene used more than its memory budget of 256 MiB"},
+        {"sort", "local t = {}\nfor i = 1, 100 do t[i] = i end\ntable.sort(t, function(a, b) while true do end end)\n",
+         "sort.lua:3: the scene ran past its budget of 200000000 instructions"},
+        {"load", "local f = load(string.rep('x = 1 ', 4e7))\n",
+         "load.lua: the scene used more than its memory budget of 256 MiB"},
+        {"gsub_loop", "local s = string.rep('a', 1e6)\nfor i = 1, 1e9 do s:gsub('a', 'b') end\n",
+         "gsub_loop.lua: the scene was stopped: it used up its 5 s of processor time"},
+    };
+    for (const Runaway &r : runaways) {
+        CAPTURE(r.name);
+        CHECK_THAT(load_error(r.name, std::string(r.lua) + "return gr.node('r')\n"), Catch::Contains(r.expected));
+    }
+}
