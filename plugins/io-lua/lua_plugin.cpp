@@ -1,5 +1,6 @@
 // The Lua scene plugin (id format.lua): reads CS488-style .lua scene files (docs/scene-lua.md)
-// in a sandbox. Scenes are a starting point; work is saved as .ani, so this format only reads.
+// in a Lua sandbox inside a child process with limits (isolated_child.hpp), then makes the
+// document here. Scenes are a starting point; work is saved as .ani, so this format only reads.
 #include "isolated_child.hpp"
 #include "lua_scene.hpp"
 #include "scene_document.hpp"

@@ -245,3 +245,10 @@ TEST_CASE("runaway scenes of every kind end in a clear error") {
         CHECK_THAT(load_error(r.name, std::string(r.lua) + "return gr.node('r')\n"), Catch::Contains(r.expected));
     }
 }
+
+TEST_CASE("a scene file larger than 64 MiB is refused before it is read") {
+    const fs::path path = test::fresh_dir("lua_hostile_huge") / "huge.lua";
+    test::write_file(path, "return gr.node('r')\n");
+    fs::resize_file(path, (64u << 20) + 1); // sparse: nothing is written
+    CHECK_THAT(load_error_at(path), Catch::Equals(path.string() + ": is larger than a scene file may be (64 MiB)"));
+}
