@@ -42,6 +42,8 @@ namespace lua_scene {
 namespace {
 
 constexpr int kReplyFd = 3;
+// The child's own exit codes for what went wrong before the work ran.
+constexpr int kNoFilter = 125, kCallerGone = 123, kNoReplyFd = 124, kReplyLost = 122;
 
 // The process's address space now, in bytes (0 if unknown), read before forking.
 std::size_t address_space_in_use() {
@@ -73,7 +75,7 @@ void install_syscall_filter() {
     }
     program.push_back(BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | (EPERM & SECCOMP_RET_DATA)));
     sock_fprog filter{static_cast<unsigned short>(program.size()), program.data()};
-    if (prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &filter) != 0) _exit(125);
+    if (prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &filter) != 0) _exit(kNoFilter); // fail closed
 #endif
 }
 
@@ -86,7 +88,7 @@ void set_limit(int resource, rlim_t value) {
 [[noreturn]] void run_child(const std::function<std::string()> &work, const ChildLimits &limits, int reply_fd,
                             pid_t parent, std::size_t address_space) {
     if (reply_fd != kReplyFd) {
-        if (dup2(reply_fd, kReplyFd) < 0) _exit(124);
+        if (dup2(reply_fd, kReplyFd) < 0) _exit(kNoReplyFd);
         close(reply_fd);
     }
     close(STDIN_FILENO);
@@ -96,7 +98,7 @@ void set_limit(int resource, rlim_t value) {
     std::signal(SIGXCPU, SIG_DFL);
     std::signal(SIGPIPE, SIG_DFL);
     prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (getppid() != parent) _exit(123); // the caller is gone already
+    if (getppid() != parent) _exit(kCallerGone); // the caller is gone already
 
     const rlimit cpu{static_cast<rlim_t>(limits.cpu_seconds), static_cast<rlim_t>(limits.cpu_seconds) + 1};
     setrlimit(RLIMIT_CPU, &cpu); // the soft limit sends SIGXCPU, the hard one SIGKILL
@@ -116,7 +118,7 @@ void set_limit(int resource, rlim_t value) {
     for (std::size_t sent = 0; sent < reply.size();) {
         const ssize_t n = write(kReplyFd, reply.data() + sent, reply.size() - sent);
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) _exit(122);
+        if (n <= 0) _exit(kReplyLost);
         sent += static_cast<std::size_t>(n);
     }
     _exit(0); // no destructors and no atexit handlers of the caller's run here
@@ -213,6 +215,9 @@ ChildOutcome run_in_isolated_child(const std::function<std::string()> &work, con
     } else if (WIFSIGNALED(status)) {
         out.end = ChildEnd::crashed;
         out.detail = "died of signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
+    } else if (WIFEXITED(status) && WEXITSTATUS(status) == kNoFilter) {
+        out.end = ChildEnd::crashed;
+        out.detail = "could not install its system-call filter (this kernel refuses seccomp filters)";
     } else if (WIFEXITED(status) && WEXITSTATUS(status) != 0) {
         out.end = ChildEnd::crashed;
         out.detail = "exited with code " + std::to_string(WEXITSTATUS(status));
