@@ -1,8 +1,10 @@
-// Images (textures and skybox faces) loaded through stb_image: PNG, BMP and the rest stb reads.
+// Images (textures and skybox faces) loaded through stb_image: PNG and BMP, the formats a
+// texture or a skybox face is found by (asset_paths.cpp).
 #pragma once
 
 #include "assets/mesh.hpp" // AssetError
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <vector>
@@ -14,7 +16,14 @@ struct Image {
     std::vector<std::uint8_t> rgb; // width * height * 3, rows top to bottom
 };
 
-// Throws AssetError naming the file and stb's reason.
+// The largest image loaded: 16384 pixels on a side (what most GPUs take as a texture) and
+// 4096 x 4096 pixels in all, so that decoding one never needs more than a few hundred MiB
+// even at 16 bits per channel with alpha.
+constexpr int kMaxImageSide = 16384;
+constexpr std::size_t kMaxImagePixels = std::size_t{4096} * 4096;
+
+// Throws AssetError naming the file and what is wrong: not a PNG or BMP, corrupt (stb's
+// reason), or larger than the limits above (refused from its header, before decoding).
 Image load_image(const std::filesystem::path &path);
 
 } // namespace animator
