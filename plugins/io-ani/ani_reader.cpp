@@ -29,10 +29,16 @@ class Reader {
 
   private:
     [[noreturn]] void fail(const std::string &what) const { fail_at(line_, what); }
-    [[noreturn]] void fail_at(int line, const std::string &what) const {
+    [[noreturn]] void fail_at(std::int64_t line, const std::string &what) const {
         throw ParseError(std::string(path_) + ":" + std::to_string(line) + ": " + what);
     }
     bool next_line();
+    bool read_line(std::string &text);
+    // Before a block or line that adds a model, a keyframe or a parameter value.
+    void check_size(size_t models, size_t keyframes, size_t params) const {
+        const std::string why = size_beyond_limits(models, keyframes, params);
+        if (!why.empty()) fail("the document grows past its limits here: " + why);
+    }
     std::string got(size_t i) const {
         return i < tokens_.size() ? "'" + tokens_[i].text + "'" : "the end of the line";
     }
@@ -68,14 +74,31 @@ class Reader {
     std::istream &in_;
     const ani_assets_ext *assets_; // null when the host has no asset folders
     const ani_host *host_;
-    int line_ = 0;
+    std::int64_t line_ = 0; // an int would wrap after 2^31 blank lines
     std::vector<Token> tokens_;
     std::map<std::string, int> model_index_;
 };
 
+// std::getline without its unbounded string: a line longer than kMaxLineBytes is refused at
+// its number once that many bytes are read, so a file of one 1 GB line costs 1 MiB.
+bool Reader::read_line(std::string &text) {
+    text.clear();
+    std::streambuf &buf = *in_.rdbuf();
+    bool any = false;
+    for (int c = buf.sbumpc(); c != std::char_traits<char>::eof(); c = buf.sbumpc()) {
+        any = true;
+        if (c == '\n') return true;
+        if (text.size() == kMaxLineBytes)
+            fail_at(line_ + 1, "the line is longer than " + std::to_string(kMaxLineBytes) +
+                                   " bytes; an .ani line holds one key and its values");
+        text.push_back(static_cast<char>(c));
+    }
+    return any;
+}
+
 bool Reader::next_line() {
     std::string text;
-    while (std::getline(in_, text)) {
+    while (read_line(text)) {
         ++line_;
         std::string error;
         if (!tokenize(text, tokens_, error)) fail(error);
@@ -224,6 +247,7 @@ void Reader::read_settings(ani::OwnedDocument &doc) {
             if (id.empty()) fail("expected a plugin id for interpolation, got \"\"");
             s.interpolation = doc.keep(id);
         } else if (key == "param") {
+            check_size(doc.models.size(), doc.keyframes.size(), doc.params.size() + 1);
             if (tokens_.size() < 4 || tokens_.size() > 7)
                 fail("expected 'param \"plugin.id\" \"param_id\"' and 1 to 4 numbers");
             ani_param_setting p{};
@@ -247,7 +271,8 @@ void Reader::read_model(ani::OwnedDocument &doc) {
     const std::string name = string(1, "the model name");
     if (name.empty()) fail("a model needs a non-empty name");
     if (model_index_.count(name)) fail("a model named \"" + name + "\" already exists");
-    const int header_line = line_;
+    check_size(doc.models.size() + 1, doc.keyframes.size(), doc.params.size());
+    const std::int64_t header_line = line_;
 
     ani_model_desc m = doc.default_model(name, "");
     bool have_mesh = false;
@@ -341,7 +366,8 @@ void Reader::read_keyframe(ani::OwnedDocument &doc) {
     if (t > doc.view.settings.max_time_ms)
         fail("keyframe " + std::to_string(t) + " ms is past the max time " +
              std::to_string(doc.view.settings.max_time_ms) + " ms");
-    const int header_line = line_;
+    check_size(doc.models.size(), doc.keyframes.size() + 1, doc.params.size());
+    const std::int64_t header_line = line_;
 
     ani_keyframe_view k{};
     k.struct_size = sizeof k;

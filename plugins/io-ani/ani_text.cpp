@@ -8,6 +8,12 @@ namespace ani_format {
 
 bool tokenize(const std::string &line, std::vector<Token> &tokens, std::string &error) {
     tokens.clear();
+    if (line.find('\0') != std::string::npos) {
+        // C strings stop at a NUL: a name or a number would mean one thing here and another
+        // to everything the document's C strings reach.
+        error = "a NUL byte; an .ani file is text";
+        return false;
+    }
     size_t i = 0;
     while (i < line.size()) {
         const char c = line[i];
@@ -52,6 +58,19 @@ bool tokenize(const std::string &line, std::vector<Token> &tokens, std::string &
         }
     }
     return true;
+}
+
+std::string size_beyond_limits(std::size_t models, std::size_t keyframes, std::size_t params) {
+    if (params > kMaxParams)
+        return std::to_string(params) + " parameter values; a file holds at most " +
+               std::to_string(kMaxParams);
+    // A keyframe without models still costs its own record, hence max(models, 1).
+    const std::size_t per_keyframe = models > 0 ? models : 1;
+    if (models > kMaxModelStates || keyframes > kMaxModelStates / per_keyframe)
+        return std::to_string(models) + " models and " + std::to_string(keyframes) +
+               " keyframes; a file holds at most " + std::to_string(kMaxModelStates) +
+               " model states (keyframes x models)";
+    return "";
 }
 
 std::string quote(const std::string &s) {

@@ -3,6 +3,7 @@
 
 #include <animator/document_builder.hpp>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,17 @@ namespace ani_format {
 
 constexpr int kVersion = 1;
 constexpr const char *kMagic = "animator-ani";
+
+// What a file may hold, so that no file, however hostile, costs the reader more than about a
+// hundred MiB (docs/ani-format.md, "Limits"). A line is read into memory whole. The document
+// holds a state for every model at every keyframe, so a file of a few megabytes naming
+// thousands of models and thousands of keyframes would otherwise need gigabytes.
+constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;   // 1 MiB
+constexpr std::size_t kMaxModelStates = std::size_t{1} << 20; // keyframes x max(models, 1)
+constexpr std::size_t kMaxParams = std::size_t{1} << 16;      // param lines in settings
+
+// Empty when a document of this size is within the limits above, else what is too large.
+std::string size_beyond_limits(std::size_t models, std::size_t keyframes, std::size_t params);
 
 // A line split into tokens: bare words, and "quoted strings" with \" \\ \n escapes.
 struct Token {

@@ -84,10 +84,33 @@ std::string to_text(const ani_document_view &doc) {
     return out.str();
 }
 
+// The line of `text` longer than the reader takes, or 0: a name or a string of more than 1 MiB.
+size_t first_long_line(const std::string &text) {
+    size_t line = 1;
+    for (size_t start = 0; start < text.size(); ++line) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        if (end - start > kMaxLineBytes) return line;
+        start = end + 1;
+    }
+    return 0;
+}
+
 } // namespace
 
 bool write_ani(const char *path, const ani_document_view &doc, std::string &error) {
+    // Nothing is written that the reader would refuse (ani_text.hpp).
+    const std::string why = size_beyond_limits(doc.model_count, doc.keyframe_count, doc.param_count);
+    if (!why.empty()) {
+        error = "the document is too large for an .ani file: " + why;
+        return false;
+    }
     const std::string text = to_text(doc);
+    if (const size_t line = first_long_line(text)) {
+        error = "line " + std::to_string(line) + " would be longer than the " +
+                std::to_string(kMaxLineBytes) + " bytes a reader takes (a name or string that long?)";
+        return false;
+    }
     std::string tmp = std::string(path) + ".tmp-XXXXXX";
     const int fd = mkstemp(tmp.data());
     if (fd < 0) {

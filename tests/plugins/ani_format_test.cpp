@@ -172,3 +172,49 @@ TEST_CASE("a save that cannot replace the target says why and leaves no temporar
     CHECK_THROWS_WITH(save_document(registry(), Document{}, dir / "no" / "such" / "folder.ani"),
                       Catch::Contains("cannot create a temporary file"));
 }
+
+TEST_CASE("a line longer than 1 MiB is refused at its number, however harmless its words") {
+    // A comment of 2 MiB in an otherwise valid file: the reader stops once it has read 1 MiB of
+    // it instead of holding a hostile file's single line (of any length) in memory.
+    const fs::path path = test::fresh_dir("ani_long_line") / "long.ani";
+    test::write_file(path, std::string(kValidHeader) + "# a note\n#" + std::string(2u << 20, 'x') +
+                               "\nkeyframe 0\n  camera position 0 0 0 rotation 1 0 0 0 fov 50\nend\n");
+    CHECK_THROWS_WITH(open_document(registry(), path),
+                      Catch::StartsWith(path.string() + ":3: the line is longer than 1048576 bytes"));
+}
+
+TEST_CASE("models x keyframes past 2^20 model states is refused at the keyframe that crosses it") {
+    // Every keyframe holds a state for every model, so a file of a few MB naming 1024 models and
+    // thousands of keyframes would need gigabytes: 1024 x 1024 states is the most a file holds.
+    const int models = 1024;
+    std::string text = kValidHeader;
+    for (int m = 0; m < models; ++m) text += "model \"m" + std::to_string(m) + "\"\n  mesh \"\"\nend\n";
+    text += "keyframe 0\n  camera position 0 0 0 rotation 1 0 0 0 fov 50\n";
+    for (int m = 0; m < models; ++m)
+        text += "  state \"m" + std::to_string(m) + "\" center 0 0 0 angles 0 0 0 scale 1 1 1 turn 0 0 0\n";
+    text += "end\n";
+    for (int k = 1; k < 1024; ++k) text += "keyframe " + std::to_string(k) + "\nend\n";
+    // Lines so far: 1 header, 3 per model, keyframe 0's 3 + models, 2 per later keyframe.
+    const int crossing_line = 1 + 3 * models + (3 + models) + 2 * 1023 + 1;
+    text += "keyframe 1024\nend\n";
+    const fs::path path = test::fresh_dir("ani_too_many_states") / "many.ani";
+    test::write_file(path, text);
+    CHECK_THROWS_WITH(open_document(registry(), path),
+                      Catch::StartsWith(path.string() + ":" + std::to_string(crossing_line) +
+                                        ": the document grows past its limits here: 1024 models "
+                                        "and 1025 keyframes"));
+}
+
+TEST_CASE("a document with a line the reader would refuse is not saved") {
+    const fs::path dir = test::fresh_dir("ani_save_long_name");
+    std::mt19937 rng(11);
+    Document doc = test::random_document(rng, 1, 1);
+    Model named = doc.models()[0];
+    named.name = std::string((1u << 20) + 1, 'n');
+    doc.set_model(0, named);
+    CHECK_THROWS_WITH(save_document(registry(), doc, dir / "long.ani"),
+                      Catch::Contains("long.ani") &&
+                          Catch::Contains("would be longer than the 1048576 bytes a reader takes"));
+    CHECK_FALSE(fs::exists(dir / "long.ani"));
+    CHECK(temp_files_in(dir).empty());
+}
