@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iomanip>
 #include <limits>
 #include <map>
 #include <memory>
@@ -153,9 +154,10 @@ struct Touch {
 class Bake {
   public:
     Bake(const ani_physics_scene &scene, double t_begin, double t_end, const ani_bake_sink &sink,
-         const ani_host *host, const BakeOptions &options)
+         const ani_host *host, const BakeOptions &options, ReportedOverlaps &reported)
         : scene_(scene), t_begin_(t_begin), t_end_(t_end), sink_(sink), host_(host),
-          options_(options), dt_(options.step), filter_(&groups_) {
+          options_(options), dt_(options.step), filter_(&groups_), reported_(reported) {
+        reported_.begin(t_begin);
         const int axis = scene.down_axis >= 0 && scene.down_axis <= 2 ? scene.down_axis : 1;
         gravity_[axis] = -scene.gravity;
     }
@@ -181,7 +183,10 @@ class Bake {
         report_counts();
     }
 
-    // Called by the near callback after Bullet computed a pair's contacts.
+    // Called by the near callback after Bullet computed a pair's contacts. A pair let go while
+    // it moved apart from an overlap stays let go while it still moves apart; once it no longer
+    // does (it turns back, or rests), Bullet takes it (its contact holds it and pushes it out),
+    // so that it never sinks deeper than it was.
     void after_near(btBroadphasePair &pair) {
         if (ignored_.empty() || !pair.m_algorithm) return;
         const auto *a = static_cast<const btCollisionObject *>(pair.m_pProxy0->m_clientObject);
@@ -191,14 +196,49 @@ class Bake {
         if (!ignored_.count(key)) return;
         manifolds_.resizeNoInitialize(0);
         pair.m_algorithm->getAllContactManifolds(manifolds_);
-        double deepest = kNever;
-        for (int k = 0; k < manifolds_.size(); ++k) {
-            for (int p = 0; p < manifolds_[k]->getNumContacts(); ++p)
-                deepest = std::min(
-                    deepest, static_cast<double>(manifolds_[k]->getContactPoint(p).getDistance()));
-            manifolds_[k]->clearManifold();
+        const btManifoldPoint *deepest = nullptr;
+        const btPersistentManifold *in = nullptr;
+        for (int k = 0; k < manifolds_.size(); ++k)
+            for (int p = 0; p < manifolds_[k]->getNumContacts(); ++p) {
+                const btManifoldPoint &point = manifolds_[k]->getContactPoint(p);
+                if (!deepest || point.getDistance() < deepest->getDistance()) {
+                    deepest = &point;
+                    in = manifolds_[k];
+                }
+            }
+        if (deepest && !keyed(a) && !keyed(b) &&
+            !moving_apart(in->getBody0(), in->getBody1(), vec(deepest->m_normalWorldOnB),
+                          0.5 * (vec(deepest->getPositionWorldOnA()) +
+                                 vec(deepest->getPositionWorldOnB())))) {
+            ignored_.erase(key); // Bullet's from now on: its manifold stays
+            return;
         }
-        if (deepest < -overlap_tolerance(a, b)) still_overlapping_.insert(key);
+        for (int k = 0; k < manifolds_.size(); ++k) manifolds_[k]->clearManifold();
+        if (deepest && deepest->getDistance() < -overlap_tolerance(a, b))
+            still_overlapping_.insert(key);
+    }
+
+    bool keyed(const btCollisionObject *o) const {
+        const int ref = o->getUserIndex2();
+        return ref >= 0 && bodies_[static_cast<size_t>(ref)].mode == Mode::kKeyed;
+    }
+
+    // Whether o0 moves away from o1 along n (Bullet's normal on o1, towards o0) at `point`.
+    bool moving_apart(const btCollisionObject *o0, const btCollisionObject *o1, const glm::dvec3 &n,
+                      const glm::dvec3 &point) const {
+        const glm::dvec3 relative = velocity_of(o0, point) - velocity_of(o1, point);
+        return glm::dot(relative, n) > 1e-9 * std::max(1.0, glm::length(relative));
+    }
+
+    // The velocity of an object's material point now: its keys' (kinematic) or Bullet's.
+    glm::dvec3 velocity_of(const btCollisionObject *o, const glm::dvec3 &point) const {
+        const int ref = o->getUserIndex2();
+        if (ref < 0) return glm::dvec3(0.0);
+        const Body &b = bodies_[static_cast<size_t>(ref)];
+        const glm::dvec3 x = vec(b.rb->getWorldTransform().getOrigin());
+        if (b.kinematic) return b.kin_v + glm::cross(b.kin_w, point - x);
+        return vec(b.rb->getLinearVelocity()) +
+               glm::cross(vec(b.rb->getAngularVelocity()), point - x);
     }
 
     // The static triangle mesh with inner edges in a pair whose other member is convex, if any.
@@ -1251,20 +1291,40 @@ class Bake {
     }
 
     // Pairs overlapping now (at the start, or when a body becomes free or is keyed again) are
-    // reported once and ignored until they are apart (physics.md); pairs touching now are in
-    // contact already (no event).
+    // treated as touching (physics.md), and said once per bake: moving apart, they are let go
+    // until apart (or until they turn back, after_near); approaching, they are a new contact
+    // (an event, and Bullet's response); neither, they are in contact already (no event), and
+    // Bullet's contact holds them and pushes them out. Pairs touching now are in contact
+    // already.
     void find_overlaps(const std::set<uint32_t> *only) {
         world_->performDiscreteCollisionDetection();
         const double t = only ? last_switch_ : t_begin_;
         for (const auto &[key, touch] : touches()) {
             if (only && !only->count(key.first) && !only->count(key.second)) continue;
             if (touch.distance < -overlap_tolerance(touch.o0, touch.o1)) {
-                ignored_.insert(key);
-                contacts_.erase(key);
-                log(ANI_LOG_WARNING, std::string("models '") + name_of(scene_.models[key.first]) +
-                                         "' and '" + name_of(scene_.models[key.second]) +
-                                         "' overlap at t = " + std::to_string(t) +
-                                         " s; their contact is ignored until they separate");
+                if (reported_.first(key.first, key.second, t))
+                    log(ANI_LOG_WARNING,
+                        std::string("models '") + name_of(scene_.models[key.first]) + "' and '" +
+                            name_of(scene_.models[key.second]) + "' overlap at t = " +
+                            short_number(t) + " s by " + short_number(-touch.distance) +
+                            " m: treated as touching (neither moves deeper into the other; "
+                            "approaching, they collide at once; moving apart, they are let go)");
+                const glm::dvec3 relative =
+                    velocity_of(touch.o0, touch.point) - velocity_of(touch.o1, touch.point);
+                const double along = glm::dot(relative, touch.normal);
+                const double still = 1e-9 * std::max(1.0, glm::length(relative));
+                // A model its keys drive is where its keys say: left alone until apart.
+                const Body *b0 = body_of(touch.o0), *b1 = body_of(touch.o1);
+                const bool keyed =
+                    (b0 && b0->mode == Mode::kKeyed) || (b1 && b1->mode == Mode::kKeyed);
+                if (along > still || keyed) {
+                    ignored_.insert(key);
+                    contacts_.erase(key);
+                } else if (along < -still) {
+                    contacts_.erase(key);
+                } else {
+                    contacts_.insert(key);
+                }
             } else if (touch.distance <= separation(touch.o0, touch.o1)) {
                 contacts_.insert(key);
             }
@@ -1324,6 +1384,12 @@ class Bake {
         for (const auto &[name, value] : counts_) sink_.count(sink_.context, name.c_str(), value);
     }
 
+    static std::string short_number(double x) {
+        std::ostringstream out;
+        out << std::setprecision(4) << (std::abs(x) < 1e-12 ? 0.0 : x);
+        return out.str();
+    }
+
     void log(ani_log_level level, const std::string &message) const {
         if (host_ && host_->log) host_->log(host_, level, kPluginId, message.c_str());
     }
@@ -1346,7 +1412,9 @@ class Bake {
     std::vector<Obstacle> obstacles_;
     std::map<const ani_mesh_view *, MeshInfo> mesh_info_;
     std::set<uint32_t> described_;
+    // Pairs that overlapped and move apart, let go until apart; pairs apart by the end of a step.
     std::set<PairKey> ignored_, still_overlapping_, contacts_;
+    ReportedOverlaps &reported_;
     std::set<uint32_t> switched_;
     double last_switch_ = 0.0;
     btManifoldArray manifolds_;
@@ -1359,8 +1427,10 @@ class Bake {
 } // namespace
 
 void bake_scene(const ani_physics_scene &scene, double t_begin, double t_end,
-                const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options) {
-    Bake(scene, t_begin, t_end, sink, host, options).run();
+                const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options,
+                ReportedOverlaps *reported) {
+    ReportedOverlaps one_bake;
+    Bake(scene, t_begin, t_end, sink, host, options, reported ? *reported : one_bake).run();
 }
 
 } // namespace physics_bullet

@@ -91,6 +91,7 @@ const ani_param_descriptor kParams[] = {
 struct Instance {
     const ani_host *host = nullptr;
     ani::ParamStore params{kParams, sizeof(kParams) / sizeof(kParams[0])};
+    physics_bullet::ReportedOverlaps overlaps; // said once per bake, however it is sliced
 };
 
 void *create(const ani_host *host, ani_status *status) {
@@ -132,7 +133,7 @@ ani_status_code bake(void *instance, const ani_physics_scene *scene, double t_be
             throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "gravity is not finite");
         if (sink->progress && !sink->progress(sink->context, 0.0))
             throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
-        const Instance &self = *static_cast<Instance *>(instance);
+        Instance &self = *static_cast<Instance *>(instance);
         physics_bullet::BakeOptions options;
         options.step = self.params.number("step");
         options.solver_iterations = static_cast<int>(self.params.number("solver_iterations"));
@@ -146,7 +147,8 @@ ani_status_code bake(void *instance, const ani_physics_scene *scene, double t_be
             // take turns.
             static std::mutex bullet;
             std::lock_guard<std::mutex> lock(bullet);
-            physics_bullet::bake_scene(*scene, t_begin, t_end, *sink, self.host, options);
+            physics_bullet::bake_scene(*scene, t_begin, t_end, *sink, self.host, options,
+                                       &self.overlaps);
         }
         if (sink->progress && !sink->progress(sink->context, 1.0))
             throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");

@@ -6,6 +6,7 @@
 #include "keyed_contact.hpp"
 #include "mesh_contact.hpp"
 #include "mesh_distance.hpp"
+#include "overlap_memory.hpp"
 #include "polynomial.hpp"
 #include "response.hpp"
 #include "time_of_impact.hpp"
@@ -20,10 +21,13 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <iomanip>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -68,8 +72,9 @@ struct Body {
         0; // counts the changes of path: events predicted against an older one are stale
     bool in_grid = false; // free spheres only
     Cell cell{};
-    int ignored_obstacles = 0; // obstacles it overlapped and does not collide with until apart
-    glm::dvec3 free_a{0.0};    // its acceleration when nothing holds it up (gravity, or none)
+    int ignored_obstacles = 0;    // obstacles it overlapped and does not collide with until apart
+    int overlapped_obstacles = 0; // obstacles it overlapped and touches at that depth until apart
+    glm::dvec3 free_a{0.0};       // its acceleration when nothing holds it up (gravity, or none)
     // Resting or sliding on a flat part of a static model: that model, the plane of the face
     // (n . x = d), and the boundary of the flat region it is on (edge start, end, and outward
     // normal in the plane), where it leaves the support.
@@ -178,9 +183,13 @@ double frobenius(const glm::dmat3 &m) {
 class EventBake {
   public:
     EventBake(const ani_physics_scene &scene, double t_begin, double t_end,
-              const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options)
+              const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options,
+              OverlapMemory &memory)
         : scene_(scene), t_begin_(t_begin), t_end_(t_end), sink_(sink), host_(host),
-          options_(options), gravity_(vec(gravity_vector(scene.gravity, scene.down_axis))) {}
+          options_(options), gravity_(vec(gravity_vector(scene.gravity, scene.down_axis))),
+          memory_(memory) {
+        memory_.begin(t_begin);
+    }
 
     void run() {
         classify();
@@ -840,41 +849,247 @@ class EventBake {
         }
     }
 
-    // Reports the pairs with body i that overlap at t (at the start, or when i becomes free
-    // inside another, or its keys take it back inside one) and ignores them until they
-    // separate (physics.md).
+    // ---- pairs that overlap when they start to collide (physics.md) -------------------------
+
+    // An overlap found: the contact there (the normal from the other towards the body) and how
+    // deep they are into each other along it.
+    struct Seen {
+        Contact contact;
+        double depth = 0.0;
+    };
+
+    // Finds the pairs with body i that overlap at t (at the start, when i becomes free inside
+    // another, or when its keys take it back inside one) and treats each as touching.
     void find_overlaps(int i, double t) {
-        Body &b = bodies_[static_cast<size_t>(i)];
-        for (size_t o = 0; o < obstacles_.size(); ++o)
-            if (overlaps_obstacle(b, obstacles_[o], t)) ignore(i, -1 - static_cast<int>(o), t);
+        for (size_t o = 0; o < obstacles_.size(); ++o) {
+            const int other = -1 - static_cast<int>(o);
+            if (is_overlapped(i, other) || is_ignored(i, other)) continue;
+            if (auto seen =
+                    overlap_with_obstacle(bodies_[static_cast<size_t>(i)], obstacles_[o], t))
+                meet_overlap(i, other, *seen, t);
+        }
+        // Collected first: a collision refiles the bodies it moves.
+        std::vector<std::pair<int, Seen>> found;
         for_candidates(i, [&](int j) {
-            if (overlaps_body(b, bodies_[static_cast<size_t>(j)], t)) ignore(i, j, t);
+            if (is_overlapped(i, j) || is_ignored(i, j)) return;
+            const Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
+            if (!overlaps_body(b, o, t)) return;
+            Seen seen;
+            seen.depth = -gap_between(b, o, t, &seen.contact);
+            found.emplace_back(j, seen);
         });
+        for (const auto &[j, seen] : found)
+            if (!is_overlapped(i, j) && !is_ignored(i, j)) meet_overlap(i, j, seen, t);
+    }
+
+    // Whether body b overlaps obstacle o at t. A sphere: closer to it than its radius, the normal
+    // from its nearest point towards the sphere's center. Any other mesh: against the plane
+    // through the obstacle's point nearest to the body's center, facing that center (a floor's
+    // plane, for a box sunk into it), some vertex is behind the plane.
+    std::optional<Seen> overlap_with_obstacle(const Body &b, const Obstacle &o, double t) const {
+        Seen seen;
+        if (b.sphere) {
+            if (!overlaps_obstacle(b, o, t)) return std::nullopt;
+            seen.depth = -gap_to_obstacle(b, o, t, &seen.contact);
+            return seen;
+        }
+        const Pose p = pose(b, t);
+        const double reach = b.reach * frobenius(p.linear);
+        if (glm::length(p.center - o.center) > reach + o.radius) return std::nullopt;
+        const glm::dvec3 nearest = nearest_on_obstacle(o, p.center);
+        if (!(glm::length(p.center - nearest) > 0.0)) return std::nullopt;
+        const glm::dvec3 n = glm::normalize(p.center - nearest);
+        double depth = -kNever;
+        const ani_mesh_view &mesh = mesh_of(b);
+        for (uint32_t k = 0; k < mesh.vertex_count; ++k)
+            depth = std::max(depth, glm::dot(n, nearest - (p.center + p.linear * vertex(mesh, k))));
+        if (!(depth > 1e-6 * reach)) return std::nullopt; // touching (single-precision meshes)
+        seen.contact.normal = n;
+        seen.contact.point = nearest;
+        seen.contact.t = t;
+        seen.depth = depth;
+        return seen;
+    }
+
+    // An overlapping pair is touching (physics.md): neither moves deeper into the other. Spheres
+    // touch at the distance they have now, a mesh touches a static model moved back by its
+    // depth along the normal, until they are apart; other pairs (keyed models) are left alone
+    // until apart. Along the normal, approaching, they collide at once; pulled into each other
+    // with no speed, a model with Dynamics rests on a static model and one without stops; moving
+    // apart, they are let go. Said once per bake, naming both.
+    void meet_overlap(int i, int other, const Seen &seen, double t) {
+        Body &b = bodies_[static_cast<size_t>(i)];
+        const uint32_t model_b = model_of(other);
+        if (const OverlapRecord *earlier = memory_.active(b.model, model_b, t)) {
+            // Found by an earlier slice of this bake: treated as it was then.
+            treat_as_touching(i, other, *earlier);
+            return;
+        }
+        const Body *o = other >= 0 ? &bodies_[static_cast<size_t>(other)] : nullptr;
+        const glm::dvec3 n = seen.contact.normal;
+        OverlapRecord record;
+        record.model_a = b.model;
+        record.model_b = model_b;
+        record.since = t;
+        // A model its keys drive (at the start, or put back inside another at its next key) is
+        // where its keys say: the pair is left alone until apart.
+        const bool keyed = b.keyed() || (o && o->keyed());
+        if (keyed) {
+            report_overlap(i, other, t, seen.depth);
+            memory_.add(record);
+            treat_as_touching(i, other, record);
+            return;
+        }
+        if (!o && b.free_sphere()) {
+            record.kind = OverlapRecord::Kind::kContactDistance;
+            record.contact = b.radius - seen.depth;
+        } else if (o && b.free_sphere() && o->free_sphere()) {
+            record.kind = OverlapRecord::Kind::kContactDistance;
+            record.contact = b.radius + o->radius - seen.depth;
+        } else if (!o && b.shape) {
+            record.kind = OverlapRecord::Kind::kShift;
+            record.shift = seen.depth * n;
+            record.contact = glm::dot(n, seen.contact.point); // the obstacle's plane there
+        }
+        if (record.kind == OverlapRecord::Kind::kContactDistance && !(record.contact > 0.0))
+            record.kind = OverlapRecord::Kind::kIgnored; // concentric: no direction to touch in
+        report_overlap(i, other, t, seen.depth);
+        memory_.add(record);
+        treat_as_touching(i, other, record);
+
+        const glm::dvec3 point = seen.contact.point;
+        const glm::dvec3 relative =
+            point_velocity(b, point, t) - (o ? point_velocity(*o, point, t) : glm::dvec3(0.0));
+        const glm::dvec3 pull = acceleration(b) - (o ? acceleration(*o) : glm::dvec3(0.0));
+        const double along = glm::dot(relative, n);
+        const double still = 1e-9 * std::max(1.0, glm::length(relative));
+        if (along < -still) { // approaching: the collision they would have had on touching
+            if (o) {
+                collide_bodies(i, other, seen.contact, t);
+                if (predicted_.size() == bodies_.size()) predict(other, t);
+            } else {
+                collide_obstacle(i, obstacles_[static_cast<size_t>(-1 - other)], seen.contact, t);
+            }
+        } else if (along <= still && glm::dot(pull, n) < 0.0 && !o) {
+            // Pressed into a static model with no speed: held where it is.
+            if (!b.dynamics)
+                restart(b, t, glm::dvec3(0.0), true); // without Dynamics it stops at a contact
+            else if (b.sphere)
+                try_settle(i, t);
+            else
+                settle_on(i, -1 - other, n, t);
+        }
+    }
+
+    void treat_as_touching(int i, int other, const OverlapRecord &record) {
+        if (record.kind == OverlapRecord::Kind::kIgnored) {
+            ignore(i, other, record.since);
+            return;
+        }
+        if (overlaps_.emplace(pair_key(i, other), record).second && other < 0)
+            ++bodies_[static_cast<size_t>(i)].overlapped_obstacles;
+    }
+
+    void report_overlap(int i, int other, double t, double depth) {
+        const uint32_t a = bodies_[static_cast<size_t>(i)].model, b = model_of(other);
+        if (memory_.reported_before(a, b, t) || !reported_.insert(pair_key(i, other)).second)
+            return;
+        log_warning("models '" + std::string(name_of(scene_.models[a])) + "' and '" +
+                    name_of(scene_.models[b]) + "' overlap at t = " + short_number(t) + " s by " +
+                    short_number(depth) +
+                    " m: treated as touching (neither moves deeper into the other; approaching, "
+                    "they collide at once; moving apart, they are let go)");
+    }
+
+    static std::string short_number(double x) {
+        std::ostringstream out;
+        out << std::setprecision(4) << (std::abs(x) < 1e-12 ? 0.0 : x);
+        return out.str();
+    }
+
+    uint32_t model_of(int other) const {
+        return other >= 0 ? bodies_[static_cast<size_t>(other)].model
+                          : obstacles_[static_cast<size_t>(-1 - other)].model;
+    }
+
+    // The acceleration a body has now: its path's, or none under its keys.
+    static glm::dvec3 acceleration(const Body &b) { return b.keyed() ? glm::dvec3(0.0) : b.path.a; }
+
+    bool is_overlapped(int a, int b) const {
+        return !overlaps_.empty() && overlaps_.count(pair_key(a, b));
+    }
+
+    const OverlapRecord *overlap_of(int a, int b) const {
+        if (overlaps_.empty()) return nullptr;
+        const auto it = overlaps_.find(pair_key(a, b));
+        return it == overlaps_.end() ? nullptr : &it->second;
+    }
+
+    // The radius a free sphere touches obstacle o with: its own, or less while it overlaps it.
+    double radius_against(int i, int o) const {
+        const Body &b = bodies_[static_cast<size_t>(i)];
+        if (b.overlapped_obstacles == 0) return b.radius;
+        const OverlapRecord *r = overlap_of(i, -1 - o);
+        return r && r->kind == OverlapRecord::Kind::kContactDistance
+                   ? std::min(b.radius, r->contact)
+                   : b.radius;
+    }
+
+    // How far a mesh body is moved for its tests against obstacle o while it overlaps it.
+    glm::dvec3 shift_against(int i, int o) const {
+        const OverlapRecord *r = bodies_[static_cast<size_t>(i)].overlapped_obstacles > 0
+                                     ? overlap_of(i, -1 - o)
+                                     : nullptr;
+        return r && r->kind == OverlapRecord::Kind::kShift ? r->shift : glm::dvec3(0.0);
+    }
+
+    // Two free spheres that overlapped touch at the distance they had: their radii, scaled.
+    void radii_against(int i, int j, double &ri, double &rj) const {
+        const OverlapRecord *r = overlap_of(i, j);
+        if (!r || r->kind != OverlapRecord::Kind::kContactDistance) return;
+        const double scale = std::min(1.0, r->contact / (ri + rj));
+        ri *= scale;
+        rj *= scale;
+    }
+
+    // Whether a body that overlapped obstacle o is apart from it now (then the pair is as any).
+    bool apart_after_overlap(int i, int o, double t) const {
+        const Body &b = bodies_[static_cast<size_t>(i)];
+        const OverlapRecord *r = overlap_of(i, -1 - o);
+        if (!r || r->kind != OverlapRecord::Kind::kShift || !b.shape)
+            return apart_from_obstacle(b, obstacles_[static_cast<size_t>(o)], t);
+        const glm::dvec3 n = glm::normalize(r->shift), c = b.path.at(t - b.t0);
+        double depth = -kNever; // of its deepest vertex behind the obstacle's plane
+        for (const glm::dvec3 &v : b.shape->vertices)
+            depth = std::max(depth, r->contact - glm::dot(n, c + v));
+        return depth <= 0.0;
+    }
+
+    void unoverlap(int i, int other, double t) {
+        if (!overlaps_.erase(pair_key(i, other))) return;
+        if (other < 0) --bodies_[static_cast<size_t>(i)].overlapped_obstacles;
+        memory_.close(bodies_[static_cast<size_t>(i)].model, model_of(other), t);
     }
 
     static std::pair<int, int> pair_key(int a, int b) {
         return b >= 0 && b < a ? std::make_pair(b, a) : std::make_pair(a, b);
     }
 
-    void ignore(int i, int other, double t, bool report = true) {
+    // Leaves the pair alone until they are apart (overlapping keyed models, or a grazing contact).
+    void ignore(int i, int other, double t) {
         if (!ignored_.insert(pair_key(i, other)).second) return;
-        const uint32_t model_b = other >= 0 ? bodies_[static_cast<size_t>(other)].model
-                                            : obstacles_[static_cast<size_t>(-1 - other)].model;
         if (other < 0) {
             Body &b = bodies_[static_cast<size_t>(i)];
             ++b.ignored_obstacles;
             if (!b.sphere) b.grazed_until = t + recheck_after(b, t);
         }
-        if (report)
-            log_once("models '" +
-                     std::string(name_of(scene_.models[bodies_[static_cast<size_t>(i)].model])) +
-                     "' and '" + name_of(scene_.models[model_b]) + "' overlap at t = " +
-                     std::to_string(t) + " s; their contact is ignored until they separate");
     }
 
-    void unignore(int i, int other) {
-        if (ignored_.erase(pair_key(i, other)) && other < 0)
-            --bodies_[static_cast<size_t>(i)].ignored_obstacles;
+    void unignore(int i, int other, double t) {
+        if (ignored_.erase(pair_key(i, other))) {
+            if (other < 0) --bodies_[static_cast<size_t>(i)].ignored_obstacles;
+            memory_.close(bodies_[static_cast<size_t>(i)].model, model_of(other), t);
+        }
     }
 
     bool is_ignored(int a, int b) const {
@@ -897,7 +1112,7 @@ class EventBake {
             return;
         }
         ++count_.predictions;
-        if (b.ignored_obstacles > 0) recheck_obstacles(i, now, next);
+        if (b.ignored_obstacles > 0 || b.overlapped_obstacles > 0) recheck_obstacles(i, now, next);
         if (b.still() && b.sphere) { // still spheres are met, they do not meet: the movers predict
             set_prediction(i, next);
             return;
@@ -917,8 +1132,9 @@ class EventBake {
                 ++tested;
                 std::optional<Contact> c;
                 if (b.free_sphere() && o.free_sphere()) {
-                    c = sphere_sphere(from_now(b, now), b.radius, from_now(o, now), o.radius,
-                                      limit);
+                    double rb = b.radius, ro = o.radius;
+                    radii_against(i, j, rb, ro);
+                    c = sphere_sphere(from_now(b, now), rb, from_now(o, now), ro, limit);
                 } else if (b.shape && o.shape) {
                     if (!(b.still() && o.still()))
                         c = mesh_pair(*b.shape, from_now(b, now), *o.shape, from_now(o, now),
@@ -930,7 +1146,7 @@ class EventBake {
                     limit = c->t;
                 }
             }
-            if (is_ignored(i, j)) predict_release(i, j, now, limit, next);
+            if (is_ignored(i, j) || is_overlapped(i, j)) predict_release(i, j, now, limit, next);
         });
         count_.done += tested;
         count_.skipped += (bodies_.size() - 1) - tested;
@@ -939,7 +1155,7 @@ class EventBake {
             predict_mesh_obstacles(i, now, limit, next); // exact: it translates
         else
             predict_obstacles(i, now, limit, next); // spheres exact; keyed models by advancement
-        if (b.ignored_obstacles > 0) recheck_obstacles(i, now, next);
+        if (b.ignored_obstacles > 0 || b.overlapped_obstacles > 0) recheck_obstacles(i, now, next);
         set_prediction(i, next);
     }
 
@@ -999,9 +1215,19 @@ class EventBake {
             c.t = out.t - now;
             return c;
         }
-        case ApproachOutcome::kOverlapping:
-            ignore(i, o ? j : -1 - obstacle, out.t);
+        case ApproachOutcome::kOverlapping: {
+            // Found inside each other by the advancement (keys that put it there): left alone
+            // until apart, and said once.
+            const int other = o ? j : -1 - obstacle;
+            report_overlap(i, other, out.t, -approach.gap(out.t));
+            OverlapRecord record;
+            record.model_a = b.model;
+            record.model_b = model_of(other);
+            record.since = out.t;
+            memory_.add(record);
+            ignore(i, other, out.t);
             return std::nullopt;
+        }
         case ApproachOutcome::kUndecided:
             // Too long within a hair of each other: look again from there.
             if (out.t > now) {
@@ -1032,21 +1258,22 @@ class EventBake {
                 continue;
             }
             const Path path = from_now(b, now);
+            const double r = radius_against(i, static_cast<int>(o)); // less while overlapping
             // Broad phase: the swept sphere must reach the obstacle's bounding sphere.
             const Path fixed{ob.center, glm::dvec3(0.0), glm::dvec3(0.0)};
-            if (!(glm::length(path.p - ob.center) <= b.radius + ob.radius) &&
-                !sphere_sphere(path, b.radius, fixed, ob.radius, limit))
+            if (!(glm::length(path.p - ob.center) <= r + ob.radius) &&
+                !sphere_sphere(path, r, fixed, ob.radius, limit))
                 continue;
             // Each triangle only if the swept sphere's box reaches the triangle's box.
             Box reach = swept_box(path, limit);
-            reach.lo -= glm::dvec3(b.radius);
-            reach.hi += glm::dvec3(b.radius);
+            reach.lo -= glm::dvec3(r);
+            reach.hi += glm::dvec3(r);
             const bool on_it = b.support == static_cast<int>(o);
             for (size_t k = 0; k + 2 < ob.corners.size(); k += 3) {
                 if (!reach.overlaps(ob.boxes[k / 3])) continue;
                 if (on_it && in_support_plane(b, ob, k / 3)) continue; // it slides on these
                 ++tested;
-                if (auto c = sphere_triangle(path, b.radius, ob.corners[k], ob.corners[k + 1],
+                if (auto c = sphere_triangle(path, r, ob.corners[k], ob.corners[k + 1],
                                              ob.corners[k + 2], limit)) {
                     next = predicted(now + c->t, EventKind::kObstacle, static_cast<int>(o), 0, *c);
                     limit = c->t;
@@ -1073,8 +1300,12 @@ class EventBake {
         const Path path = from_now(b, now), fixed{};
         for (size_t o = 0; o < obstacles_.size(); ++o) {
             if (b.ignored_obstacles > 0 && is_ignored(i, -1 - static_cast<int>(o))) continue;
-            if (auto c =
-                    mesh_pair(*b.shape, path, shape_facing(obstacles_[o], path.p), fixed, limit)) {
+            // While it overlaps the obstacle, it is tested moved out by its depth (touching).
+            const glm::dvec3 shift = shift_against(i, static_cast<int>(o));
+            const Path moved{path.p + shift, path.v, path.a};
+            if (auto c = mesh_pair(*b.shape, moved, shape_facing(obstacles_[o], moved.p), fixed,
+                                   limit)) {
+                c->point -= shift;
                 next = predicted(now + c->t, EventKind::kObstacle, static_cast<int>(o), 0, *c);
                 limit = c->t;
             }
@@ -1134,13 +1365,14 @@ class EventBake {
             const Obstacle &ob = obstacles_[o];
             if (glm::length(c - ob.center) > b.radius + ob.radius + tol) continue;
             if (b.ignored_obstacles > 0 && is_ignored(i, -1 - static_cast<int>(o))) continue;
-            Box near{c - glm::dvec3(b.radius + tol), c + glm::dvec3(b.radius + tol)};
+            const double r = radius_against(i, static_cast<int>(o)); // less while overlapping
+            Box near{c - glm::dvec3(r + tol), c + glm::dvec3(r + tol)};
             for (size_t k = 0; k < ob.boxes.size(); ++k) {
                 const glm::dvec3 n = ob.normals[k];
                 if (n == glm::dvec3(0.0) || !near.overlaps(ob.boxes[k])) continue;
                 const double h =
                     glm::dot(n, c) - ob.offsets[k]; // height of the center above the face's plane
-                if (std::abs(h - b.radius) > tol) continue;
+                if (std::abs(h - r) > tol) continue;
                 const glm::dvec3 q = closest_point_on_triangle(
                     c, ob.corners[3 * k], ob.corners[3 * k + 1], ob.corners[3 * k + 2]);
                 if (glm::length((c - q) - h * n) > tol)
@@ -1150,13 +1382,13 @@ class EventBake {
                     continue; // bouncing
                 Body held = b;
                 held.t0 = t;
-                held.path = Path{c - (h - b.radius) * n, v - glm::dot(v, n) * n,
+                held.path = Path{c - (h - r) * n, v - glm::dot(v, n) * n,
                                  b.free_a - glm::dot(b.free_a, n) * n};
                 held.support = static_cast<int>(o);
                 held.support_n = n;
                 held.support_d = ob.offsets[k];
                 held.support_edges = support_boundary(ob, held);
-                held.support_feet = {-b.radius * n};
+                held.support_feet = {-r * n};
                 if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t))))
                     continue; // on the rim of the flat region, on its way off
                 close_segment(b, t);
@@ -1178,6 +1410,9 @@ class EventBake {
             return false;
         const Obstacle &ob = obstacles_[static_cast<size_t>(o)];
         const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
+        // Where its tests against the obstacle place it: moved out by its depth while it
+        // overlaps it (held at that depth).
+        const glm::dvec3 placed_c = c + shift_against(i, o);
         // The face: one of the obstacle's, in the plane through the contact with normal n.
         int face = -1;
         for (size_t k = 0; k < ob.normals.size() && face < 0; ++k)
@@ -1190,7 +1425,7 @@ class EventBake {
         double best = kNever;
         for (size_t k = 0; k < ob.normals.size(); ++k)
             if (glm::dot(ob.normals[k], n) > 1.0 - 1e-9) {
-                const double below = glm::dot(n, c) - ob.offsets[k];
+                const double below = glm::dot(n, placed_c) - ob.offsets[k];
                 if (below >= 0.0 && below < best) {
                     best = below;
                     held.support_d = ob.offsets[k];
@@ -1202,7 +1437,7 @@ class EventBake {
         held.support_feet.clear();
         const double size = std::max(1.0, glm::length(b.shape->bounds().hi - b.shape->bounds().lo));
         for (const glm::dvec3 &corner : b.shape->vertices)
-            if (std::abs(glm::dot(n, c + corner) - held.support_d) <= 1e-9 * size)
+            if (std::abs(glm::dot(n, placed_c + corner) - held.support_d) <= 1e-9 * size)
                 held.support_feet.push_back(corner);
         if (held.support_feet.empty()) return false;
         held.t0 = t;
@@ -1319,8 +1554,12 @@ class EventBake {
         for (size_t o = 0; o < obstacles_.size(); ++o)
             if (is_ignored(i, -1 - static_cast<int>(o)) &&
                 apart_from_obstacle(b, obstacles_[o], now))
-                unignore(i, -1 - static_cast<int>(o));
-        if (b.ignored_obstacles == 0 || b.still()) return;
+                unignore(i, -1 - static_cast<int>(o), now);
+        for (size_t o = 0; o < obstacles_.size() && b.overlapped_obstacles > 0; ++o)
+            if (is_overlapped(i, -1 - static_cast<int>(o)) &&
+                apart_after_overlap(i, static_cast<int>(o), now))
+                unoverlap(i, -1 - static_cast<int>(o), now);
+        if ((b.ignored_obstacles == 0 && b.overlapped_obstacles == 0) || b.still()) return;
         const double wait = recheck_after(b, now);
         if (wait < kNever && now + wait < next.t) next = predicted(now + wait, EventKind::kRecheck);
     }
@@ -1392,7 +1631,7 @@ class EventBake {
             if (grazing(point_velocity(b, event.contact.point, now) -
                             point_velocity(o, event.contact.point, now),
                         event.contact.normal)) {
-                ignore(i, event.other, now, false);
+                ignore(i, event.other, now);
                 break;
             }
             collide_bodies(i, event.other, event.contact, now);
@@ -1403,13 +1642,14 @@ class EventBake {
             if (event.contact.normal == glm::dvec3(0.0)) break;
             if (grazing(point_velocity(b, event.contact.point, now), event.contact.normal)) {
                 if (!settle_on(i, event.other, event.contact.normal, now))
-                    ignore(i, -1 - event.other, now, false);
+                    ignore(i, -1 - event.other, now);
                 break;
             }
             collide_obstacle(i, obstacles_[static_cast<size_t>(event.other)], event.contact, now);
             break;
         case EventKind::kRelease:
-            unignore(i, event.other);
+            unignore(i, event.other, now);
+            unoverlap(i, event.other, now);
             break;
         case EventKind::kRecheck:
             break; // predict() rechecks
@@ -1526,7 +1766,7 @@ class EventBake {
             sink_.count(sink_.context, name, static_cast<double>(value));
     }
 
-    void log_once(const std::string &message) {
+    void log_warning(const std::string &message) {
         if (host_ && host_->log)
             host_->log(host_, ANI_LOG_WARNING, "physics.custom", message.c_str());
     }
@@ -1544,9 +1784,13 @@ class EventBake {
     std::vector<int> outside_;          // active bodies not in the grid (all of them without one)
     std::unique_ptr<EventQueue> queue_;
     std::vector<Predicted> predicted_; // each body's earliest event
-    // Pairs that started overlapping (physics.md): reported once, ignored until they separate.
-    // Keys: (body, other body) with the lower first, or (body, -1 - obstacle).
+    // Pairs left alone until they are apart: overlapping keyed models, grazing contacts. Keys:
+    // (body, other body) with the lower first, or (body, -1 - obstacle).
     std::set<std::pair<int, int>> ignored_;
+    // Pairs that overlapped and touch at that depth until apart (physics.md), same keys.
+    std::map<std::pair<int, int>, OverlapRecord> overlaps_;
+    std::set<std::pair<int, int>> reported_; // overlaps said in this slice
+    OverlapMemory &memory_;                  // overlaps found by the earlier slices of the bake
     struct {
         std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0,
                     collisions = 0, advancements = 0, releases = 0, mesh_tests = 0;
@@ -1557,8 +1801,10 @@ class EventBake {
 } // namespace
 
 void bake_scene(const ani_physics_scene &scene, double t_begin, double t_end,
-                const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options) {
-    EventBake(scene, t_begin, t_end, sink, host, options).run();
+                const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options,
+                OverlapMemory *memory) {
+    OverlapMemory one_bake;
+    EventBake(scene, t_begin, t_end, sink, host, options, memory ? *memory : one_bake).run();
 }
 
 } // namespace physics_custom

@@ -7,6 +7,8 @@
 // moves without collisions, and the host's log says so.
 #pragma once
 
+#include "overlap_memory.hpp"
+
 #include <animator/physics.h>
 
 namespace physics_custom {
@@ -17,8 +19,11 @@ struct BakeOptions {
     BroadPhase broad_phase = BroadPhase::kAutomatic;
 };
 
-// Bakes [t_begin, t_end]: keyed spans, free flight, collisions. Throws ani::Failure.
+// Bakes [t_begin, t_end]: keyed spans, free flight, collisions. Throws ani::Failure. `memory`
+// carries the overlaps found from one slice of a bake to the next (the instance's); without it,
+// every call is a bake of its own.
 void bake_scene(const ani_physics_scene &scene, double t_begin, double t_end, const ani_bake_sink &sink,
-                const ani_host *host, const BakeOptions &options = {});
+                const ani_host *host, const BakeOptions &options = {},
+                OverlapMemory *memory = nullptr);
 
 } // namespace physics_custom
