@@ -26,7 +26,7 @@ root:add_child(ball)
 
 local cube = gr.mesh('cube', 'cube')
 cube:rotate('y', 30)
-cube:translate(-1.5, 0.5, 0)
+cube:translate(-1.5, 1, 0)  -- the cube mesh spans -1..1: it rests on the floor
 cube:set_material(green)
 cube:set_texture('wood')
 cube:set_tint(0.3)
@@ -45,7 +45,7 @@ root:add_child(cone)
 
 local torus = gr.mesh('torus', 'torus')
 torus:rotate('x', 90)
-torus:translate(0, 1, -3)
+torus:translate(0, 1.3, -3) -- major radius 1, minor 0.3, standing up: it rests on the floor
 torus:set_material(blue)
 torus:set_optics{transparency = 0.6, refractive_index = 1.33}
 root:add_child(torus)

@@ -883,9 +883,11 @@ class EventBake {
     }
 
     // Whether body b overlaps obstacle o at t. A sphere: closer to it than its radius, the normal
-    // from its nearest point towards the sphere's center. Any other mesh: against the plane
-    // through the obstacle's point nearest to the body's center, facing that center (a floor's
-    // plane, for a box sunk into it), some vertex is behind the plane.
+    // from its nearest point towards the sphere's center. Any other mesh: each is behind a plane
+    // of the other: the plane through the obstacle's point nearest to the body's center, facing
+    // that center (a floor's plane, for a box sunk into it), has some vertex of the body behind
+    // it, and the same the other way round (a small box beside a large floor's center is not
+    // inside it). The depth is the lesser of the two, with that side's normal.
     std::optional<Seen> overlap_with_obstacle(const Body &b, const Obstacle &o, double t) const {
         Seen seen;
         if (b.sphere) {
@@ -896,18 +898,28 @@ class EventBake {
         const Pose p = pose(b, t);
         const double reach = b.reach * frobenius(p.linear);
         if (glm::length(p.center - o.center) > reach + o.radius) return std::nullopt;
-        const glm::dvec3 nearest = nearest_on_obstacle(o, p.center);
-        if (!(glm::length(p.center - nearest) > 0.0)) return std::nullopt;
-        const glm::dvec3 n = glm::normalize(p.center - nearest);
-        double depth = -kNever;
-        const ani_mesh_view &mesh = mesh_of(b);
-        for (uint32_t k = 0; k < mesh.vertex_count; ++k)
-            depth = std::max(depth, glm::dot(n, nearest - (p.center + p.linear * vertex(mesh, k))));
-        if (!(depth > 1e-6 * reach)) return std::nullopt; // touching (single-precision meshes)
-        seen.contact.normal = n;
-        seen.contact.point = nearest;
+        const PlacedMesh body = placed(b, p);
+        // How deep the vertices of one are behind the plane of the other's point nearest to q.
+        auto behind = [](const std::vector<glm::dvec3> &vertices, const glm::dvec3 &q,
+                         const glm::dvec3 &nearest, glm::dvec3 &n) {
+            if (!(glm::length(q - nearest) > 0.0)) return -kNever;
+            n = glm::normalize(q - nearest);
+            double depth = -kNever;
+            for (const glm::dvec3 &v : vertices) depth = std::max(depth, glm::dot(n, nearest - v));
+            return depth;
+        };
+        const glm::dvec3 on_obstacle = nearest_on_obstacle(o, p.center);
+        const glm::dvec3 on_body = nearest_on_mesh(b, p, o.center);
+        glm::dvec3 n_body(0.0), n_obstacle(0.0);
+        const double body_depth = behind(body.vertices, p.center, on_obstacle, n_body);
+        const double obstacle_depth = behind(o.shape->vertices, o.center, on_body, n_obstacle);
+        const double touching = 1e-6 * reach; // single-precision meshes
+        if (!(body_depth > touching) || !(obstacle_depth > touching)) return std::nullopt;
+        const bool body_side = body_depth <= obstacle_depth;
+        seen.contact.normal = body_side ? n_body : -n_obstacle;
+        seen.contact.point = body_side ? on_obstacle : on_body;
         seen.contact.t = t;
-        seen.depth = depth;
+        seen.depth = std::min(body_depth, obstacle_depth);
         return seen;
     }
 
@@ -949,7 +961,6 @@ class EventBake {
         } else if (!o && b.shape) {
             record.kind = OverlapRecord::Kind::kShift;
             record.shift = seen.depth * n;
-            record.contact = glm::dot(n, seen.contact.point); // the obstacle's plane there
         }
         if (record.kind == OverlapRecord::Kind::kContactDistance && !(record.contact > 0.0))
             record.kind = OverlapRecord::Kind::kIgnored; // concentric: no direction to touch in
@@ -1058,11 +1069,7 @@ class EventBake {
         const OverlapRecord *r = overlap_of(i, -1 - o);
         if (!r || r->kind != OverlapRecord::Kind::kShift || !b.shape)
             return apart_from_obstacle(b, obstacles_[static_cast<size_t>(o)], t);
-        const glm::dvec3 n = glm::normalize(r->shift), c = b.path.at(t - b.t0);
-        double depth = -kNever; // of its deepest vertex behind the obstacle's plane
-        for (const glm::dvec3 &v : b.shape->vertices)
-            depth = std::max(depth, r->contact - glm::dot(n, c + v));
-        return depth <= 0.0;
+        return !overlap_with_obstacle(b, obstacles_[static_cast<size_t>(o)], t);
     }
 
     void unoverlap(int i, int other, double t) {
