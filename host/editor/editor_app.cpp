@@ -3,6 +3,8 @@
 #include "audio/live_player.hpp"
 #include "editor/editor_panels.hpp"
 #include "editor/editor_session.hpp"
+#include "editor/screen_state.hpp"
+#include "editor/status_line.hpp"
 #include "render/renderer.hpp"
 
 #include <glad/gl.h>
@@ -18,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <deque>
 #include <iostream>
@@ -40,6 +43,9 @@ struct InputEvent {
 struct WindowState {
     std::deque<InputEvent> events;
     bool woke = false; // anything at all happened: draw a few frames
+    // Keys, buttons and scroll notches handled, and cursor moves: the readiness signal
+    // (announce_idle) says how many, so a test knows its input was seen before the editor slept.
+    std::uint64_t inputs = 0, moves = 0;
     bool close_requested = false;
     // ImGui 1.86 reads keys as up or down once a frame, so a key pressed and released between
     // two frames (a fast typist, xdotool) would never reach a text field: keys reach ImGui from
@@ -58,6 +64,7 @@ void install_callbacks(GLFWwindow *window) {
     glfwSetMouseButtonCallback(window, [](GLFWwindow *w, int button, int action, int mods) {
         auto &s = state_of(w);
         s.woke = true;
+        ++s.inputs;
         double x = 0, y = 0;
         glfwGetCursorPos(w, &x, &y);
         s.events.push_back({action == GLFW_PRESS ? InputEvent::Press : InputEvent::Release, button, mods, x, y});
@@ -65,9 +72,14 @@ void install_callbacks(GLFWwindow *window) {
     glfwSetScrollCallback(window, [](GLFWwindow *w, double, double dy) {
         auto &s = state_of(w);
         s.woke = true;
+        ++s.inputs;
         s.events.push_back({InputEvent::Scroll, 0, 0, 0, dy});
     });
-    glfwSetCursorPosCallback(window, [](GLFWwindow *w, double, double) { state_of(w).woke = true; });
+    glfwSetCursorPosCallback(window, [](GLFWwindow *w, double, double) {
+        auto &s = state_of(w);
+        s.woke = true;
+        ++s.moves;
+    });
     glfwSetCharCallback(window, [](GLFWwindow *w, unsigned) { state_of(w).woke = true; });
     glfwSetWindowSizeCallback(window, [](GLFWwindow *w, int, int) { state_of(w).woke = true; });
     glfwSetWindowRefreshCallback(window, [](GLFWwindow *w) { state_of(w).woke = true; });
@@ -83,6 +95,8 @@ void install_callbacks(GLFWwindow *window) {
 
 // The mouse in the 3D view: a press starts a drag (Camera mode: any button; other modes: the
 // middle and right buttons), a left press and release without moving is a click that selects.
+// With Alt held (Blender's "emulate 3 button mouse" and Maya's navigation), a drag looks
+// around in the free view instead: left orbits, middle pans, right zooms; no mode uses Alt.
 class Pointer {
   public:
     void press(EditorSession &session, const InputEvent &e, int viewport_height) {
@@ -90,14 +104,27 @@ class Pointer {
         button_ = e.code;
         start_ = glm::dvec2(e.x, e.y);
         if (e.code > GLFW_MOUSE_BUTTON_MIDDLE) return;
+        if ((e.mods & GLFW_MOD_ALT) != 0) {
+            session.set_free_view(true);
+            view_start_ = session.view();
+            viewport_height_ = viewport_height;
+            looking_ = true;
+            return;
+        }
         const auto b = static_cast<DragButton>(e.code);
         if (session.mode() == EditMode::Camera || b != DragButton::Left) session.begin_drag(b, viewport_height);
     }
     // Returns the click's position when the release is a click of the left button.
     std::optional<glm::dvec2> release(EditorSession &session, const InputEvent &e) {
         if (e.code != button_) return std::nullopt;
+        last_button_ = button_;
         button_ = -1;
         const glm::dvec2 delta = glm::dvec2(e.x, e.y) - start_;
+        if (looking_) {
+            look(session, delta);
+            looking_ = false;
+            return std::nullopt;
+        }
         const bool click = std::abs(delta.x) < 4 && std::abs(delta.y) < 4;
         if (click) {
             session.cancel_drag();
@@ -108,13 +135,32 @@ class Pointer {
         return std::nullopt;
     }
     void move(EditorSession &session, glm::dvec2 cursor) {
-        if (button_ >= 0) session.update_drag(cursor - start_);
+        if (button_ < 0) return;
+        if (looking_) look(session, cursor - start_);
+        else session.update_drag(cursor - start_);
     }
     bool down() const { return button_ >= 0; }
+    // ESC: a look-around drag goes back to where it began, as a drag does.
+    void cancel(EditorSession &session) {
+        if (looking_) session.set_view(view_start_);
+        looking_ = false;
+    }
 
   private:
-    int button_ = -1;
+    // The view is a function of the drag so far, from where it began (no accumulated error).
+    void look(EditorSession &session, glm::dvec2 delta) {
+        switch (button_ >= 0 ? button_ : last_button_) {
+        case GLFW_MOUSE_BUTTON_LEFT: session.set_view(orbit(view_start_, delta)); break;
+        case GLFW_MOUSE_BUTTON_MIDDLE: session.set_view(pan(view_start_, delta, viewport_height_)); break;
+        default: session.set_view(zoom_drag(view_start_, delta)); break;
+        }
+    }
+
+    int button_ = -1, last_button_ = -1;
     glm::dvec2 start_{0.0};
+    bool looking_ = false;
+    FreeView view_start_;
+    int viewport_height_ = 1;
 };
 
 // Keys go to the editor's queue and, through WindowState::imgui_keys, to ImGui. Installed after
@@ -123,6 +169,7 @@ void install_key_callback(GLFWwindow *window) {
     state_of(window).imgui_key = glfwSetKeyCallback(window, [](GLFWwindow *w, int key, int scancode, int action, int mods) {
         auto &s = state_of(w);
         s.woke = true;
+        ++s.inputs;
         if (action == GLFW_PRESS || action == GLFW_REPEAT) s.events.push_back({InputEvent::Key, key, mods, 0, 0});
         s.imgui_keys.push_back({key, scancode, action, mods});
     });
@@ -140,6 +187,19 @@ void feed_imgui_keys(GLFWwindow *window) {
         s.imgui_keys.pop_front();
         if (s.imgui_key) s.imgui_key(window, k.key, k.scancode, k.action, k.mods);
     }
+}
+
+// With ANIMATOR_EDITOR_SIGNALS set (the end-to-end tests), the editor says each time it goes
+// to sleep with everything drawn: "animator: idle (inputs 12, moves 40)". A test waits for a
+// line counting its own keys and clicks instead of for a fixed time, which a loaded machine can
+// exceed. Off by default: a user's terminal would get a line per mouse move.
+bool signals_wanted() {
+    const char *v = std::getenv("ANIMATOR_EDITOR_SIGNALS");
+    return v && *v && std::strcmp(v, "0") != 0;
+}
+
+void announce_idle(const WindowState &s) {
+    std::cout << "animator: idle (inputs " << s.inputs << ", moves " << s.moves << ")" << std::endl;
 }
 
 void glfw_error(int code, const char *description) {
@@ -238,11 +298,22 @@ int run_editor(const EditorOptions &options) {
         constexpr double kSettleSeconds = 0.3;
         double settle_until = glfwGetTime() + kSettleSeconds;
         bool quitting = false;
+        const bool signals = signals_wanted();
+        FrameRate frame_rate;
         while (!quitting) {
             const bool busy = session.playing() || session.baking() || pointer.down() || frames_to_draw > 0;
             if (busy || !window_state.imgui_keys.empty()) glfwPollEvents();
             else if (glfwGetTime() < settle_until) glfwWaitEventsTimeout(1.0 / 60.0);
-            else glfwWaitEvents();
+            else if (frame_rate.text() != "idle") {
+                // One last frame, so the status line says "idle" rather than the rate of the
+                // frames just drawn, which would stand still on the screen while it sleeps.
+                frame_rate.idle();
+                frames_to_draw = 1;
+                glfwPollEvents();
+            } else {
+                if (signals) announce_idle(window_state);
+                glfwWaitEvents();
+            }
             if (window_state.woke) {
                 frames_to_draw = 3; // ImGui settles within a few frames
                 settle_until = glfwGetTime() + kSettleSeconds;
@@ -272,24 +343,30 @@ int run_editor(const EditorOptions &options) {
                 case InputEvent::Release:
                     if (auto click = pointer.release(session, e)) {
                         if (session.playing()) break;
-                        const int model = renderer.pick(session.frame(), fb_w, fb_h,
+                        const int model = renderer.pick(session.shown_frame(), fb_w, fb_h,
                                                          static_cast<int>(click->x * to_fb),
                                                          static_cast<int>(click->y * to_fb));
                         session.click(model, (e.mods & GLFW_MOD_CONTROL) != 0);
                     }
                     break;
                 case InputEvent::Scroll:
-                    if (!io.WantCaptureMouse) session.scroll(e.y);
+                    // In the free view the wheel zooms it; looking through the animated camera
+                    // in Camera mode, it moves (and keys) that camera, as in the seed.
+                    if (io.WantCaptureMouse) break;
+                    if (session.free_view()) session.set_view(zoom_wheel(session.view(), e.y));
+                    else session.scroll(e.y);
                     break;
                 case InputEvent::Key: {
-                    if (io.WantCaptureKeyboard || io.WantTextInput) break;
+                    // Keys typed into a text field are the field's; with a dialog open (modal: it
+                    // is answered first), `q` must not quit and SPACE not play behind it.
+                    if (io.WantCaptureKeyboard || io.WantTextInput || panels.dialog_open()) break;
                     const bool ctrl = (e.mods & GLFW_MOD_CONTROL) != 0, shift = (e.mods & GLFW_MOD_SHIFT) != 0;
                     if (e.code == GLFW_KEY_SPACE) session.toggle_play(glfwGetTime());
                     else if ((e.code == GLFW_KEY_U && !ctrl) || (e.code == GLFW_KEY_Z && ctrl && !shift)) {
-                        if (!session.undo()) panels.say("nothing to undo here");
+                        panels.undo(session);
                     } else if ((e.code == GLFW_KEY_R && !ctrl) || (e.code == GLFW_KEY_Z && ctrl && shift) ||
                                (e.code == GLFW_KEY_Y && ctrl)) {
-                        if (!session.redo()) panels.say("nothing to redo here");
+                        panels.redo(session);
                     } else if (e.code == GLFW_KEY_X && !ctrl) {
                         const auto r = session.export_animation();
                         panels.say(r.message, !r.ok);
@@ -297,6 +374,19 @@ int run_editor(const EditorOptions &options) {
                         window_state.close_requested = true;
                     } else if (e.code == GLFW_KEY_ESCAPE) {
                         session.cancel_drag();
+                        pointer.cancel(session);
+                    } else if ((e.code == GLFW_KEY_C && !ctrl) || e.code == GLFW_KEY_KP_0) {
+                        session.set_free_view(!session.free_view());
+                    } else if (e.code == GLFW_KEY_HOME || (e.code == GLFW_KEY_F && !ctrl)) {
+                        const bool selected = e.code == GLFW_KEY_F;
+                        const double aspect = win_h > 0 ? static_cast<double>(win_w) / win_h : 1.0;
+                        if (!session.frame_models(selected, aspect))
+                            panels.say(selected ? "nothing selected to frame" : "no model to frame");
+                    } else if (e.code == GLFW_KEY_LEFT || e.code == GLFW_KEY_RIGHT) {
+                        session.step_frames(e.code == GLFW_KEY_RIGHT ? 1 : -1);
+                    } else if (e.code == GLFW_KEY_UP || e.code == GLFW_KEY_DOWN) {
+                        // Up to the previous keyframe, as the keyframe list reads top to bottom.
+                        session.jump_keyframe(e.code == GLFW_KEY_DOWN ? 1 : -1);
                     }
                     break;
                 }
@@ -311,10 +401,15 @@ int run_editor(const EditorOptions &options) {
                 if (session.dirty()) panels.ask_to_quit();
                 else quitting = true;
             }
+            panels.set_frame_rate(frame_rate.text());
             panels.draw(session, static_cast<float>(win_w), static_cast<float>(win_h), glfwGetTime());
             if (panels.quit_confirmed()) quitting = true;
+            // What this frame's panels show; the work below (playback, the bake) may change it.
+            const ScreenState shown = screen_state(session, panels.message());
 
+            const bool was_playing = session.playing(), was_baking = session.baking();
             session.tick(glfwGetTime());
+            if (was_playing && !session.playing()) panels.say("played to the end, " + std::to_string(session.time_ms()) + " ms");
             if (session.playing() && session.time() > played_to) {
                 player.advance(session.timeline(), played_to, session.time());
             } else if (!session.playing() && played_to != session.time()) {
@@ -323,6 +418,7 @@ int run_editor(const EditorOptions &options) {
             played_to = session.time();
             // Bake between frames: a slice small enough to keep playback and the mouse smooth.
             session.bake_some(session.playing() || pointer.down() ? 0.008 : 0.03);
+            if (was_baking && !session.baking()) std::cout << "animator: " << bake_status(session) << std::endl;
 
             if (drawn_version != session.version()) {
                 try {
@@ -339,12 +435,16 @@ int run_editor(const EditorOptions &options) {
             }
 
             ImGui::Render();
-            if (fb_w > 0 && fb_h > 0) renderer.draw(session.frame(), RenderTarget{0, fb_w, fb_h}, session.selection());
+            if (fb_w > 0 && fb_h > 0) renderer.draw(session.shown_frame(), RenderTarget{0, fb_w, fb_h}, session.selection());
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, fb_w, fb_h);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             glfwSwapBuffers(window);
+            frame_rate.frame(glfwGetTime());
             if (frames_to_draw > 0) --frames_to_draw;
+            // Playback ended, a bake slice, an undo's effect on the buttons, a new message: the
+            // panels drawn above are already out of date, so one more frame shows it.
+            if (screen_state(session, panels.message()) != shown) frames_to_draw = std::max(frames_to_draw, 1);
         }
         exit_code = 0;
     }

@@ -1,5 +1,8 @@
 #include "editor/editor_panels.hpp"
 
+#include "editor/status_line.hpp"
+#include "render/renderer.hpp"
+
 #include <animator/shading.h>
 
 #include <imgui.h>
@@ -47,6 +50,14 @@ bool slider(const char *label, double &value, double lo, double hi, const char *
     return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
 }
 
+// A dialog's keys: Enter confirms (only where that is harmless), Esc cancels. Read from ImGui,
+// which gets keys one change a frame (editor_app.cpp), so a quick press is still seen.
+bool enter_pressed() {
+    return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
+           ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter), false);
+}
+bool escape_pressed() { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false); }
+
 std::string time_label(std::int64_t ms) {
     char text[64];
     std::snprintf(text, sizeof text, "t = %lld ms", static_cast<long long>(ms));
@@ -70,6 +81,17 @@ void Panels::show_error(const std::string &title, const std::string &message) {
 
 void Panels::commit(bool ok, const std::string &error) {
     if (!ok) say(error, true);
+    else message_.clear(); // the last action went well: an older message no longer applies
+}
+
+void Panels::undo(EditorSession &session) {
+    if (session.undo()) say("undone");
+    else say("nothing to undo here");
+}
+
+void Panels::redo(EditorSession &session) {
+    if (session.redo()) say("redone");
+    else say("nothing to redo here");
 }
 
 void Panels::draw(EditorSession &session, float width, float height, double wall) {
@@ -82,6 +104,8 @@ void Panels::draw(EditorSession &session, float width, float height, double wall
     animator_panel(session, height, wall);
     if (session.last_selected() >= 0) model_panel(session, width, height);
     dialogs(session);
+    // After the dialogs, so the frame a dialog opens in already counts.
+    dialog_open_ = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
 }
 
 void Panels::animator_panel(EditorSession &session, float height, double wall) {
@@ -120,6 +144,14 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
     }
     ImGui::SameLine();
     ImGui::TextDisabled("(SPACE)");
+    // Which camera the view shows: the animated one, or the free view to look around with.
+    ImGui::SameLine();
+    bool free_view = session.free_view();
+    if (ImGui::Checkbox("Free view (c)", &free_view)) session.set_free_view(free_view);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Look around without editing the animation: Alt+left drag orbits, Alt+middle pans,\n"
+                          "Alt+right or the wheel zooms, Home frames everything, F the selection.\n"
+                          "Off: the view shows the animated camera (Camera mode keys it).");
 
     // Max Time in seconds, 1 s .. 300000 s; shortening asks before deleting later keyframes.
     double max_s = static_cast<double>(s.max_time_ms) / 1000.0;
@@ -148,7 +180,8 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();
-        if (ImGui::Button("Cancel")) {
+        // Esc cancels; Enter does nothing here: deleting keyframes is not a default.
+        if (ImGui::Button("Cancel") || escape_pressed()) {
             confirm_settings_.reset();
             settings_draft_ = doc.settings();
             ImGui::CloseCurrentPopup();
@@ -200,6 +233,8 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
         std::string error;
         commit(session.set_settings(s, &error), error);
     }
+    ImGui::SameLine();
+    cel_outline(s, session);
     if (asset_combo("Skybox", s.skybox, env_.assets.list(ANI_ASSET_SKYBOX))) {
         std::string error;
         commit(session.set_settings(s, &error), error);
@@ -209,20 +244,45 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
     physics_backend(session);
 
     ImGui::Separator();
-    if (ImGui::Button("Undo (u)")) session.undo();
+    if (ImGui::Button("Undo (u)")) undo(session);
     ImGui::SameLine();
-    if (ImGui::Button("Redo (r)")) session.redo();
+    if (ImGui::Button("Redo (r)")) redo(session);
     ImGui::SameLine();
     if (ImGui::Button("Export (x)")) {
         const auto r = session.export_animation();
         say(r.message, !r.ok);
     }
+    // The status line: how fast the editor draws and how far the physics is baked.
+    ImGui::TextDisabled("%s  |  %s", frame_rate_.c_str(), bake_status(session).c_str());
     if (!message_.empty()) {
         if (message_error_) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
         ImGui::TextWrapped("%s", message_.c_str());
         if (message_error_) ImGui::PopStyleColor();
     }
     ImGui::End();
+}
+
+// The shading plugin's cel outline (a parameter saved in the document like the backend's), as
+// a checkbox beside Cel Shading: the manual promises outlines, and a parameter hidden in no
+// panel could not be turned on. It only draws with cel shading, so it waits for it.
+void Panels::cel_outline(Settings &s, EditorSession &session) {
+    const std::string plugin = RenderOptions{}.shading;
+    bool on = false;
+    if (auto p = s.params.find(plugin); p != s.params.end())
+        if (auto v = p->second.find("cel_outline"); v != p->second.end()) on = v->second[0] != 0.0;
+    ImGui::BeginDisabled(!s.cel_shading);
+    if (ImGui::Checkbox("Outlines", &on)) {
+        if (on) s.params[plugin]["cel_outline"] = ParamValue{1.0, 0.0, 0.0, 0.0};
+        else {
+            // Off is the default: dropping the entry lets turning it on and off again leave
+            // the document as it was (no " *" in the title).
+            s.params[plugin].erase("cel_outline");
+            if (s.params[plugin].empty()) s.params.erase(plugin);
+        }
+        std::string error;
+        commit(session.set_settings(s, &error), error);
+    }
+    ImGui::EndDisabled();
 }
 
 void Panels::physics_backend(EditorSession &session) {
@@ -372,7 +432,8 @@ void Panels::dialogs(EditorSession &session) {
         ImGui::PushTextWrapPos(600.0f);
         ImGui::TextUnformatted(error_text_.c_str());
         ImGui::PopTextWrapPos();
-        if (ImGui::Button("OK")) ImGui::CloseCurrentPopup();
+        // Enter and Esc both close it: there is nothing to decide, only to read.
+        if (ImGui::Button("OK") || enter_pressed() || escape_pressed()) ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
     if (quit_asked_) {
@@ -393,7 +454,8 @@ void Panels::dialogs(EditorSession &session) {
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();
-        if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+        // Esc cancels; Enter does nothing here: both other answers lose or overwrite work.
+        if (ImGui::Button("Cancel") || escape_pressed()) ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
 }

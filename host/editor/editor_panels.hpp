@@ -23,6 +23,15 @@ class Panels {
     // A line for the status bar: the last thing that happened or went wrong.
     void say(const std::string &message, bool error = false);
     const std::string &message() const { return message_; }
+    // The editor's frame rate for the status line (status_line.hpp's FrameRate::text()).
+    void set_frame_rate(const std::string &text) { frame_rate_ = text; }
+
+    // Undo and redo, from a key or a button: the status line says what happened, so a message
+    // from an earlier action ("nothing to undo here") never outlives the next one.
+    void undo(EditorSession &session);
+    void redo(EditorSession &session);
+    // A modal dialog is open: the editor's shortcuts wait until it is answered.
+    bool dialog_open() const { return dialog_open_; }
 
     // Set by the window when the user asks to quit with unsaved changes; the panel asks.
     void ask_to_quit() { quit_asked_ = true; }
@@ -37,6 +46,7 @@ class Panels {
     void physics_backend(EditorSession &session);
     void dialogs(EditorSession &session);
     void commit(bool ok, const std::string &error);
+    void cel_outline(Settings &s, EditorSession &session);
 
     Environment &env_;
     std::optional<Settings> settings_draft_;
@@ -46,6 +56,8 @@ class Panels {
     std::optional<Settings> confirm_settings_; // a shorter max time, waiting for confirmation
     std::string message_;
     bool message_error_ = false;
+    std::string frame_rate_ = "idle";
+    bool dialog_open_ = false;
     bool quit_asked_ = false, quit_confirmed_ = false;
     std::string error_title_, error_text_;
     bool error_pending_ = false;

@@ -1,6 +1,9 @@
 #include "editor/editor_session.hpp"
 
+#include "editor/time_steps.hpp"
 #include "io/document_io.hpp"
+#include "render/frustum.hpp"
+#include "render/scene_math.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -53,6 +56,7 @@ bool EditorSession::open(const fs::path &path, std::string &error) {
         drag_.reset();
         playing_ = false;
         time_ms_ = 0;
+        free_view_on_ = view_started_ = false; // a new scene: the view starts from its camera
         chunk_ = 0.25;
         bake_error_.clear();
         dirty_ = false;
@@ -66,6 +70,18 @@ bool EditorSession::open(const fs::path &path, std::string &error) {
 
 void EditorSession::set_time_ms(std::int64_t ms) {
     time_ms_ = std::clamp<std::int64_t>(ms, 0, doc_.settings().max_time_ms);
+}
+
+void EditorSession::step_frames(int frames) {
+    if (drag_) return; // the drag's preview is at this time
+    playing_ = false;
+    time_ms_ = animator::step_frames(time_ms_, frames, kStepFramesPerSecond, doc_.settings().max_time_ms);
+}
+
+void EditorSession::jump_keyframe(int direction) {
+    if (drag_) return;
+    playing_ = false;
+    time_ms_ = neighbour_keyframe(doc_, time_ms_, direction);
 }
 
 bool EditorSession::bake_some(double budget) {
@@ -239,6 +255,48 @@ void EditorSession::scroll(double notches) {
     if (playing_ || drag_ || mode_ != EditMode::Camera || notches == 0.0) return;
     const Frame f = frame();
     perform(transform_edit({}, scroll_camera(f.camera, notches, view_depth(f))));
+}
+
+void EditorSession::set_free_view(bool on) {
+    if (on && !view_started_) {
+        const Frame f = frame();
+        view_ = free_view_from(f.camera, view_depth(f));
+        view_started_ = true;
+    }
+    free_view_on_ = on;
+}
+
+void EditorSession::set_view(const FreeView &view) {
+    set_free_view(true);
+    view_ = view;
+}
+
+std::vector<Sphere> EditorSession::model_spheres(bool selected_only) const {
+    const Frame f = frame();
+    std::vector<glm::dmat4> world;
+    world_matrices(doc_.models(), f.models, world);
+    std::vector<Sphere> spheres;
+    for (size_t m = 0; m < world.size() && m < meshes_.size(); ++m) {
+        if (!meshes_[m] || (selected_only && !selection_.count(static_cast<int>(m)))) continue;
+        Sphere s;
+        transform_bounding_sphere(world[m], meshes_[m]->bound_center, meshes_[m]->bound_radius, s.center, s.radius);
+        spheres.push_back(s);
+    }
+    return spheres;
+}
+
+bool EditorSession::frame_models(bool selected_only, double aspect) {
+    const std::vector<Sphere> spheres = model_spheres(selected_only);
+    if (spheres.empty()) return false;
+    set_free_view(true);
+    view_ = frame_spheres(view_, spheres, aspect);
+    return true;
+}
+
+Frame EditorSession::shown_frame() const {
+    Frame f = frame();
+    if (free_view_on_) f.camera = free_view_camera(view_);
+    return f;
 }
 
 std::int64_t EditorSession::history_key() const {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "document/history.hpp"
+#include "editor/free_view.hpp"
 #include "editor/manipulation.hpp"
 #include "io/environment.hpp"
 #include "timeline/timeline.hpp"
@@ -45,6 +46,10 @@ class EditorSession {
     // Index of the keyframe at the current time, or -1.
     int keyframe_here() const { return doc_.find_keyframe(time_ms_); }
     double max_time() const { return static_cast<double>(doc_.settings().max_time_ms) / 1000.0; }
+    // The arrow keys: Left/Right step `frames` frames (time_steps.hpp), Up/Down jump to the
+    // previous/next keyframe. Both pause playback, as the Time slider does; neither is an edit.
+    void step_frames(int frames);
+    void jump_keyframe(int direction);
 
     // Bakes on towards the max time for about `budget` seconds of wall time, in slices, so the
     // window stays responsive. Returns true while more remains to bake.
@@ -85,6 +90,21 @@ class EditorSession {
     // What to draw: every model and the camera at the current time (within what is baked), with
     // a drag in progress applied.
     Frame frame() const;
+
+    // The free view (free_view.hpp): looking around apart from the animated camera. None of
+    // it is an edit: no undo entry, no keyframe, nothing exported. Turned on the first time, it
+    // starts where the animated camera is; later it comes back where it was left.
+    bool free_view() const { return free_view_on_; }
+    void set_free_view(bool on);
+    const FreeView &view() const { return view_; }
+    void set_view(const FreeView &view);
+    // Home (every model) and F (the selected ones; false when none is): the free view turns
+    // on and fits their bounding spheres in a viewport of this aspect (width / height).
+    bool frame_models(bool selected_only, double aspect);
+    // Every model's bounding sphere in the world at the current time (empties have none).
+    std::vector<Sphere> model_spheres(bool selected_only) const;
+    // What the window draws and picks in: frame(), seen through the free view when it is on.
+    Frame shown_frame() const;
 
     // Applies an edit, records it for undo and re-bakes from the earliest time it affects.
     // Returns false (with the reason in `error`) and changes nothing when it cannot be applied.
@@ -155,6 +175,8 @@ class EditorSession {
     int last_selected_ = -1;
     EditMode mode_ = EditMode::Camera;
     std::optional<Drag> drag_;
+    bool free_view_on_ = false, view_started_ = false;
+    FreeView view_;
 };
 
 } // namespace animator
