@@ -1,23 +1,74 @@
 #include "assets/mesh.hpp"
 
 #include "assets/asset_paths.hpp"
+#include "assets/obj_scan.hpp"
 
+#include <assimp/IOStream.hpp>
+#include <assimp/IOSystem.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <map>
+#include <array>
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
 #include <set>
 #include <tuple>
+#include <unordered_map>
 
 namespace animator {
 
 namespace {
 
 bool finite(const aiVector3D &v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// The files assimp may open besides the mesh itself: none. An OBJ names material libraries
+// ('mtllib') by any path, and animator takes materials from the document, so a hostile mesh
+// could only use them to make the reader open a FIFO (which blocks it forever), a device or a
+// huge file anywhere on the disk.
+class NoOtherFiles : public Assimp::IOSystem {
+  public:
+    bool Exists(const char *) const override { return false; }
+    char getOsSeparator() const override { return '/'; }
+    Assimp::IOStream *Open(const char *, const char *) override { return nullptr; }
+    void Close(Assimp::IOStream *stream) override { delete stream; }
+};
+
+// The file's bytes, refusing one larger than kMaxMeshFileBytes before reading it.
+std::string read_mesh_file(const std::filesystem::path &path) {
+    const std::string name = path.string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) throw AssetError(name + ": no such mesh file");
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec) throw AssetError(name + ": cannot be read as a mesh: " + ec.message());
+    if (size > kMaxMeshFileBytes)
+        throw AssetError(name + ": the mesh file is " + std::to_string(size) + " bytes; at most " +
+                         std::to_string(kMaxMeshFileBytes) + " are read");
+    std::ifstream in(path, std::ios::binary);
+    std::string text(static_cast<std::size_t>(size), '\0');
+    if (!in.read(text.data(), static_cast<std::streamsize>(size)))
+        throw AssetError(name + ": cannot be read as a mesh: the file could not be read");
+    return text;
+}
+
+// A vertex as the join below compares it: position, normal and UV, with -0 made +0 so that
+// equal values have equal bits.
+using VertexKey = std::array<double, 8>;
+struct VertexKeyHash {
+    std::size_t operator()(const VertexKey &k) const {
+        std::size_t h = 1469598103934665603u;
+        for (double d : k) {
+            std::uint64_t bits = 0;
+            std::memcpy(&bits, &d, sizeof bits);
+            h = (h ^ static_cast<std::size_t>(bits)) * 1099511628211u;
+        }
+        return h;
+    }
+};
 
 } // namespace
 
@@ -80,15 +131,23 @@ std::vector<std::shared_ptr<const Mesh>> load_meshes(const std::vector<std::stri
 
 LoadedMesh load_mesh(const std::filesystem::path &path) {
     const std::string name = path.string();
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw AssetError(name + ": no such mesh file");
+    const std::string text = read_mesh_file(path);
+    const std::string too_large = obj_beyond_limits(name, text);
+    if (!too_large.empty()) throw AssetError(too_large);
 
     Assimp::Importer importer;
+    importer.SetIOHandler(new NoOtherFiles); // the importer owns it
     // Keep degenerate triangles (we report them ourselves) and lines/points out.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const aiScene *scene = importer.ReadFile(
-        name, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
-                  aiProcess_GenSmoothNormals | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+    // Read as OBJ whatever the file is named: a mesh may be a path relative to its document, and
+    // assimp's other forty importers are code no asset needs. The identical corners are joined
+    // below, not by aiProcess_JoinIdenticalVertices, which compares every corner near a
+    // position with every other: quadratic in a file that puts thousands at one point.
+    const aiScene *scene = importer.ReadFileFromMemory(
+        text.data(), text.size(),
+        aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_GenSmoothNormals |
+            aiProcess_SortByPType | aiProcess_ValidateDataStructure,
+        "obj");
     if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
         const std::string reason = importer.GetErrorString();
         // assimp's validation words an empty file in terms of its own structures.
@@ -104,35 +163,48 @@ LoadedMesh load_mesh(const std::filesystem::path &path) {
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         const aiMesh *src = scene->mMeshes[m];
         if (!(src->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
-        const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+        // Each corner of the file is a vertex of assimp's; those equal in position, normal and
+        // UV become one, the first keeping its place.
+        std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> joined;
+        std::vector<std::uint32_t> index_of(src->mNumVertices);
         for (unsigned v = 0; v < src->mNumVertices; ++v) {
             const aiVector3D &p = src->mVertices[v];
             if (!finite(p))
                 throw AssetError(name + ": vertex " + std::to_string(v + 1) + " is not a finite number");
-            mesh.positions.emplace_back(p.x, p.y, p.z);
+            const glm::dvec3 position(p.x, p.y, p.z);
             glm::dvec3 n(0.0, 0.0, 0.0);
             if (src->mNormals && finite(src->mNormals[v])) n = {src->mNormals[v].x, src->mNormals[v].y, src->mNormals[v].z};
             const double len = glm::length(n);
-            mesh.normals.push_back(len > 0.0 ? n / len : glm::dvec3(0.0, 1.0, 0.0));
+            const glm::dvec3 normal = len > 0.0 ? n / len : glm::dvec3(0.0, 1.0, 0.0);
+            glm::dvec2 uv(0.0, 0.0);
             if (src->mTextureCoords[0]) {
-                mesh.uvs.emplace_back(src->mTextureCoords[0][v].x, src->mTextureCoords[0][v].y);
+                uv = {src->mTextureCoords[0][v].x, src->mTextureCoords[0][v].y};
                 any_uvs = true;
-            } else {
-                mesh.uvs.emplace_back(0.0, 0.0);
             }
+            const VertexKey key = {position.x + 0.0, position.y + 0.0, position.z + 0.0, normal.x + 0.0,
+                                   normal.y + 0.0,   normal.z + 0.0,   uv.x + 0.0,       uv.y + 0.0};
+            const auto [it, added] = joined.emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+            if (added) {
+                mesh.positions.push_back(position);
+                mesh.normals.push_back(normal);
+                mesh.uvs.push_back(uv);
+            }
+            index_of[v] = it->second;
         }
         for (unsigned f = 0; f < src->mNumFaces; ++f, ++triangle_index) {
             const aiFace &face = src->mFaces[f];
             if (face.mNumIndices != 3) continue;
-            const glm::dvec3 &a = mesh.positions[base + face.mIndices[0]];
-            const glm::dvec3 &b = mesh.positions[base + face.mIndices[1]];
-            const glm::dvec3 &c = mesh.positions[base + face.mIndices[2]];
+            const std::uint32_t corner[3] = {index_of[face.mIndices[0]], index_of[face.mIndices[1]],
+                                             index_of[face.mIndices[2]]};
+            const glm::dvec3 &a = mesh.positions[corner[0]];
+            const glm::dvec3 &b = mesh.positions[corner[1]];
+            const glm::dvec3 &c = mesh.positions[corner[2]];
             const double scale = std::max({glm::length(b - a), glm::length(c - a), 1e-300});
             if (glm::length(glm::cross(b - a, c - a)) <= 1e-12 * scale * scale) {
                 if (degenerate++ == 0) first_degenerate = triangle_index + 1;
                 continue;
             }
-            for (unsigned k = 0; k < 3; ++k) mesh.triangles.push_back(base + face.mIndices[k]);
+            for (std::uint32_t k : corner) mesh.triangles.push_back(k);
         }
     }
     if (mesh.triangles.empty())

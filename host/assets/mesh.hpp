@@ -1,6 +1,6 @@
-// Triangle meshes loaded with assimp from .obj (or any format assimp reads), with the seed's
-// bounding sphere ("Collision Detection": center = mean of the vertices, radius = the largest
-// distance from it to a vertex).
+// Triangle meshes loaded with assimp from Wavefront OBJ files, with the seed's bounding sphere
+// ("Collision Detection": center = mean of the vertices, radius = the largest distance from it
+// to a vertex).
 #pragma once
 
 #include <glm/vec2.hpp>
@@ -37,9 +37,10 @@ struct LoadedMesh {
     std::vector<std::string> warnings; // each names the file
 };
 
-// Loads every mesh in the file as one, triangulated. Throws AssetError for a file that cannot be
-// read, has no triangles, or has a vertex that is not finite. Degenerate (zero-area) triangles
-// are dropped with a warning.
+// Loads every mesh in the OBJ file as one, triangulated, its identical corners joined. Throws
+// AssetError for a file that cannot be read, passes the limits of obj_scan.hpp (the message
+// names the line), has no triangles, or has a vertex that is not finite. Degenerate
+// (zero-area) triangles are dropped with a warning. No other file is opened (no 'mtllib').
 LoadedMesh load_mesh(const std::filesystem::path &path);
 
 // The seed's bounding sphere over distinct positions (a vertex split for its UVs or normals

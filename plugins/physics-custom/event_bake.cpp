@@ -883,11 +883,13 @@ class EventBake {
     }
 
     // Whether body b overlaps obstacle o at t. A sphere: closer to it than its radius, the normal
-    // from its nearest point towards the sphere's center. Any other mesh: each is behind a plane
-    // of the other: the plane through the obstacle's point nearest to the body's center, facing
-    // that center (a floor's plane, for a box sunk into it), has some vertex of the body behind
-    // it, and the same the other way round (a small box beside a large floor's center is not
-    // inside it). The depth is the lesser of the two, with that side's normal.
+    // from its nearest point towards the sphere's center. Any other mesh: their surfaces cross
+    // (an edge of one passes through a face of the other, beyond what single precision allows;
+    // a mesh wholly inside another is not seen). Its depth and normal then come from planes: the
+    // plane through the obstacle's point nearest to the body's center, facing that center (a
+    // floor's plane, for a box sunk into it), has vertices of the body behind it, and the plane
+    // through the body's point nearest to the obstacle's center vertices of the obstacle; the
+    // lesser depth of the two, with that side's normal.
     std::optional<Seen> overlap_with_obstacle(const Body &b, const Obstacle &o, double t) const {
         Seen seen;
         if (b.sphere) {
@@ -898,7 +900,9 @@ class EventBake {
         const Pose p = pose(b, t);
         const double reach = b.reach * frobenius(p.linear);
         if (glm::length(p.center - o.center) > reach + o.radius) return std::nullopt;
+        const double touching = 1e-6 * reach; // single-precision meshes
         const PlacedMesh body = placed(b, p);
+        if (!surfaces_cross(body, o, touching)) return std::nullopt;
         // How deep the vertices of one are behind the plane of the other's point nearest to q.
         auto behind = [](const std::vector<glm::dvec3> &vertices, const glm::dvec3 &q,
                          const glm::dvec3 &nearest, glm::dvec3 &n) {
@@ -913,14 +917,84 @@ class EventBake {
         glm::dvec3 n_body(0.0), n_obstacle(0.0);
         const double body_depth = behind(body.vertices, p.center, on_obstacle, n_body);
         const double obstacle_depth = behind(o.shape->vertices, o.center, on_body, n_obstacle);
-        const double touching = 1e-6 * reach; // single-precision meshes
-        if (!(body_depth > touching) || !(obstacle_depth > touching)) return std::nullopt;
-        const bool body_side = body_depth <= obstacle_depth;
+        if (!(body_depth > 0.0) && !(obstacle_depth > 0.0)) return std::nullopt;
+        const bool body_side =
+            body_depth > 0.0 && (!(obstacle_depth > 0.0) || body_depth <= obstacle_depth);
         seen.contact.normal = body_side ? n_body : -n_obstacle;
         seen.contact.point = body_side ? on_obstacle : on_body;
         seen.contact.t = t;
-        seen.depth = std::min(body_depth, obstacle_depth);
+        seen.depth = body_side ? body_depth : obstacle_depth;
         return seen;
+    }
+
+    // Whether an edge of one passes through a triangle of the other, its ends on either side of
+    // the triangle's plane by more than `tol` and through its inside (a box resting on a floor
+    // touches it, its edges in or ending on the floor's plane: no crossing).
+    bool surfaces_cross(const PlacedMesh &body, const Obstacle &o, double tol) const {
+        Box common{body.vertices.empty() ? glm::dvec3(0.0) : body.vertices[0],
+                   body.vertices.empty() ? glm::dvec3(0.0) : body.vertices[0]};
+        for (const glm::dvec3 &v : body.vertices) {
+            common.lo = glm::min(common.lo, v);
+            common.hi = glm::max(common.hi, v);
+        }
+        const Box other = o.shape->bounds();
+        common.lo = glm::max(common.lo, other.lo) - glm::dvec3(tol);
+        common.hi = glm::min(common.hi, other.hi) + glm::dvec3(tol);
+        if (common.lo.x > common.hi.x || common.lo.y > common.hi.y || common.lo.z > common.hi.z)
+            return false;
+        auto crosses = [&](const glm::dvec3 &a, const glm::dvec3 &e, const glm::dvec3 &c0,
+                           const glm::dvec3 &c1, const glm::dvec3 &c2) {
+            const glm::dvec3 n = glm::cross(c1 - c0, c2 - c0);
+            if (!(glm::length(n) > 0.0)) return false;
+            const glm::dvec3 u = glm::normalize(n);
+            const double da = glm::dot(u, a - c0), db = glm::dot(u, e - c0);
+            if (!((da > tol && db < -tol) || (da < -tol && db > tol))) return false;
+            // Where it meets the plane, inside the triangle by more than tol from each side (an
+            // edge in a floor's plane meets a resting box's side face on its rim: touching).
+            const glm::dvec3 q = a + (e - a) * (da / (da - db));
+            const glm::dvec3 c[3] = {c0, c1, c2};
+            for (int i = 0; i < 3; ++i) {
+                const glm::dvec3 side = c[(i + 1) % 3] - c[i];
+                if (!(glm::dot(glm::cross(side, q - c[i]), u) > tol * glm::length(side)))
+                    return false;
+            }
+            return true;
+        };
+        auto box_of = [](const glm::dvec3 &a, const glm::dvec3 &e) {
+            return Box{glm::min(a, e), glm::max(a, e)};
+        };
+        // The body's edges through the obstacle's triangles.
+        for (size_t k = 0; k < body.edge_count; ++k) {
+            const glm::dvec3 &a = body.vertices[body.edges[k][0]],
+                             &e = body.vertices[body.edges[k][1]];
+            const Box edge = box_of(a, e);
+            if (!edge.overlaps(common)) continue;
+            for (size_t f = 0; f < o.boxes.size(); ++f)
+                if (edge.overlaps(o.boxes[f]) &&
+                    crosses(a, e, o.corners[3 * f], o.corners[3 * f + 1], o.corners[3 * f + 2]))
+                    return true;
+        }
+        // The obstacle's edges through the body's triangles.
+        std::vector<size_t> near;
+        for (size_t f = 0; f < body.triangle_count; ++f) {
+            const uint32_t *tri = body.triangles + 3 * f;
+            Box box = box_of(body.vertices[tri[0]], body.vertices[tri[1]]);
+            box.lo = glm::min(box.lo, body.vertices[tri[2]]);
+            box.hi = glm::max(box.hi, body.vertices[tri[2]]);
+            if (box.overlaps(common)) near.push_back(f);
+        }
+        for (const auto &edge_ends : o.shape->edges) {
+            const glm::dvec3 &a = o.shape->vertices[edge_ends[0]],
+                             &e = o.shape->vertices[edge_ends[1]];
+            if (!box_of(a, e).overlaps(common)) continue;
+            for (size_t f : near) {
+                const uint32_t *tri = body.triangles + 3 * f;
+                if (crosses(a, e, body.vertices[tri[0]], body.vertices[tri[1]],
+                            body.vertices[tri[2]]))
+                    return true;
+            }
+        }
+        return false;
     }
 
     // An overlapping pair is touching (physics.md): neither moves deeper into the other. Spheres

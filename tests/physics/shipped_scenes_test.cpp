@@ -129,6 +129,13 @@ TEST_CASE("stairs.ani: the cube bounces down the stairs step by step and stays i
     }
     // Every step, from the top one to the floor, in turn.
     CHECK(tops == std::vector<double>{2.5, 2.0, 1.5, 1.0, 0.5, 0.0});
+    // The same baked in slices, as the editor does (a slice starts with the cube over a step's
+    // edge: touching nothing).
+    auto sliced = timeline_of(doc);
+    for (int k = 1; k <= 160; ++k) sliced->bake(std::min(end, 0.05 * k));
+    REQUIRE(sliced->events().size() == events.size());
+    for (size_t k = 0; k < events.size(); ++k)
+        CHECK(sliced->events()[k].t == Approx(events[k].t).margin(1e-9));
     // In view to the end: over the stairs (x in [0, 5], z in [-1, 1]) or the floor just past them.
     for (int k = 0; k <= 800; ++k) {
         const glm::dvec3 c = t->evaluate(end * k / 800.0).models[static_cast<size_t>(cube)].center;
