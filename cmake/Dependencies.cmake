@@ -4,6 +4,17 @@
 find_package(PkgConfig REQUIRED)
 find_package(Threads REQUIRED)
 
+# What the file readers need: meshes (assimp), images (stb), Lua scenes, and GLM. The fuzz
+# build (ANIMATOR_FUZZ, docs/fuzzing.md) builds only the readers, so it stops here.
+find_package(glm REQUIRED)
+find_package(assimp REQUIRED)
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+# Lua built as C++: its errors are exceptions, so C++ destructors run when a scene fails.
+pkg_check_modules(LUA REQUIRED IMPORTED_TARGET lua5.4-c++)
+if(ANIMATOR_FUZZ)
+  return()
+endif()
+
 # Physics: Bullet in double precision, to match the custom solver's doubles.
 pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
 # Windowing and OpenGL.
@@ -11,12 +22,7 @@ find_package(glfw3 3.3 REQUIRED)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL) # EGL: off-screen rendering without a display
 # Dear ImGui (static, with the GLFW and OpenGL3 backends) and stb.
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui stb)
-pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
-find_package(glm REQUIRED)
-find_package(assimp REQUIRED)
 find_package(SFML 2.5 COMPONENTS audio system REQUIRED)
-# Lua built as C++: its errors are exceptions, so C++ destructors run when a scene fails.
-pkg_check_modules(LUA REQUIRED IMPORTED_TARGET lua5.4-c++)
 find_package(Catch2 2 REQUIRED)
 find_package(CLI11 REQUIRED)
 
