@@ -9,6 +9,7 @@ packages=(
   libsfml-dev liblua5.4-dev libstb-dev catch2 libcli11-dev
   libgl-dev xvfb xauth xdotool imagemagick mesa-utils libgl1-mesa-dri
   libegl-dev libegl-mesa0
+  clang libclang-rt-14-dev llvm-14
 )
 
 missing=()
