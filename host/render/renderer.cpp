@@ -261,11 +261,28 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     glEnable(GL_CULL_FACE);
     for (const auto &[depth, m] : transparent_) draw_transparent(m, selected.count(m) > 0);
     glDisable(GL_CULL_FACE);
+    if (options_.selection_outline && !selected.empty()) draw_selection_outline(selected, target.width, target.height);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     glBindVertexArray(0);
     glUseProgram(0);
     glActiveTexture(GL_TEXTURE0);
+}
+
+void Renderer::draw_selection_outline(const std::set<int> &selected, int width, int height) {
+    if (!outline_) outline_ = std::make_unique<SelectionOutline>();
+    current_program_ = nullptr; // the outline binds its own program
+    const int count = static_cast<int>(std::min(models_.size(), world_.size()));
+    auto each = [&](auto &&draw) {
+        for (int m : selected)
+            if (m >= 0 && m < count && gpu_meshes_[static_cast<size_t>(m)] && visible(m))
+                draw(*gpu_meshes_[static_cast<size_t>(m)], glm::mat4(world_[static_cast<size_t>(m)]));
+    };
+    outline_->begin(glm::mat4(view_projection_), width, height);
+    // Every silhouette first, so one selected model's ring never covers another selected one.
+    each([&](const GpuMesh &mesh, const glm::mat4 &world) { outline_->mark(mesh, world); });
+    each([&](const GpuMesh &mesh, const glm::mat4 &world) { outline_->outline(mesh, world, options_.outline_style); });
+    outline_->end();
 }
 
 int Renderer::pick(const Frame &frame, int width, int height, int x, int y) {

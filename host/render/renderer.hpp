@@ -19,6 +19,7 @@
 #include "render/gpu_mesh.hpp"
 #include "render/gpu_texture.hpp"
 #include "render/picking_pass.hpp"
+#include "render/selection_outline.hpp"
 #include "render/shading_programs.hpp"
 #include "render/uniform_values.hpp"
 #include "timeline/timeline.hpp"
@@ -43,6 +44,9 @@ struct RenderOptions {
     glm::vec3 light_colour{1.0f};
     glm::vec3 ambient{0.2f};
     glm::vec4 selected_tint{1.0f, 0.9f, 0.0f, 0.6f}; // yellow, and how much of it
+    // A ring around each selected model that reads on any colour (selection_outline.hpp).
+    bool selection_outline = true;
+    OutlineStyle outline_style;
     double near_plane = 0.1, far_plane = 1000.0;
 };
 
@@ -114,6 +118,8 @@ class Renderer {
     std::optional<GpuTexture> background_cube_; // reflection and refraction without a skybox
     std::unique_ptr<GpuMesh> skybox_cube_;
     std::unique_ptr<PickingPass> picking_;
+    std::unique_ptr<SelectionOutline> outline_;
+    void draw_selection_outline(const std::set<int> &selected, int width, int height);
 
     // Per frame, kept to reuse their storage.
     std::vector<glm::dmat4> world_;

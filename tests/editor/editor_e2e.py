@@ -57,6 +57,7 @@ MODEL_PANEL = (910, 10, 1270, 570)  # the Model Interface: x0, y0, x1, y1 at 128
 MODEL_GRAVITY_CHECKBOX = (927, 109)  # in it: Physics > Gravity (Dynamics is at (927, 86))
 
 WIDTH, HEIGHT = 1280, 720
+OUTLINE_ORANGE = (255, 140, 0)
 BACKGROUND = (round(0.16 * 255), round(0.17 * 255), round(0.20 * 255))  # (41, 43, 51)
 
 # Waits end on the editor's own signals (its title, the lines it prints; with
@@ -619,6 +620,11 @@ def check_selected_tint(name, mean, selected):
         check(b > r + 40 and b > g + 40, '%s: the unselected ball is not its own blue (mean colour %s)' % (name, mean))
 
 
+def outline_pixels(img):
+    """The selection outline's orange band (render/selection_outline.hpp) in the 3D view."""
+    return len([1 for _, _, px in img.region(*VIEW_BOX) if near(px, OUTLINE_ORANGE, 40)])
+
+
 def model_panel_shown(img):
     """The Model Interface window's title bar and body are drawn at the right."""
     x0, y0, x1, y1 = MODEL_PANEL
@@ -703,11 +709,14 @@ def case_select_click(c):
     img, n0, x0, y0, mean = ball_on_screen(e, 'before')
     check(abs(x0 - 640) < 4 and abs(y0 - 360) < 4, 'the ball is not at the centre of the view: (%.0f, %.0f)' % (x0, y0))
     check_selected_tint('before', mean, False)
+    check(outline_pixels(img) < 10, 'an outline before anything was selected')
     check(not model_panel_shown(img), 'a Model Interface is shown before anything was selected')
 
     e.click(round(x0), round(y0))
     img, n, x, y, mean = ball_on_screen(e, 'selected')
     check_selected_tint('after the click', mean, True)
+    # The outline around it, which reads on any colour (the tint alone is lost on yellow).
+    check(outline_pixels(img) > 300, 'no selection outline around the ball (%d orange pixels)' % outline_pixels(img))
     check(abs(x - x0) < 2 and abs(y - y0) < 2, 'selecting moved the ball')
     check(model_panel_shown(img), 'no Model Interface after selecting the ball')
     check(e.title() == 'animator - ball.ani', 'selecting is not an edit, yet the title is %r' % e.title())
@@ -715,6 +724,7 @@ def case_select_click(c):
     e.click(500, 650)  # empty space
     img, n, x, y, mean = ball_on_screen(e, 'deselected')
     check_selected_tint('after a click on empty space', mean, False)
+    check(outline_pixels(img) < 10, 'the outline stays after deselecting (%d orange pixels)' % outline_pixels(img))
     check(not model_panel_shown(img), 'the Model Interface stays after deselecting')
 
     e.click(round(x0), round(y0), ctrl=True)

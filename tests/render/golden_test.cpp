@@ -145,7 +145,7 @@ TEST_CASE("golden: cel shading with 4 bands and the outline (shading.phong param
     check("cel_outline", doc);
 }
 
-TEST_CASE("golden: a selected model is tinted yellow") {
+TEST_CASE("golden: a selected model is tinted yellow and outlined") {
     Document doc = make_document(make_camera({0, 1.2, 6}, 0, -10));
     add_floor(doc);
     for (int i = 0; i < 3; ++i)
