@@ -185,13 +185,15 @@ class EventBake {
     EventBake(const ani_physics_scene &scene, double t_begin, double t_end,
               const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options,
               OverlapMemory &memory)
-        : scene_(scene), t_begin_(t_begin), t_end_(t_end), sink_(sink), host_(host),
+        : scene_(&scene), t_begin_(t_begin), t_end_(t_end), sink_(&sink), host_(host),
           options_(options), gravity_(vec(gravity_vector(scene.gravity, scene.down_axis))),
           memory_(memory) {
         memory_.begin(t_begin);
+        set_horizon();
     }
 
     void run() {
+        fingerprint_ = fingerprint(*scene_);
         classify();
         build_broad_phase();
         queue_ = std::make_unique<EventQueue>(bodies_.size());
@@ -202,7 +204,41 @@ class EventBake {
                 try_settle(static_cast<int>(i), t_begin_);
             }
         for (size_t i = 0; i < bodies_.size(); ++i) predict(static_cast<int>(i), t_begin_);
+        advance_to_end();
+    }
 
+    // Whether a bake of `scene` from t_begin is the next slice of this one: it starts where this
+    // one stopped, and the scene is the same (the models, their meshes, physics flags, keyed
+    // spans, key times and the states at their keys; gravity). The host rebuilds the scene for
+    // every call, and an edit before where the bake stopped makes it bake from earlier.
+    bool continues(const ani_physics_scene &scene, double t_begin,
+                   const BakeOptions &options) const {
+        return t_begin == t_end_ && options.broad_phase == options_.broad_phase &&
+               fingerprint(scene) == fingerprint_;
+    }
+
+    // The next slice, [t_end of the last, t_end]: the events predicted beyond the last slice's
+    // end are still valid, so it goes on from them, as one bake would (issue 16: the editor's
+    // slices each started over, and redid the predictions and advancements of every body).
+    void resume(const ani_physics_scene &scene, double t_end, const ani_bake_sink &sink) {
+        scene_ = &scene;
+        sink_ = &sink;
+        t_begin_ = t_end_;
+        t_end_ = t_end;
+        set_horizon();
+        for (uint32_t i = 0; i < scene_->model_count; ++i)
+            if (!is_body_[i]) emit_unmoved(i);
+        advance_to_end();
+    }
+
+  private:
+    // Predictions look past the slice's end (the slices that follow use them): as far again as
+    // has been baked, at least 10 s, so that a bake cut into slices predicts a body again only
+    // a few times more than one whole bake (each time the baked span doubles).
+    void set_horizon() { horizon_ = std::max(horizon_, t_end_ + std::max(10.0, t_end_)); }
+
+    // Processes the events up to t_end and reports every body's motion to t_end.
+    void advance_to_end() {
         std::size_t events_at_once = 0;
         double last_event = -kNever;
         while (!bodies_.empty() && queue_->top_time() <= t_end_) {
@@ -216,9 +252,9 @@ class EventBake {
                                    "models keep colliding at t = " + std::to_string(now) +
                                        " s without moving apart");
             handle(i, event, now);
-            if (sink_.progress && ++reports_ % 1024 == 0 &&
-                !sink_.progress(sink_.context,
-                                (now - t_begin_) / std::max(t_end_ - t_begin_, 1e-300)))
+            if (sink_->progress && ++reports_ % 1024 == 0 &&
+                !sink_->progress(sink_->context,
+                                 (now - t_begin_) / std::max(t_end_ - t_begin_, 1e-300)))
                 throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
         }
         for (Body &b : bodies_) {
@@ -230,13 +266,75 @@ class EventBake {
         report_counts();
     }
 
-  private:
+    // What a scene must keep for a bake to go on with it.
+    struct ModelPrint {
+        const ani_mesh_view *mesh = nullptr;
+        const double *positions = nullptr;
+        uint32_t vertex_count = 0, triangle_count = 0, group = 0;
+        int32_t dynamics = 0, gravity = 0;
+        double mass = 0.0;
+        std::vector<double> spans, keys, key_states;
+        bool operator==(const ModelPrint &o) const {
+            return mesh == o.mesh && positions == o.positions && vertex_count == o.vertex_count &&
+                   triangle_count == o.triangle_count && group == o.group &&
+                   dynamics == o.dynamics && gravity == o.gravity && mass == o.mass &&
+                   spans == o.spans && keys == o.keys && key_states == o.key_states;
+        }
+    };
+    struct ScenePrint {
+        double gravity = 0.0;
+        int32_t down_axis = 0;
+        std::vector<ModelPrint> models;
+        bool operator==(const ScenePrint &o) const {
+            return gravity == o.gravity && down_axis == o.down_axis && models == o.models;
+        }
+    };
+
+    static ScenePrint fingerprint(const ani_physics_scene &scene) {
+        ScenePrint print;
+        print.gravity = scene.gravity;
+        print.down_axis = scene.down_axis;
+        for (uint32_t i = 0; i < scene.model_count; ++i) {
+            const ani_physics_model &m = scene.models[i];
+            ModelPrint p;
+            p.mesh = m.mesh;
+            if (m.mesh) {
+                p.positions = m.mesh->positions;
+                p.vertex_count = m.mesh->vertex_count;
+                p.triangle_count = m.mesh->triangle_count;
+            }
+            p.group = m.group;
+            if (m.desc) {
+                p.dynamics = m.desc->dynamics;
+                p.gravity = m.desc->gravity;
+                p.mass = m.desc->mass;
+            }
+            for (uint32_t k = 0; k < m.keyed_span_count; ++k)
+                p.spans.insert(p.spans.end(), {m.keyed_spans[k].begin, m.keyed_spans[k].end});
+            const bool has_keys =
+                m.struct_size >= offsetof(ani_physics_model, key_count) + sizeof(m.key_count) &&
+                m.key_times;
+            for (uint32_t k = 0; has_keys && k < m.key_count; ++k) {
+                p.keys.push_back(m.key_times[k]);
+                ani_model_state s{};
+                ani_vec3 v{};
+                if (scene.evaluate_keyed(scene.host_context, i, m.key_times[k], &s, &v) != ANI_OK)
+                    p.key_states.push_back(std::nan(""));
+                p.key_states.insert(p.key_states.end(),
+                                    {s.center.x, s.center.y, s.center.z, s.angles.x, s.angles.y,
+                                     s.angles.z, s.scale.x, s.scale.y, s.scale.z, v.x, v.y, v.z});
+            }
+            print.models.push_back(std::move(p));
+        }
+        return print;
+    }
+
     // Sorts the models: static ones with a mesh are obstacles; spheres that can move and models
     // with a mesh that are keyed during the bake are bodies; the rest (jointed parts, models
     // without a mesh, free models that are not spheres) move without collisions.
     void classify() {
-        for (uint32_t i = 0; i < scene_.model_count; ++i) {
-            const ani_physics_model &m = scene_.models[i];
+        for (uint32_t i = 0; i < scene_->model_count; ++i) {
+            const ani_physics_model &m = scene_->models[i];
             if (!m.desc) throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "a model has no description");
             const ani_time_span span =
                 m.keyed_span_count ? m.keyed_spans[0] : ani_time_span{t_begin_, t_begin_};
@@ -255,16 +353,16 @@ class EventBake {
             const bool keyed_here = !free_now && span.end > t_begin_ && !held_still;
 
             // A static model (it never moves again) is an obstacle made of its triangles.
+            is_body_.push_back(false);
             if (!movable && (free_now || held_still) && solid) {
                 add_obstacle(i, t_begin_);
-                if (held_still) emit_keyed(i, t_begin_, keyed_until);
-                emit_free(i, start_of(i, held_still ? keyed_until : t_begin_),
-                          held_still ? keyed_until : t_begin_);
+                emit_unmoved(i);
                 continue;
             }
             const std::optional<double> radius =
                 sphere_radius(i, free_now ? t_begin_ : keyed_until);
             if (solid && (movable || keyed_here)) {
+                is_body_.back() = true;
                 Body b;
                 b.model = i;
                 b.sphere = radius.has_value();
@@ -288,22 +386,34 @@ class EventBake {
                     body.keyed_from = t_begin_;
                     body.active = true;
                 }
-                body.path.p = body.keyed() ? vec(keyed_state(scene_, i, t_begin_, nullptr).center)
+                body.path.p = body.keyed() ? vec(keyed_state(*scene_, i, t_begin_, nullptr).center)
                                            : body.path.p;
 
                 continue;
             }
-            if (keyed_until > t_begin_) emit_keyed(i, t_begin_, keyed_until);
-            if (!(free_now || span.end < t_end_)) continue; // keyed throughout this bake
-            emit_free(i, start_of(i, free_now ? t_begin_ : keyed_until),
-                      free_now ? t_begin_ : keyed_until);
+            emit_unmoved(i);
         }
+    }
+
+    // The motion of a model that is not a body over [t_begin, t_end] (in every slice of a bake):
+    // a static model held by its keys, then at rest; any other model keyed, then free without
+    // collisions.
+    void emit_unmoved(uint32_t i) {
+        const ani_physics_model &m = scene_->models[i];
+        const ani_time_span span =
+            m.keyed_span_count ? m.keyed_spans[0] : ani_time_span{t_begin_, t_begin_};
+        const double keyed_until = std::min(std::max(span.end, t_begin_), t_end_);
+        const bool free_now = span.end <= t_begin_;
+        if (keyed_until > t_begin_) emit_keyed(i, t_begin_, keyed_until);
+        if (!(free_now || span.end < t_end_)) return; // keyed throughout this slice
+        emit_free(i, start_of(i, free_now ? t_begin_ : keyed_until),
+                  free_now ? t_begin_ : keyed_until);
     }
 
     // Whether a model's keys from t_begin to its last key all place it the same way and leave it
     // still (checked at each key and half-way between keys).
     bool keys_hold_still(uint32_t i, double last) const {
-        const ani_physics_model &m = scene_.models[i];
+        const ani_physics_model &m = scene_->models[i];
         if (!(m.struct_size >= offsetof(ani_physics_model, key_count) + sizeof(m.key_count) &&
               m.key_times))
             return false;
@@ -314,13 +424,13 @@ class EventBake {
                 times.push_back(m.key_times[k]);
             }
         glm::dvec3 v0;
-        const ani_model_state first = keyed_state(scene_, i, t_begin_, &v0);
+        const ani_model_state first = keyed_state(*scene_, i, t_begin_, &v0);
         auto same = [](const ani_vec3 &a, const ani_vec3 &b) {
             return a.x == b.x && a.y == b.y && a.z == b.z;
         };
         for (double t : times) {
             glm::dvec3 v;
-            const ani_model_state s = keyed_state(scene_, i, t, &v);
+            const ani_model_state s = keyed_state(*scene_, i, t, &v);
             if (v != glm::dvec3(0.0) || !same(s.center, first.center) ||
                 !same(s.angles, first.angles) || !same(s.scale, first.scale))
                 return false;
@@ -331,14 +441,14 @@ class EventBake {
     // The state a model is in at t: the host's cache where a resumed bake starts, otherwise its
     // keys' (physics.md: where and how fast it leaves them).
     ani_body_state start_of(uint32_t i, double t) {
-        const ani_physics_model &m = scene_.models[i];
+        const ani_physics_model &m = scene_->models[i];
         if (t == t_begin_ && m.start.motion != ANI_MOTION_KEYED) return m.start;
         return leaving_keys(i, t);
     }
 
     // The first of the model's keys after t (the end of its keys if none is in between).
     double next_key(uint32_t i, double t) const {
-        const ani_physics_model &m = scene_.models[i];
+        const ani_physics_model &m = scene_->models[i];
         if (m.struct_size >= offsetof(ani_physics_model, key_count) + sizeof(m.key_count) &&
             m.key_times)
             for (uint32_t k = 0; k < m.key_count; ++k)
@@ -347,18 +457,18 @@ class EventBake {
     }
 
     std::optional<double> sphere_radius(uint32_t i, double t) {
-        const ani_physics_model &m = scene_.models[i];
+        const ani_physics_model &m = scene_->models[i];
         if (!m.mesh || !m.mesh->is_sphere) return std::nullopt;
         if (glm::length(vec(m.mesh->bound_center)) > 1e-9 * m.mesh->bound_radius)
             return std::nullopt;
-        const ani_model_state s = keyed_state(scene_, i, t, nullptr);
+        const ani_model_state s = keyed_state(*scene_, i, t, nullptr);
         if (!uniform(s.scale)) return std::nullopt;
         return m.mesh->bound_radius * s.scale.x;
     }
 
     void add_obstacle(uint32_t i, double t) {
-        const ani_mesh_view &mesh = *scene_.models[i].mesh;
-        const ani_model_state state = keyed_state(scene_, i, t, nullptr);
+        const ani_mesh_view &mesh = *scene_->models[i].mesh;
+        const ani_model_state state = keyed_state(*scene_, i, t, nullptr);
         const glm::dmat3 linear = linear_part(state);
         Obstacle o;
         o.model = i;
@@ -382,7 +492,7 @@ class EventBake {
             std::all_of(o.normals.begin(), o.normals.end(),
                         [](const glm::dvec3 &n) { return n == glm::dvec3(0.0); }))
             throw ani::Failure(ANI_ERR_INVALID_ARGUMENT,
-                               std::string("model '") + name_of(scene_.models[i]) +
+                               std::string("model '") + name_of(scene_->models[i]) +
                                    "' has a mesh without area (every triangle is degenerate)");
         glm::dvec3 sum(0.0);
         for (const auto &c : o.corners) sum += c;
@@ -399,7 +509,7 @@ class EventBake {
     std::shared_ptr<const MeshShape> build_shape(uint32_t i, const ani_vec3 &center,
                                                  const glm::dmat3 &linear,
                                                  const glm::dvec3 &origin) const {
-        const ani_mesh_view &mesh = *scene_.models[i].mesh;
+        const ani_mesh_view &mesh = *scene_->models[i].mesh;
         std::vector<glm::dvec3> vertices;
         vertices.reserve(mesh.vertex_count);
         for (uint32_t k = 0; k < mesh.vertex_count; ++k) {
@@ -415,7 +525,7 @@ class EventBake {
                 MeshShape::build(std::move(vertices), std::move(triangles)));
         } catch (const std::exception &e) {
             throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, std::string("model '") +
-                                                             name_of(scene_.models[i]) +
+                                                             name_of(scene_->models[i]) +
                                                              "': " + e.what());
         }
     }
@@ -480,7 +590,7 @@ class EventBake {
     // Free from t with the given state: the closed form of physics.md's four cases.
     void activate(Body &b, double t, const ani_body_state &start) {
         const ani_motion_segment s =
-            free_segment(b.model, *scene_.models[b.model].desc, start, t, t_end_, ani(gravity_));
+            free_segment(b.model, *scene_->models[b.model].desc, start, t, t_end_, ani(gravity_));
         b.mode = Body::Mode::kFree;
         b.active = true;
         if (b.sphere)
@@ -493,7 +603,7 @@ class EventBake {
         b.support_edges.clear();
         b.shape.reset();
         if (!b.sphere && t >= b.keys_end) { // its keys no longer turn or scale it
-            const ani_model_state state = keyed_state(scene_, b.model, t, nullptr);
+            const ani_model_state state = keyed_state(*scene_, b.model, t, nullptr);
             b.shape =
                 build_shape(b.model, ani(glm::dvec3(0.0)), linear_part(state), glm::dvec3(0.0));
         }
@@ -510,7 +620,7 @@ class EventBake {
     // The state a model leaves its keys with at time t (physics.md: where and how fast).
     ani_body_state leaving_keys(uint32_t i, double t) {
         glm::dvec3 v;
-        const ani_model_state s = keyed_state(scene_, i, t, &v);
+        const ani_model_state s = keyed_state(*scene_, i, t, &v);
         ani_body_state state{};
         state.motion = ANI_MOTION_KEYED;
         state.center = s.center;
@@ -525,12 +635,14 @@ class EventBake {
         if (!finite(s.p0) || !finite(s.v0) || !finite(s.a) || !std::isfinite(s.t0) ||
             !std::isfinite(s.t1))
             throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
-                                                   name_of(scene_.models[s.model]) +
+                                                   name_of(scene_->models[s.model]) +
                                                    "' would move to a value that is not finite");
-        sink_.segment(sink_.context, &s);
+        sink_->segment(sink_->context, &s);
     }
 
+    // (A body keyed since before this slice reports its keyed span from where the slice starts.)
     void emit_keyed(uint32_t i, double t0, double t1) {
+        t0 = std::max(t0, t_begin_);
         if (!(t1 > t0)) return;
         ani_motion_segment s{};
         s.model = i;
@@ -542,18 +654,21 @@ class EventBake {
 
     void emit_free(uint32_t i, const ani_body_state &start, double free_at) {
         if (free_at >= t_end_) return;
-        emit(free_segment(i, *scene_.models[i].desc, start, free_at, t_end_, ani(gravity_)));
+        emit(free_segment(i, *scene_->models[i].desc, start, free_at, t_end_, ani(gravity_)));
     }
 
+    // Reports a body's free segment up to t: from where it started, or from where this slice
+    // starts for a segment that began in an earlier slice (which reported its part).
     void close_segment(Body &b, double t) {
-        if (t <= b.t0 && !(t == t_end_ && b.t0 == t_end_)) return;
+        const double from = std::max(b.t0, t_begin_);
+        if (t <= from && !(t == t_end_ && from == t_end_)) return;
         ani_motion_segment s{};
         s.model = b.model;
         s.motion = b.motion;
-        s.t0 = b.t0;
+        s.t0 = from;
         s.t1 = t;
-        s.p0 = ani(b.path.p);
-        s.v0 = ani(b.path.v);
+        s.p0 = ani(from == b.t0 ? b.path.p : b.path.at(from - b.t0));
+        s.v0 = ani(from == b.t0 ? b.path.v : b.path.velocity(from - b.t0));
         s.a = ani(b.path.a);
         emit(s);
     }
@@ -578,7 +693,7 @@ class EventBake {
     // scale (which always come from the keys).
     Pose pose(const Body &b, double t) const {
         glm::dvec3 v;
-        const ani_model_state s = keyed_state(scene_, b.model, t, &v);
+        const ani_model_state s = keyed_state(*scene_, b.model, t, &v);
         Pose p;
         p.linear = linear_part(s);
         if (b.keyed()) {
@@ -591,7 +706,7 @@ class EventBake {
         return p;
     }
 
-    const ani_mesh_view &mesh_of(const Body &b) const { return *scene_.models[b.model].mesh; }
+    const ani_mesh_view &mesh_of(const Body &b) const { return *scene_->models[b.model].mesh; }
 
     glm::dvec3 vertex(const ani_mesh_view &mesh, uint32_t k) const {
         const double *p = mesh.positions + 3 * static_cast<size_t>(k);
@@ -772,7 +887,7 @@ class EventBake {
     // A sphere's radius at a pose: a keyed sphere's scale may change under its keys.
     double radius_at(const Body &b, const Pose &p) const {
         if (!b.keyed()) return b.radius;
-        return scene_.models[b.model].mesh->bound_radius * frobenius(p.linear) / std::sqrt(3.0);
+        return scene_->models[b.model].mesh->bound_radius * frobenius(p.linear) / std::sqrt(3.0);
     }
 
     // Whether a sphere is closer to an obstacle than `gap` (negative: overlapping by more).
@@ -1079,8 +1194,8 @@ class EventBake {
         const uint32_t a = bodies_[static_cast<size_t>(i)].model, b = model_of(other);
         if (memory_.reported_before(a, b, t) || !reported_.insert(pair_key(i, other)).second)
             return;
-        log_warning("models '" + std::string(name_of(scene_.models[a])) + "' and '" +
-                    name_of(scene_.models[b]) + "' overlap at t = " + short_number(t) + " s by " +
+        log_warning("models '" + std::string(name_of(scene_->models[a])) + "' and '" +
+                    name_of(scene_->models[b]) + "' overlap at t = " + short_number(t) + " s by " +
                     short_number(depth) +
                     " m: treated as touching (neither moves deeper into the other; approaching, "
                     "they collide at once; moving apart, they are let go)");
@@ -1198,7 +1313,7 @@ class EventBake {
             set_prediction(i, next);
             return;
         }
-        double limit = std::min(t_end_, next.t) - now;
+        double limit = std::min(horizon_, next.t) - now;
         if (b.in_grid)
             if (auto exit = first_exit(from_now(b, now), grid_->bounds(b.cell), limit)) {
                 limit = exit->t;
@@ -1237,6 +1352,8 @@ class EventBake {
         else
             predict_obstacles(i, now, limit, next); // spheres exact; keyed models by advancement
         if (b.ignored_obstacles > 0 || b.overlapped_obstacles > 0) recheck_obstacles(i, now, next);
+        // Nothing within the window: it looks again at its end.
+        if (next.t > horizon_) next = predicted(horizon_, EventKind::kRecheck);
         set_prediction(i, next);
     }
 
@@ -1799,8 +1916,8 @@ class EventBake {
                                   : glm::dvec3(0.0),
                     !free.dynamics);
         } else if (b.dynamics && o.dynamics) {
-            const double ma = scene_.models[b.model].desc->mass,
-                         mb = scene_.models[o.model].desc->mass;
+            const double ma = scene_->models[b.model].desc->mass,
+                         mb = scene_->models[o.model].desc->mass;
             const auto [va, vb] = elastic_exchange(ma, v, mb, vo, n);
             restart(b, t, va, false);
             restart(o, t, vb, false);
@@ -1823,15 +1940,16 @@ class EventBake {
         };
         if (!finite(e.normal) || !finite(e.point) || !std::isfinite(e.speed) || !std::isfinite(e.t))
             throw ani::Failure(ANI_ERR_FAILED, std::string("the contact of models '") +
-                                                   name_of(scene_.models[e.a]) + "' and '" +
-                                                   name_of(scene_.models[e.b]) + "' is not finite");
+                                                   name_of(scene_->models[e.a]) + "' and '" +
+                                                   name_of(scene_->models[e.b]) +
+                                                   "' is not finite");
         ++count_.collisions;
-        if (sink_.event) sink_.event(sink_.context, &e);
+        if (sink_->event) sink_->event(sink_->context, &e);
     }
 
     // The work counted, for `animator bake --stats` (ABI 1.1 hosts).
     void report_counts() {
-        if (!sink_.count) return;
+        if (!sink_->count) return;
         const std::pair<const char *, std::size_t> counts[] = {
             {"pair tests done", count_.done},
             {"pair tests skipped", count_.skipped},
@@ -1843,8 +1961,12 @@ class EventBake {
             {"releases from keys", count_.releases},
             {"mesh feature tests", count_.mesh_tests},
         };
-        for (const auto &[name, value] : counts)
-            sink_.count(sink_.context, name, static_cast<double>(value));
+        // Each slice reports its own work: the host adds them up.
+        for (size_t k = 0; k < std::size(counts); ++k) {
+            const double value = static_cast<double>(counts[k].second);
+            sink_->count(sink_->context, counts[k].first, value - counted_[k]);
+            counted_[k] = value;
+        }
     }
 
     void log_warning(const std::string &message) {
@@ -1852,9 +1974,9 @@ class EventBake {
             host_->log(host_, ANI_LOG_WARNING, "physics.custom", message.c_str());
     }
 
-    const ani_physics_scene &scene_;
+    const ani_physics_scene *scene_; // this call's (the host builds it anew for each)
     double t_begin_, t_end_;
-    const ani_bake_sink &sink_;
+    const ani_bake_sink *sink_;
     const ani_host *host_;
     BakeOptions options_;
     glm::dvec3 gravity_;
@@ -1877,15 +1999,45 @@ class EventBake {
                     collisions = 0, advancements = 0, releases = 0, mesh_tests = 0;
     } count_;
     std::size_t reports_ = 0;
+    std::array<double, 9> counted_{}; // the counts reported by the earlier slices
+    std::vector<bool> is_body_;       // per model: a body (the others are reported each slice)
+    double horizon_ = 0.0;            // how far predictions look
+    ScenePrint fingerprint_;          // the scene the bake goes on with
 };
 
 } // namespace
 
+struct BakeInProgress::State {
+    OverlapMemory overlaps;
+    std::unique_ptr<EventBake> bake; // the last slice's, to go on with
+};
+
+BakeInProgress::BakeInProgress() : state_(std::make_unique<State>()) {}
+BakeInProgress::~BakeInProgress() = default;
+
 void bake_scene(const ani_physics_scene &scene, double t_begin, double t_end,
                 const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options,
-                OverlapMemory *memory) {
-    OverlapMemory one_bake;
-    EventBake(scene, t_begin, t_end, sink, host, options, memory ? *memory : one_bake).run();
+                BakeInProgress *in_progress) {
+    if (!in_progress) {
+        OverlapMemory one_bake;
+        EventBake(scene, t_begin, t_end, sink, host, options, one_bake).run();
+        return;
+    }
+    auto &state = *in_progress->state_;
+    try {
+        if (state.bake && state.bake->continues(scene, t_begin, options)) {
+            state.bake->resume(scene, t_end, sink);
+            return;
+        }
+        state.bake.reset();
+        auto bake =
+            std::make_unique<EventBake>(scene, t_begin, t_end, sink, host, options, state.overlaps);
+        bake->run();
+        state.bake = std::move(bake);
+    } catch (...) {
+        state.bake.reset(); // cancelled or failed half-way: the next bake starts afresh
+        throw;
+    }
 }
 
 } // namespace physics_custom

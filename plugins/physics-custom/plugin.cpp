@@ -24,8 +24,8 @@ const ani_param_descriptor kParams[] = {
 struct Instance {
     const ani_host *host = nullptr;
     ani::ParamStore params{kParams, sizeof(kParams) / sizeof(kParams[0])};
-    // The bake's overlapping pairs, from one slice to the next (overlap_memory.hpp).
-    physics_custom::OverlapMemory overlaps;
+    // What one slice of a bake leaves to the next (event_bake.hpp).
+    physics_custom::BakeInProgress in_progress;
 };
 
 void *create(const ani_host *host, ani_status *status) {
@@ -52,7 +52,7 @@ ani_status_code bake(void *instance, const ani_physics_scene *scene, double t_be
         Instance &self = *static_cast<Instance *>(instance);
         physics_custom::BakeOptions options;
         options.broad_phase = static_cast<physics_custom::BroadPhase>(static_cast<int>(self.params.number("broad_phase")));
-        physics_custom::bake_scene(*scene, t_begin, t_end, *sink, self.host, options, &self.overlaps);
+        physics_custom::bake_scene(*scene, t_begin, t_end, *sink, self.host, options, &self.in_progress);
         if (sink->progress && !sink->progress(sink->context, 1.0))
             throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
     });
