@@ -62,4 +62,14 @@ for dx in 20 40 60 80 100 120 140 160; do
 done
 xdotool mouseup 3
 shot 05-new-keyframe
-echo "wrote 5 screenshots to $out"
+xdotool key f                  # the free view, framing the selected cube
+sleep 0.4
+xdotool mousemove --window "$win" 700 600 keydown alt mousedown 1   # Alt + left drag: orbit
+for dx in 15 30 45 60 75 90; do
+  xdotool mousemove --window "$win" $((700 + dx)) $((600 + dx * 2 / 3))
+  sleep 0.05
+done
+xdotool mouseup 1 keyup alt
+xdotool mousemove --window "$win" 640 650 click 5 click 5 click 5 click 5   # the wheel: zoom out
+shot 06-free-view
+echo "wrote 6 screenshots to $out"

@@ -253,7 +253,16 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
         say(r.message, !r.ok);
     }
     // The status line: how fast the editor draws and how far the physics is baked.
-    ImGui::TextDisabled("%s  |  %s", frame_rate_.c_str(), bake_status(session).c_str());
+    // The frame rate beside the bake status where the panel is wide enough, else under it.
+    const std::string bake = bake_status(session), beside = "|  " + frame_rate_;
+    ImGui::TextDisabled("%s", bake.c_str());
+    const float room = ImGui::GetContentRegionAvail().x - ImGui::GetItemRectSize().x;
+    if (room > ImGui::CalcTextSize(beside.c_str()).x + 12.0f) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", beside.c_str());
+    } else {
+        ImGui::TextDisabled("%s", frame_rate_.c_str());
+    }
     if (!message_.empty()) {
         if (message_error_) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
         ImGui::TextWrapped("%s", message_.c_str());

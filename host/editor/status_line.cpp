@@ -22,7 +22,7 @@ std::string bake_status(const EditorSession &session) {
     if (!session.bake_error().empty()) return backend + ": bake failed at " + seconds(baked);
     if (session.baking()) {
         // Tenths of a second: the text changes as the bar moves, not on every slice.
-        return backend + ": baking, " + seconds(std::floor(baked * 10.0) / 10.0) + " of " + seconds(session.max_time());
+        return backend + ": baked to " + seconds(std::floor(baked * 10.0) / 10.0) + " of " + seconds(session.max_time());
     }
     return backend + ": baked, " + seconds(session.max_time());
 }

@@ -1,5 +1,5 @@
 // The status line under the Animator Interface's buttons: how fast the editor draws, and how
-// far the physics is baked, in words a user can read at a glance ("physics.custom: baking,
+// far the physics is baked, in words a user can read at a glance ("physics.custom: baked to
 // 12.3 s of 20 s"). The texts are pure functions of the session, so they are tested without a
 // window (tests/session/status_line_test.cpp).
 #pragma once
@@ -11,7 +11,7 @@
 
 namespace animator {
 
-// "physics.custom: baked, 20 s", "physics.custom: baking, 12.3 s of 20 s", or
+// "physics.custom: baked, 20 s", "physics.custom: baked to 12.3 s of 20 s", or
 // "physics.custom: bake failed at 3.2 s" (the reason is shown apart, it can be long).
 std::string bake_status(const EditorSession &session);
 

@@ -21,7 +21,7 @@ TEST_CASE("the bake status says the backend and how far it baked, then that it i
     EditorSession s(env);
     std::string error;
     REQUIRE(s.open(drop_ani(), error));
-    CHECK(bake_status(s) == "physics.custom: baking, 0 s of 10 s");
+    CHECK(bake_status(s) == "physics.custom: baked to 0 s of 10 s");
     const ScreenState before = screen_state(s, "");
     while (s.bake_some(0.05)) {
     }
