@@ -9,6 +9,7 @@
 #include "overlap_memory.hpp"
 #include "polynomial.hpp"
 #include "response.hpp"
+#include "scene_print.hpp"
 #include "time_of_impact.hpp"
 
 #include <animator/plugin_cpp.hpp>
@@ -193,7 +194,7 @@ class EventBake {
     }
 
     void run() {
-        fingerprint_ = fingerprint(*scene_);
+        fingerprint_ = scene_print(*scene_);
         classify();
         build_broad_phase();
         queue_ = std::make_unique<EventQueue>(bodies_.size());
@@ -214,7 +215,7 @@ class EventBake {
     bool continues(const ani_physics_scene &scene, double t_begin,
                    const BakeOptions &options) const {
         return t_begin == t_end_ && options.broad_phase == options_.broad_phase &&
-               fingerprint(scene) == fingerprint_;
+               scene_print(scene) == fingerprint_;
     }
 
     // The next slice, [t_end of the last, t_end]: the events predicted beyond the last slice's
@@ -264,69 +265,6 @@ class EventBake {
                 close_segment(b, t_end_);
         }
         report_counts();
-    }
-
-    // What a scene must keep for a bake to go on with it.
-    struct ModelPrint {
-        const ani_mesh_view *mesh = nullptr;
-        const double *positions = nullptr;
-        uint32_t vertex_count = 0, triangle_count = 0, group = 0;
-        int32_t dynamics = 0, gravity = 0;
-        double mass = 0.0;
-        std::vector<double> spans, keys, key_states;
-        bool operator==(const ModelPrint &o) const {
-            return mesh == o.mesh && positions == o.positions && vertex_count == o.vertex_count &&
-                   triangle_count == o.triangle_count && group == o.group &&
-                   dynamics == o.dynamics && gravity == o.gravity && mass == o.mass &&
-                   spans == o.spans && keys == o.keys && key_states == o.key_states;
-        }
-    };
-    struct ScenePrint {
-        double gravity = 0.0;
-        int32_t down_axis = 0;
-        std::vector<ModelPrint> models;
-        bool operator==(const ScenePrint &o) const {
-            return gravity == o.gravity && down_axis == o.down_axis && models == o.models;
-        }
-    };
-
-    static ScenePrint fingerprint(const ani_physics_scene &scene) {
-        ScenePrint print;
-        print.gravity = scene.gravity;
-        print.down_axis = scene.down_axis;
-        for (uint32_t i = 0; i < scene.model_count; ++i) {
-            const ani_physics_model &m = scene.models[i];
-            ModelPrint p;
-            p.mesh = m.mesh;
-            if (m.mesh) {
-                p.positions = m.mesh->positions;
-                p.vertex_count = m.mesh->vertex_count;
-                p.triangle_count = m.mesh->triangle_count;
-            }
-            p.group = m.group;
-            if (m.desc) {
-                p.dynamics = m.desc->dynamics;
-                p.gravity = m.desc->gravity;
-                p.mass = m.desc->mass;
-            }
-            for (uint32_t k = 0; k < m.keyed_span_count; ++k)
-                p.spans.insert(p.spans.end(), {m.keyed_spans[k].begin, m.keyed_spans[k].end});
-            const bool has_keys =
-                m.struct_size >= offsetof(ani_physics_model, key_count) + sizeof(m.key_count) &&
-                m.key_times;
-            for (uint32_t k = 0; has_keys && k < m.key_count; ++k) {
-                p.keys.push_back(m.key_times[k]);
-                ani_model_state s{};
-                ani_vec3 v{};
-                if (scene.evaluate_keyed(scene.host_context, i, m.key_times[k], &s, &v) != ANI_OK)
-                    p.key_states.push_back(std::nan(""));
-                p.key_states.insert(p.key_states.end(),
-                                    {s.center.x, s.center.y, s.center.z, s.angles.x, s.angles.y,
-                                     s.angles.z, s.scale.x, s.scale.y, s.scale.z, v.x, v.y, v.z});
-            }
-            print.models.push_back(std::move(p));
-        }
-        return print;
     }
 
     // Sorts the models: static ones with a mesh are obstacles; spheres that can move and models
@@ -1017,7 +955,7 @@ class EventBake {
         if (glm::length(p.center - o.center) > reach + o.radius) return std::nullopt;
         const double touching = 1e-6 * reach; // single-precision meshes
         const PlacedMesh body = placed(b, p);
-        if (!surfaces_cross(body, o, touching)) return std::nullopt;
+        if (!surfaces_cross(body, placed(o), touching)) return std::nullopt;
         // How deep the vertices of one are behind the plane of the other's point nearest to q.
         auto behind = [](const std::vector<glm::dvec3> &vertices, const glm::dvec3 &q,
                          const glm::dvec3 &nearest, glm::dvec3 &n) {
@@ -1040,76 +978,6 @@ class EventBake {
         seen.contact.t = t;
         seen.depth = body_side ? body_depth : obstacle_depth;
         return seen;
-    }
-
-    // Whether an edge of one passes through a triangle of the other, its ends on either side of
-    // the triangle's plane by more than `tol` and through its inside (a box resting on a floor
-    // touches it, its edges in or ending on the floor's plane: no crossing).
-    bool surfaces_cross(const PlacedMesh &body, const Obstacle &o, double tol) const {
-        Box common{body.vertices.empty() ? glm::dvec3(0.0) : body.vertices[0],
-                   body.vertices.empty() ? glm::dvec3(0.0) : body.vertices[0]};
-        for (const glm::dvec3 &v : body.vertices) {
-            common.lo = glm::min(common.lo, v);
-            common.hi = glm::max(common.hi, v);
-        }
-        const Box other = o.shape->bounds();
-        common.lo = glm::max(common.lo, other.lo) - glm::dvec3(tol);
-        common.hi = glm::min(common.hi, other.hi) + glm::dvec3(tol);
-        if (common.lo.x > common.hi.x || common.lo.y > common.hi.y || common.lo.z > common.hi.z)
-            return false;
-        auto crosses = [&](const glm::dvec3 &a, const glm::dvec3 &e, const glm::dvec3 &c0,
-                           const glm::dvec3 &c1, const glm::dvec3 &c2) {
-            const glm::dvec3 n = glm::cross(c1 - c0, c2 - c0);
-            if (!(glm::length(n) > 0.0)) return false;
-            const glm::dvec3 u = glm::normalize(n);
-            const double da = glm::dot(u, a - c0), db = glm::dot(u, e - c0);
-            if (!((da > tol && db < -tol) || (da < -tol && db > tol))) return false;
-            // Where it meets the plane, inside the triangle by more than tol from each side (an
-            // edge in a floor's plane meets a resting box's side face on its rim: touching).
-            const glm::dvec3 q = a + (e - a) * (da / (da - db));
-            const glm::dvec3 c[3] = {c0, c1, c2};
-            for (int i = 0; i < 3; ++i) {
-                const glm::dvec3 side = c[(i + 1) % 3] - c[i];
-                if (!(glm::dot(glm::cross(side, q - c[i]), u) > tol * glm::length(side)))
-                    return false;
-            }
-            return true;
-        };
-        auto box_of = [](const glm::dvec3 &a, const glm::dvec3 &e) {
-            return Box{glm::min(a, e), glm::max(a, e)};
-        };
-        // The body's edges through the obstacle's triangles.
-        for (size_t k = 0; k < body.edge_count; ++k) {
-            const glm::dvec3 &a = body.vertices[body.edges[k][0]],
-                             &e = body.vertices[body.edges[k][1]];
-            const Box edge = box_of(a, e);
-            if (!edge.overlaps(common)) continue;
-            for (size_t f = 0; f < o.boxes.size(); ++f)
-                if (edge.overlaps(o.boxes[f]) &&
-                    crosses(a, e, o.corners[3 * f], o.corners[3 * f + 1], o.corners[3 * f + 2]))
-                    return true;
-        }
-        // The obstacle's edges through the body's triangles.
-        std::vector<size_t> near;
-        for (size_t f = 0; f < body.triangle_count; ++f) {
-            const uint32_t *tri = body.triangles + 3 * f;
-            Box box = box_of(body.vertices[tri[0]], body.vertices[tri[1]]);
-            box.lo = glm::min(box.lo, body.vertices[tri[2]]);
-            box.hi = glm::max(box.hi, body.vertices[tri[2]]);
-            if (box.overlaps(common)) near.push_back(f);
-        }
-        for (const auto &edge_ends : o.shape->edges) {
-            const glm::dvec3 &a = o.shape->vertices[edge_ends[0]],
-                             &e = o.shape->vertices[edge_ends[1]];
-            if (!box_of(a, e).overlaps(common)) continue;
-            for (size_t f : near) {
-                const uint32_t *tri = body.triangles + 3 * f;
-                if (crosses(a, e, body.vertices[tri[0]], body.vertices[tri[1]],
-                            body.vertices[tri[2]]))
-                    return true;
-            }
-        }
-        return false;
     }
 
     // An overlapping pair is touching (physics.md): neither moves deeper into the other. Spheres

@@ -111,4 +111,78 @@ std::vector<std::array<uint32_t, 2>> edges_of(const uint32_t *triangles,
     return edges;
 }
 
+namespace {
+
+struct Bounds {
+    glm::dvec3 lo{std::numeric_limits<double>::infinity()},
+        hi{-std::numeric_limits<double>::infinity()};
+    void add(const glm::dvec3 &p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    bool overlaps(const Bounds &o) const {
+        return lo.x <= o.hi.x && o.lo.x <= hi.x && lo.y <= o.hi.y && o.lo.y <= hi.y &&
+               lo.z <= o.hi.z && o.lo.z <= hi.z;
+    }
+};
+
+// Whether segment ae passes through the inside of triangle c0 c1 c2 (see surfaces_cross).
+bool segment_crosses(const glm::dvec3 &a, const glm::dvec3 &e, const glm::dvec3 &c0,
+                     const glm::dvec3 &c1, const glm::dvec3 &c2, double tol) {
+    const glm::dvec3 n = glm::cross(c1 - c0, c2 - c0);
+    if (!(glm::length(n) > 0.0)) return false;
+    const glm::dvec3 u = glm::normalize(n);
+    const double da = glm::dot(u, a - c0), db = glm::dot(u, e - c0);
+    if (!((da > tol && db < -tol) || (da < -tol && db > tol))) return false;
+    const glm::dvec3 q = a + (e - a) * (da / (da - db));
+    const glm::dvec3 c[3] = {c0, c1, c2};
+    for (int i = 0; i < 3; ++i) {
+        const glm::dvec3 side = c[(i + 1) % 3] - c[i];
+        if (!(glm::dot(glm::cross(side, q - c[i]), u) > tol * glm::length(side))) return false;
+    }
+    return true;
+}
+
+// The edges of `from` through the triangles of `to`, looking only where both can be.
+bool edges_cross(const PlacedMesh &from, const PlacedMesh &to, const Bounds &common, double tol) {
+    std::vector<std::size_t> near;
+    std::vector<Bounds> boxes;
+    for (std::size_t f = 0; f < to.triangle_count; ++f) {
+        Bounds box;
+        for (int c = 0; c < 3; ++c) box.add(to.vertices[to.triangles[3 * f + c]]);
+        if (!box.overlaps(common)) continue;
+        near.push_back(f);
+        boxes.push_back(box);
+    }
+    for (std::size_t k = 0; k < from.edge_count; ++k) {
+        const glm::dvec3 &a = from.vertices[from.edges[k][0]], &e = from.vertices[from.edges[k][1]];
+        Bounds edge;
+        edge.add(a);
+        edge.add(e);
+        if (!edge.overlaps(common)) continue;
+        for (std::size_t n = 0; n < near.size(); ++n) {
+            const uint32_t *tri = to.triangles + 3 * near[n];
+            if (edge.overlaps(boxes[n]) &&
+                segment_crosses(a, e, to.vertices[tri[0]], to.vertices[tri[1]], to.vertices[tri[2]],
+                                tol))
+                return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+bool surfaces_cross(const PlacedMesh &a, const PlacedMesh &b, double tol) {
+    Bounds box_a, box_b;
+    for (const glm::dvec3 &v : a.vertices) box_a.add(v);
+    for (const glm::dvec3 &v : b.vertices) box_b.add(v);
+    Bounds common;
+    common.lo = glm::max(box_a.lo, box_b.lo) - glm::dvec3(tol);
+    common.hi = glm::min(box_a.hi, box_b.hi) + glm::dvec3(tol);
+    if (common.lo.x > common.hi.x || common.lo.y > common.hi.y || common.lo.z > common.hi.z)
+        return false;
+    return edges_cross(a, b, common, tol) || edges_cross(b, a, common, tol);
+}
+
 } // namespace physics_custom

@@ -36,6 +36,14 @@ void closest_on_segments(const glm::dvec3 &p1, const glm::dvec3 &q1, const glm::
 double mesh_distance(const PlacedMesh &a, const PlacedMesh &b, glm::dvec3 &on_a, glm::dvec3 &on_b,
                      glm::dvec3 &normal);
 
+// Whether the surfaces of a and b cross: an edge of one passes through a triangle of the other,
+// its ends on either side of the triangle's plane by more than `tol` and through the triangle's
+// inside by more than `tol` from each side. A box resting on a floor, or passing over a step's
+// edge, only touches it: its edges lie in or end on the floor's plane, or meet a face on its rim.
+// (Not seen: a mesh wholly inside another, and one sunk into another exactly aligned with it,
+// every face in a plane of the other, where no edge crosses a face's inside.)
+bool surfaces_cross(const PlacedMesh &a, const PlacedMesh &b, double tol);
+
 // The unique undirected edges of a triangle list, lower index first.
 std::vector<std::array<uint32_t, 2>> edges_of(const uint32_t *triangles,
                                               std::size_t triangle_count);

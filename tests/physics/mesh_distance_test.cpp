@@ -81,3 +81,26 @@ TEST_CASE("the distance between two cubes, face to face, edge to edge, and touch
     CHECK(std::abs(n.x) == Approx(1.0));
     CHECK(n.x < 0.0); // from d (at +x) towards a
 }
+
+TEST_CASE("surfaces cross where a cube is sunk into another, not where they touch") {
+    // Two cubes of side 2: one at the origin, the other above it at height h. They touch for
+    // h = 2 (face on face) and overlap by 2 - h below; beside the first, over its edge (offset by
+    // 1.5 along x, so its face hangs over the edge) they touch at h = 2 too.
+    const Cube base = cube(glm::dvec3(0.0)), top = cube(glm::dvec3(0.0));
+    const double tol = 1e-6;
+    auto cross = [&](const glm::dvec3 &at) {
+        Cube moved = top;
+        for (glm::dvec3 &v : moved.vertices) v += at;
+        return surfaces_cross(placed(moved, at), placed(base, glm::dvec3(0.0)), tol);
+    };
+    // Sunk by 1, not exactly aligned (aligned, its faces would lie in the other's planes, which
+    // no edge crosses).
+    CHECK(cross({0.3, 1.0, 0.2}));
+    CHECK(cross({0.3, 1.999, 0.2}));            // sunk by 1e-3, off centre
+    CHECK_FALSE(cross({0.0, 2.0, 0.0}));        // face on face
+    CHECK_FALSE(cross({1.5, 2.0, 0.0}));        // over the edge, touching
+    CHECK_FALSE(cross({1.5, 2.0 + 1e-7, 0.0})); // within single precision of touching
+    CHECK(cross({1.5, 1.9, 0.0}));              // over the edge, sunk
+    CHECK_FALSE(cross({2.5, 0.0, 0.0}));        // apart
+    CHECK_FALSE(cross({2.0, 2.0, 0.0}));        // edge on edge
+}
