@@ -154,7 +154,7 @@ struct Touch {
 class Bake {
   public:
     Bake(const ani_physics_scene &scene, double t_begin, double t_end, const ani_bake_sink &sink,
-         const ani_host *host, const BakeOptions &options, ReportedOverlaps &reported)
+         const ani_host *host, const BakeOptions &options, SaidInBake &reported)
         : scene_(scene), t_begin_(t_begin), t_end_(t_end), sink_(sink), host_(host),
           options_(options), dt_(options.step), filter_(&groups_), reported_(reported) {
         reported_.begin(t_begin);
@@ -555,7 +555,9 @@ class Bake {
             ++counts_[shape->count_name()];
             std::string what = shape->describe();
             if (room) what += ", a room: a moving model starts inside it";
-            log(ANI_LOG_INFO, std::string("model '") + name_of(scene_.models[i]) + "': " + what);
+            if (reported_.first_description(i)) // once per bake, not once per slice
+                log(ANI_LOG_INFO,
+                    std::string("model '") + name_of(scene_.models[i]) + "': " + what);
         }
         return shape;
     }
@@ -1414,7 +1416,7 @@ class Bake {
     std::set<uint32_t> described_;
     // Pairs that overlapped and move apart, let go until apart; pairs apart by the end of a step.
     std::set<PairKey> ignored_, still_overlapping_, contacts_;
-    ReportedOverlaps &reported_;
+    SaidInBake &reported_;
     std::set<uint32_t> switched_;
     double last_switch_ = 0.0;
     btManifoldArray manifolds_;
@@ -1428,8 +1430,8 @@ class Bake {
 
 void bake_scene(const ani_physics_scene &scene, double t_begin, double t_end,
                 const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options,
-                ReportedOverlaps *reported) {
-    ReportedOverlaps one_bake;
+                SaidInBake *reported) {
+    SaidInBake one_bake;
     Bake(scene, t_begin, t_end, sink, host, options, reported ? *reported : one_bake).run();
 }
 

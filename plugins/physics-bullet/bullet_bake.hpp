@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <map>
+#include <set>
 #include <utility>
 
 namespace physics_bullet {
@@ -21,28 +22,32 @@ struct BakeOptions {
     double restitution = 1.0;
 };
 
-// The overlapping pairs a bake has reported (models, lower first, to when it found them), kept by
-// the instance from one slice of a bake to the next so that each is said once per bake: a bake
-// from 0 starts afresh, and one from a later time forgets what was found from then on.
-class ReportedOverlaps {
+// What a bake has said in the log (the overlapping pairs, models lower first, to when it found
+// them; the models whose shape it described), kept by the instance from one slice of a bake to
+// the next so that each is said once per bake, not once per slice: a bake from 0 starts afresh,
+// and one from a later time forgets the overlaps found from then on.
+class SaidInBake {
   public:
     void begin(double t_begin) {
         for (auto it = found_.begin(); it != found_.end();)
             it = t_begin <= 0.0 || it->second >= t_begin ? found_.erase(it) : std::next(it);
+        if (t_begin <= 0.0) described_.clear();
     }
     // Whether to say it: not said before in this bake.
     bool first(uint32_t a, uint32_t b, double t) {
         return found_.emplace(a < b ? std::make_pair(a, b) : std::make_pair(b, a), t).second;
     }
+    bool first_description(uint32_t model) { return described_.insert(model).second; }
 
   private:
     std::map<std::pair<uint32_t, uint32_t>, double> found_;
+    std::set<uint32_t> described_;
 };
 
 // Bakes [t_begin, t_end]: keyed spans, Bullet's steps, collision events. Throws ani::Failure.
 // `reported` is the instance's (without it, every call is a bake of its own).
 void bake_scene(const ani_physics_scene &scene, double t_begin, double t_end,
                 const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options,
-                ReportedOverlaps *reported = nullptr);
+                SaidInBake *reported = nullptr);
 
 } // namespace physics_bullet

@@ -75,11 +75,13 @@ TEST_CASE("a ball sunk into a floor and moving up is let go, and lands on the fl
           Approx(y0 + v * 0.4 - 0.5 * G * 0.16).margin(G * kStep));
 }
 
-TEST_CASE("an overlap is said once over a bake made of many slices") {
+TEST_CASE("an overlap, and each shape, is said once over a bake made of many slices") {
     take_log();
     auto t = timeline_of(ball_in_floor(0.3, {0, -1, 0}));
     for (int k = 1; k <= 80; ++k) t->bake(0.05 * k); // as the editor does
-    CHECK(said(take_log(), "'floor' and 'ball' overlap") == 1);
+    const auto log = take_log();
+    CHECK(said(log, "'floor' and 'ball' overlap") == 1);
+    CHECK(said(log, "model 'ball': sphere shape") == 1); // the shapes too, once per bake
     CHECK(lowest(*t, 1, 4.0) >= 0.3 - G * kStep * kStep);
 }
 
