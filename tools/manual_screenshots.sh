@@ -40,7 +40,7 @@ click() { xdotool mousemove --window "$win" "$1" "$2" click 1; sleep 0.4; }
 
 xdotool windowfocus --sync "$win"
 shot 01-editor
-click 415 250                  # the red ball: selected, tinted yellow, its Model Interface opens
+click 590 250                  # the red ball: selected, tinted yellow, its Model Interface opens beside the view
 shot 02-selected
 xdotool key space              # play: the ball falls and bounces
 shot 03-playing 0.55

@@ -5,6 +5,7 @@
 #include "editor/editor_session.hpp"
 #include "editor/screen_state.hpp"
 #include "editor/status_line.hpp"
+#include "editor/view_layout.hpp"
 #include "render/renderer.hpp"
 
 #include <glad/gl.h>
@@ -290,6 +291,8 @@ int run_editor(const EditorOptions &options) {
 
         std::uint64_t drawn_version = ~std::uint64_t{0};
         std::string title;
+        // The 3D view: the space the panels left in the last frame drawn, where clicks pick.
+        ScreenRect view{0.0, 0.0, static_cast<double>(options.width), static_cast<double>(options.height)};
         Pointer pointer;
         int frames_to_draw = 3;
         // ImGui's fades run on its clock, not on a count of frames: a modal dialog dims the view
@@ -343,9 +346,13 @@ int run_editor(const EditorOptions &options) {
                 case InputEvent::Release:
                     if (auto click = pointer.release(session, e)) {
                         if (session.playing()) break;
-                        const int model = renderer.pick(session.shown_frame(), fb_w, fb_h,
-                                                         static_cast<int>(click->x * to_fb),
-                                                         static_cast<int>(click->y * to_fb));
+                        // Picked in the view as drawn: its own pixels, from its top-left corner.
+                        int model = -1;
+                        if (view.contains(click->x, click->y))
+                            model = renderer.pick(session.shown_frame(), static_cast<int>(std::lround(view.width * to_fb)),
+                                                  static_cast<int>(std::lround(view.height * to_fb)),
+                                                  static_cast<int>((click->x - view.x) * to_fb),
+                                                  static_cast<int>((click->y - view.y) * to_fb));
                         session.click(model, (e.mods & GLFW_MOD_CONTROL) != 0);
                     }
                     break;
@@ -379,7 +386,7 @@ int run_editor(const EditorOptions &options) {
                         session.set_free_view(!session.free_view());
                     } else if (e.code == GLFW_KEY_HOME || (e.code == GLFW_KEY_F && !ctrl)) {
                         const bool selected = e.code == GLFW_KEY_F;
-                        const double aspect = win_h > 0 ? static_cast<double>(win_w) / win_h : 1.0;
+                        const double aspect = view.height > 0 ? view.width / view.height : 1.0;
                         if (!session.frame_models(selected, aspect))
                             panels.say(selected ? "nothing selected to frame" : "no model to frame");
                     } else if (e.code == GLFW_KEY_LEFT || e.code == GLFW_KEY_RIGHT) {
@@ -404,6 +411,7 @@ int run_editor(const EditorOptions &options) {
             panels.set_frame_rate(frame_rate.text());
             panels.draw(session, static_cast<float>(win_w), static_cast<float>(win_h), glfwGetTime());
             if (panels.quit_confirmed()) quitting = true;
+            view = view_rect(win_w, win_h, panels.places());
             // What this frame's panels show; the work below (playback, the bake) may change it.
             const ScreenState shown = screen_state(session, panels.message());
 
@@ -435,7 +443,17 @@ int run_editor(const EditorOptions &options) {
             }
 
             ImGui::Render();
-            if (fb_w > 0 && fb_h > 0) renderer.draw(session.shown_frame(), RenderTarget{0, fb_w, fb_h}, session.selection());
+            // Behind the panels the background; the scene in the view between them.
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glViewport(0, 0, fb_w, fb_h);
+            glClearColor(render_options.background.r, render_options.background.g, render_options.background.b, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+            RenderTarget target;
+            target.x = static_cast<int>(std::lround(view.x * to_fb));
+            target.width = static_cast<int>(std::lround(view.width * to_fb));
+            target.height = static_cast<int>(std::lround(view.height * to_fb));
+            target.y = fb_h - static_cast<int>(std::lround(view.y * to_fb)) - target.height; // GL's rows go up
+            if (target.width > 0 && target.height > 0) renderer.draw(session.shown_frame(), target, session.selection());
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, fb_w, fb_h);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

@@ -58,6 +58,12 @@ bool enter_pressed() {
 }
 bool escape_pressed() { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false); }
 
+// The window being drawn: where it is, and whether only its title bar shows.
+PanelPlace current_place() {
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    return {{pos.x, pos.y, size.x, size.y}, ImGui::IsWindowCollapsed()};
+}
+
 std::string time_label(std::int64_t ms) {
     char text[64];
     std::snprintf(text, sizeof text, "t = %lld ms", static_cast<long long>(ms));
@@ -101,6 +107,7 @@ void Panels::draw(EditorSession &session, float width, float height, double wall
         model_draft_.reset();
         draft_version_ = session.version();
     }
+    places_.clear();
     animator_panel(session, height, wall);
     if (session.last_selected() >= 0) model_panel(session, width, height);
     dialogs(session);
@@ -111,7 +118,9 @@ void Panels::draw(EditorSession &session, float width, float height, double wall
 void Panels::animator_panel(EditorSession &session, float height, double wall) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(340, std::min(height - 20.0f, 760.0f)), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Animator Interface")) {
+    const bool open = ImGui::Begin("Animator Interface");
+    places_.push_back(current_place());
+    if (!open) {
         ImGui::End();
         return;
     }
@@ -389,11 +398,16 @@ void Panels::model_panel(EditorSession &session, float width, float height) {
         model_draft_ = session.document().models()[static_cast<size_t>(index)];
         model_draft_index_ = index;
     }
-    // At the right edge, and back there when the window's width changes.
-    ImGui::SetNextWindowPos(ImVec2(width - 370, 10), width != placed_at_width_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver);
+    // At the right edge, and back there when the window's width changes. Narrower in a small
+    // window (800 px: 240), so the view between the panels keeps some room.
+    const float panel_width = std::clamp(width * 0.3f, 240.0f, 360.0f);
+    const ImGuiCond place = width != placed_at_width_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+    ImGui::SetNextWindowPos(ImVec2(width - panel_width - 10.0f, 10), place);
+    ImGui::SetNextWindowSize(ImVec2(panel_width, std::min(height - 20.0f, 560.0f)), place);
     placed_at_width_ = width;
-    ImGui::SetNextWindowSize(ImVec2(360, std::min(height - 20.0f, 560.0f)), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Model Interface")) {
+    const bool open = ImGui::Begin("Model Interface");
+    places_.push_back(current_place());
+    if (!open) {
         ImGui::End();
         return;
     }

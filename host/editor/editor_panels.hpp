@@ -5,6 +5,7 @@
 #pragma once
 
 #include "editor/editor_session.hpp"
+#include "editor/view_layout.hpp"
 
 #include <functional>
 #include <optional>
@@ -30,6 +31,8 @@ class Panels {
     // from an earlier action ("nothing to undo here") never outlives the next one.
     void undo(EditorSession &session);
     void redo(EditorSession &session);
+    // Where the panels were drawn this frame, for the view to take the space they leave.
+    const std::vector<PanelPlace> &places() const { return places_; }
     // A modal dialog is open: the editor's shortcuts wait until it is answered.
     bool dialog_open() const { return dialog_open_; }
 
@@ -58,6 +61,7 @@ class Panels {
     bool message_error_ = false;
     std::string frame_rate_ = "idle";
     bool dialog_open_ = false;
+    std::vector<PanelPlace> places_;
     bool quit_asked_ = false, quit_confirmed_ = false;
     std::string error_title_, error_text_;
     bool error_pending_ = false;

@@ -11,6 +11,9 @@ namespace animator {
 struct RenderTarget {
     unsigned framebuffer = 0; // a GL framebuffer object name; 0 is the window's
     int width = 0, height = 0;
+    // Where the viewport starts in the framebuffer (GL's origin, bottom left): the editor draws
+    // the scene in the space its panels leave. Only the viewport is cleared and drawn.
+    int x = 0, y = 0;
 };
 
 // A framebuffer object with an 8-bit RGBA colour, a 24-bit depth and an 8-bit stencil buffer

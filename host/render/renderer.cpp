@@ -222,8 +222,9 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     bound_[0] = bound_[1] = 0;
     current_program_ = nullptr;
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
-    glViewport(0, 0, target.width, target.height);
-    glDisable(GL_SCISSOR_TEST);
+    glViewport(target.x, target.y, target.width, target.height);
+    glEnable(GL_SCISSOR_TEST); // the clear keeps to the viewport
+    glScissor(target.x, target.y, target.width, target.height);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE); // open meshes (a floor) are seen from both sides
     glDepthMask(GL_TRUE);
@@ -231,6 +232,7 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     glClearColor(options_.background.r, options_.background.g, options_.background.b, 1.0f);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
     prepare_frame(frame, target.width, target.height);
     if (skybox_) draw_skybox();
 

@@ -15,6 +15,13 @@ screenshot: `import -window root`, converted to binary PPM and read here) and wh
 no sanitizer reported anything (the suite runs again in an ASan+UBSan build). Exit status 0 on a
 pass; on a failure a message, and the folder kept with the screenshots and logs.
 
+Waits end on the program's own signals, never on a fixed time a loaded machine can exceed: its
+title, the lines it prints, and (with ANIMATOR_EDITOR_SIGNALS=1, set here) the line it prints
+each time it goes to sleep with everything drawn, "animator: idle (inputs K, moves M)": after
+sending keys and clicks, a case waits for an idle line counting at least as many (settle()).
+The remaining sleeps are a hand's pace between events, or real time a case wants to pass
+(playback runs in real time). Time limits only catch a hang.
+
 Stdlib only. Needs Xvfb, xdotool and imagemagick (`import`, `convert`).
 """
 
@@ -593,7 +600,27 @@ QUIT_EXPORT_AND_QUIT = (524, 378)
 QUIT_WITHOUT_EXPORTING = (669, 378)
 QUIT_CANCEL = (783, 378)
 
-VIEW_BOX = (PANEL_RIGHT + 10, 0, 900, HEIGHT)
+# The 3D view is the space the panels leave (editor/view_layout.hpp): right of the Animator
+# Interface, and left of the Model Interface while one is selected (its width is 30% of the
+# window's, 240..360 px, 10 px from the edge; a view narrower than 200 px gives its space back).
+def view_right(img, w=WIDTH):
+    if not model_panel_shown(img, w):
+        return w
+    right = w - min(max(0.3 * w, 240), 360) - 10
+    return right if right - PANEL_RIGHT >= 200 else w
+
+
+def view_box(img, w=WIDTH, h=HEIGHT):
+    return (PANEL_RIGHT + 10, 0, round(view_right(img, w)) - 10, h)
+
+
+def view_centre(img, w=WIDTH):
+    return (PANEL_RIGHT + view_right(img, w)) / 2
+
+
+CX = (PANEL_RIGHT + WIDTH) / 2            # 815: the view's centre, nothing selected
+CX_SELECTED = (PANEL_RIGHT + WIDTH - 370) / 2  # 630: with the Model Interface beside it
+SHOWN_CX = [CX]  # the view's centre in the last ball_on_screen() screenshot, for check_moved()
 PLAY_BUTTON_BOX = (18, 100, 60, 120)   # the Play / Pause button's label
 TIME_SLIDER_BOX = (18, 78, 238, 97)    # the Time slider: its grab and its number
 OUTLINES_CHECKBOX = (134, 370)
@@ -606,7 +633,8 @@ MESSAGE_BOX = (18, 518, 342, 540)      # the status message, under the status li
 def ball_on_screen(e, name):
     """Screenshot; the test ball's pixels (whatever is not background in the 3D view)."""
     img = e.screenshot(name)
-    n, x, y, mean = img.blob(lambda px: not is_background(px), VIEW_BOX)
+    n, x, y, mean = img.blob(lambda px: not is_background(px), view_box(img))
+    SHOWN_CX[0] = view_centre(img)
     check(n > 5000, '%s: the ball is not on screen (%d pixels not background)' % (name, n))
     e.case.log('%s: ball %d px at (%.1f, %.1f), mean colour %s' % (name, n, x, y, tuple(round(v) for v in mean)))
     return img, n, x, y, mean
@@ -622,14 +650,15 @@ def check_selected_tint(name, mean, selected):
 
 def outline_pixels(img):
     """The selection outline's orange band (render/selection_outline.hpp) in the 3D view."""
-    return len([1 for _, _, px in img.region(*VIEW_BOX) if near(px, OUTLINE_ORANGE, 40)])
+    return len([1 for _, _, px in img.region(*view_box(img)) if near(px, OUTLINE_ORANGE, 40)])
 
 
-def model_panel_shown(img):
+def model_panel_shown(img, w=WIDTH):
     """The Model Interface window's title bar and body are drawn at the right."""
-    x0, y0, x1, y1 = MODEL_PANEL
-    title = img.at(x0 + 150, y0 + 9)
-    body = img.at(x0 + 200, y1 - 60)
+    x0 = w - min(max(0.3 * w, 240), 360) - 10
+    y0, y1 = MODEL_PANEL[1], MODEL_PANEL[3]
+    title = img.at(round(x0) + 100, y0 + 9)
+    body = img.at(round(x0) + 150, y1 - 60)
     return not is_background(title) and sum(body) < 90  # ImGui's dark window body
 
 
@@ -646,15 +675,16 @@ def keyframe_rows(img):
 
 
 def check_moved(name, x, y, dx, dy, tol=4):
-    check(abs(x - (640 + dx)) < tol and abs(y - (360 + dy)) < tol,
-          '%s: the ball is at (%.1f, %.1f), expected near (%d, %d)' % (name, x, y, 640 + dx, 360 + dy))
+    cx = SHOWN_CX[0]
+    check(abs(x - (cx + dx)) < tol and abs(y - (360 + dy)) < tol,
+          '%s: the ball is at (%.1f, %.1f), expected near (%d, %d)' % (name, x, y, cx + dx, 360 + dy))
 
 
 def top_colour_share(img, k=12):
     """How much of the ball (the non-background pixels of the view) its k most common colours
     cover: cel shading bands it into about ten flat colours (about 0.99), smooth shading spreads
     it over hundreds (about 0.16). Also returns the ball's pixel count."""
-    counts = img.colours(VIEW_BOX, lambda c: not is_background(c))
+    counts = img.colours(view_box(img), lambda c: not is_background(c))
     total = sum(counts.values())
     return sum(sorted(counts.values(), reverse=True)[:k]) / max(total, 1), total
 
@@ -683,7 +713,7 @@ def click_error_ok(e, img):
 def red_ball_y(e, name):
     """drop.ani's red ball: the y of its centroid."""
     img = e.screenshot(name)
-    n, x, y, _ = img.blob(reddish, VIEW_BOX)
+    n, x, y, _ = img.blob(reddish, view_box(img))
     check(n > 2000, '%s: the red ball is not on screen' % name)
     e.case.log('%s: red ball at (%.1f, %.1f)' % (name, x, y))
     return y
@@ -692,11 +722,12 @@ def red_ball_y(e, name):
 def translate_ball(e, dx, dy, time_ms):
     """Selects the ball (at the centre), Translate mode, goes to time_ms, drags with the right
     button by (dx, dy) pixels."""
-    e.click(640, 360)
+    e.click(round(CX), 360)  # selected, the ball moves with the view's centre
     e.click(*MODE_TRANSLATE)
     if time_ms is not None:
         e.set_time(time_ms)
-    e.drag((640, 360), (640 + dx, 360 + dy), button=3)
+    start = (round(CX_SELECTED), 360)
+    e.drag(start, (start[0] + dx, start[1] + dy), button=3)
 
 
 # --- Cases ---------------------------------------------------------------------------------------
@@ -707,7 +738,7 @@ def case_select_click(c):
     c.write('ball.ani', BALL_ANI)
     e = c.start('ball.ani')
     img, n0, x0, y0, mean = ball_on_screen(e, 'before')
-    check(abs(x0 - 640) < 4 and abs(y0 - 360) < 4, 'the ball is not at the centre of the view: (%.0f, %.0f)' % (x0, y0))
+    check(abs(x0 - CX) < 4 and abs(y0 - 360) < 4, 'the ball is not at the centre of the view: (%.0f, %.0f)' % (x0, y0))
     check_selected_tint('before', mean, False)
     check(outline_pixels(img) < 10, 'an outline before anything was selected')
     check(not model_panel_shown(img), 'a Model Interface is shown before anything was selected')
@@ -717,7 +748,8 @@ def case_select_click(c):
     check_selected_tint('after the click', mean, True)
     # The outline around it, which reads on any colour (the tint alone is lost on yellow).
     check(outline_pixels(img) > 300, 'no selection outline around the ball (%d orange pixels)' % outline_pixels(img))
-    check(abs(x - x0) < 2 and abs(y - y0) < 2, 'selecting moved the ball')
+    # The Model Interface takes its space from the view: the ball stays at the view's centre.
+    check(abs(x - CX_SELECTED) < 2 and abs(y - y0) < 2, 'selected, the ball is not at the narrower view\'s centre: (%.1f, %.1f)' % (x, y))
     check(model_panel_shown(img), 'no Model Interface after selecting the ball')
     check(e.title() == 'animator - ball.ani', 'selecting is not an edit, yet the title is %r' % e.title())
 
@@ -730,7 +762,7 @@ def case_select_click(c):
     e.click(round(x0), round(y0), ctrl=True)
     img, n, x, y, mean = ball_on_screen(e, 'ctrl-selected')
     check_selected_tint('after CTRL+click', mean, True)
-    e.click(round(x0), round(y0), ctrl=True)
+    e.click(round(x), round(y), ctrl=True)  # where it is now, beside the Model Interface
     img, n, x, y, mean = ball_on_screen(e, 'ctrl-deselected')
     check_selected_tint('after a second CTRL+click', mean, False)
     e.quit()
@@ -784,9 +816,9 @@ def case_model_gravity(c):
     # A gentle gravity (2 m/s^2) keeps the ball on screen for the second or so it plays.
     c.write('ball.ani', BALL_ANI.replace('gravity 9.81', 'gravity 2'))
     e = c.start('ball.ani')
-    e.click(640, 360)
+    e.click(round(CX), 360)
     check(model_panel_shown(e.screenshot('selected')), 'no Model Interface after selecting the ball')
-    e.click(*MODEL_GRAVITY_CHECKBOX)
+    e.click(*MODEL_GRAVITY_CHECKBOX)  # noqa
     e.wait_for(lambda: e.title() == 'animator - ball.ani *', 'the title to mark the change')
     e.mouse_away()
     e.wait_baked()
@@ -813,7 +845,7 @@ def case_play_space(c):
     e.wait_baked()
     _, _, x0, y0, _ = ball_on_screen(e, 't0')
     check_moved('at t = 0', x0, y0, 0, 0)
-    end_x = 640 + 2.4 / METRES_PER_PIXEL
+    end_x = CX + 2.4 / METRES_PER_PIXEL
     e.key('space', settle=False)  # watched while it plays
     start = time.time()
     xs = []
@@ -863,7 +895,7 @@ def case_undo_redo(c):
     e.wait_for(lambda: e.title() == 'animator - ball.ani *', 'the title to show " *" after redo')
 
     # A second drag at the same keyframe changes it; then the buttons.
-    e.drag((640, 360), (640, 300), button=3)
+    e.drag((round(CX_SELECTED), 360), (round(CX_SELECTED), 300), button=3)
     _, _, x, y, _ = ball_on_screen(e, 'dragged-again')
     check_moved('after the second drag', x, y, 150, -60)
     e.click(*UNDO_BUTTON)
@@ -1168,7 +1200,7 @@ def case_status_message(c):
 def dark_outline_pixels(img):
     """Near-black pixels in the view (the cel outline's default colour; the ball and the
     background are never that dark)."""
-    return len([1 for _, _, px in img.region(*VIEW_BOX) if max(px) < 16])
+    return len([1 for _, _, px in img.region(*view_box(img)) if max(px) < 16])
 
 
 def case_cel_outline(c):
@@ -1187,8 +1219,9 @@ def case_cel_outline(c):
     # The ball is about 64 px in radius: its silhouette is some 400 px around.
     check(plain < 20 and outlined > 250, 'no outline: %d dark pixels before, %d after' % (plain, outlined))
     # The outline is on the silhouette: dark pixels 60-66 px from the ball's centre, none inside.
-    ring = [1 for x, y, px in img.region(560, 280, 720, 440) if max(px) < 16 and 58 < ((x - 640) ** 2 + (y - 360) ** 2) ** 0.5 < 68]
-    inside = [1 for x, y, px in img.region(560, 280, 720, 440) if max(px) < 16 and ((x - 640) ** 2 + (y - 360) ** 2) ** 0.5 < 50]
+    c0 = round(CX)
+    ring = [1 for x, y, px in img.region(c0 - 80, 280, c0 + 80, 440) if max(px) < 16 and 58 < ((x - CX) ** 2 + (y - 360) ** 2) ** 0.5 < 68]
+    inside = [1 for x, y, px in img.region(c0 - 80, 280, c0 + 80, 440) if max(px) < 16 and ((x - CX) ** 2 + (y - 360) ** 2) ** 0.5 < 50]
     check(len(ring) > 200 and not inside, 'the outline is not on the silhouette (%d on it, %d inside)' % (len(ring), len(inside)))
     e.key('x')
     e.wait_log(r'^animator: exported to ball\.ani$', 'the export')
@@ -1219,7 +1252,7 @@ def case_arrow_keys(c):
     check_moved('after Up (the keyframe at 0)', x, y, 0, 0)
     e.key(*(['Right'] * 15))
     stepped, _, xs, _, _ = ball_on_screen(e, 'stepped')
-    check(xs > 640 + 2, 'fifteen frame steps did not move the ball (x = %.1f)' % xs)
+    check(xs > CX + 2, 'fifteen frame steps did not move the ball (x = %.1f)' % xs)
     e.set_time(500)
     e.mouse_away()
     typed, _, xt, _, _ = ball_on_screen(e, 'typed-500')
@@ -1276,7 +1309,7 @@ def case_free_view(c):
     e.set_time(1500)  # away from any keyframe, where a camera move in Camera mode would make one
     e.mouse_away()
 
-    alt_drag(e, (640, 360), (740, 300), button=2)
+    alt_drag(e, (round(CX), 360), (round(CX) + 100, 300), button=2)
     e.mouse_away()
     _, _, x, y, _ = ball_on_screen(e, 'panned')
     check_moved('after an Alt+middle drag of (100, -60)', x, y, 100, -60)
@@ -1296,7 +1329,7 @@ def case_free_view(c):
     r = ball_radius(img, xf, yf)
     e.case.log('framed: ball at (%.1f, %.1f), radius %.1f px' % (xf, yf, r))
     # Framed: centred, and 1/1.1 of the view's half-height seen from the side (about 321 px).
-    check(abs(xf - 640) < 30 and abs(yf - 360) < 6 and 290 < r < 345,
+    check(abs(xf - CX) < 30 and abs(yf - 360) < 6 and 290 < r < 345,
           'Home did not frame the ball: at (%.1f, %.1f), radius %.1f px' % (xf, yf, r))
     wheel(e, -3)
     e.mouse_away()
@@ -1464,13 +1497,15 @@ def case_quit(c):
 
 
 def case_resize(c):
-    """The window resizes (xdotool windowsize) and the 3D view fills the new size, the ball at
-    its centre and scaled with its height; a click picks the ball at its new place."""
+    """The window resizes (xdotool windowsize), down to 800x500, and the 3D view fills the space
+    the panels leave, the ball at its centre and scaled with its height; a click picks the ball
+    at its new place, and the Model Interface that opens takes its own space beside the view
+    (the ball moves to the centre of what is left, uncovered)."""
     c.write('ball.ani', BALL_ANI)
     e = c.start('ball.ani')
     # Larger first: the Model Interface keeps the place it was first shown at (ImGui's
     # FirstUseEver), so shown first in a narrow window it would cover the centre of a wider one.
-    for w, h in ((1260, 790), (900, 560)):
+    for w, h in ((1260, 790), (900, 560), (800, 500)):
         e.xdo('windowsize', e.window, w, h)
         e.wait_for(lambda: ('%dx%d' % (w, h)) in subprocess.run(
             ['xdotool', 'getwindowgeometry', e.window], capture_output=True, text=True).stdout,
@@ -1485,13 +1520,16 @@ def case_resize(c):
                   'something is drawn outside the %dx%d window' % (w, h))
         n, x, y, _ = img.blob(lambda px: not is_background(px), (PANEL_RIGHT + 10, 0, w, h))
         e.case.log('%dx%d: ball %d px at (%.1f, %.1f)' % (w, h, n, x or -1, y or -1))
-        check(n > 1000 and abs(x - w / 2) < 4 and abs(y - h / 2) < 4,
+        # The view is the space right of the Animator Interface; the ball at its centre.
+        check(n > 1000 and abs(x - (PANEL_RIGHT + w) / 2) < 4 and abs(y - h / 2) < 4,
               'at %dx%d the ball is not at the centre of the view: (%s, %s)' % (w, h, x, y))
         # Its size follows the height (the field of view is vertical): 64.3 px at 720.
         radius = (n / 3.14159) ** 0.5
         check(abs(radius - h / 720 * 64.3) < 4, 'at %dx%d the ball is %.1f px in radius' % (w, h, radius))
         e.click(round(x), round(y))
         img = e.screenshot('%dx%d-selected' % (w, h))
+        # Selected, the Model Interface takes its space: the ball is at the narrower view's centre.
+        x = view_centre(img, w)
         _, _, _, mean = img.blob(lambda px: not is_background(px), (round(x) - 30, round(y) - 30, round(x) + 30, round(y) + 30))
         check_selected_tint('at %dx%d, clicked' % (w, h), mean, True)
         e.click(PANEL_RIGHT + 20, h - 20)  # empty space: deselect
