@@ -22,8 +22,10 @@ while [ -e "/tmp/.X$n-lock" ]; do n=$((n + 1)); done
 Xvfb ":$n" -screen 0 1280x720x24 >/dev/null 2>&1 &
 xvfb=$!
 export DISPLAY=":$n"
-sleep 1
-(cd "$work" && exec "$bin") >"$work/log" 2>&1 &
+# Ready when it answers (a fixed second was seen too short on a busy machine).
+for _ in $(seq 100); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
+# The editor says "animator: idle ..." once it has drawn everything and sleeps.
+(cd "$work" && ANIMATOR_EDITOR_SIGNALS=1 exec "$bin") >"$work/log" 2>&1 &
 editor=$!
 win=""
 for _ in $(seq 50); do
@@ -32,7 +34,7 @@ for _ in $(seq 50); do
   sleep 0.2
 done
 [ -n "$win" ] || { echo "the editor did not open a window:" >&2; cat "$work/log" >&2; exit 1; }
-sleep 2
+for _ in $(seq 600); do grep -q '^animator: idle' "$work/log" && break; sleep 0.1; done
 
 shot() { sleep "${2:-0.6}"; import -window root "$out/$1.png"; }
 # ImGui 1.86 sees one mouse position per frame: give it a moment between actions.
