@@ -1156,6 +1156,13 @@ class EventBake {
         }
     }
 
+    void forget_ignored(int i, double t) {
+        std::vector<std::pair<int, int>> mine;
+        for (const auto &key : ignored_)
+            if (key.first == i || key.second == i) mine.push_back(key);
+        for (const auto &[a, b] : mine) unignore(i, a == i ? b : a, t);
+    }
+
     bool is_ignored(int a, int b) const {
         return !ignored_.empty() && ignored_.count(pair_key(a, b));
     }
@@ -1662,6 +1669,9 @@ class EventBake {
             activate(b, now, leaving_keys(b.model, now));
             b.resume_at = kNever;
             file(i, now);
+            // Pairs left alone while its keys held it inside another are, now that it is free,
+            // touching (physics.md): found again as it is now.
+            forget_ignored(i, now);
             find_overlaps(i, now);
             try_settle(i, now);
             break;

@@ -42,10 +42,10 @@ class OverlapMemory {
             if (r.until >= t_begin) r.until = std::numeric_limits<double>::infinity();
     }
 
-    // The pair's record found before t and not apart by then, or null.
+    // The pair's record found before t and not apart by then (nor let go at t), or null.
     const OverlapRecord *active(uint32_t a, uint32_t b, double t) const {
         for (const OverlapRecord &r : records_)
-            if (same(r, a, b) && r.since < t && r.until >= t) return &r;
+            if (same(r, a, b) && r.since < t && r.until > t) return &r;
         return nullptr;
     }
 

@@ -97,3 +97,15 @@ TEST_CASE("a cube sunk into a floor with Gravity and without Dynamics stays wher
     CHECK(lowest(*t, 1, 4.0) >= 0.5 - G * kStep * kStep);
     CHECK(said(take_log(), "'floor' and 'cube' overlap") == 1);
 }
+
+TEST_CASE("a ball its keys hold sunk into a floor does not sink once its keys end") {
+    // Keyed at y0 at 0 s and at 1 s (inside the floor, left alone while keyed), then free under
+    // gravity from rest: Bullet's contact holds it (and pushes it out), it never goes deeper.
+    const double y0 = 0.3;
+    Document doc = ball_in_floor(y0, {0, 0, 0});
+    key(doc, 1000, 1, placed({0.3, y0, 0.2}, glm::dvec3(0.5)));
+    auto t = timeline_of(doc);
+    for (int k = 1; k <= 60; ++k) t->bake(0.05 * k);
+    CHECK(lowest(*t, 1, 3.0) >= y0 - G * kStep * kStep);
+    CHECK(t->evaluate(3.0).models[1].center.y >= y0 - G * kStep * kStep);
+}

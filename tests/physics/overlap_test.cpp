@@ -172,3 +172,17 @@ TEST_CASE("two balls overlapping and approaching collide at once, elastically") 
     CHECK(t->evaluate(3.0).models[0].center.x == Approx(-0.75 * r - 3.0).epsilon(1e-12));
     CHECK(t->evaluate(3.0).models[1].center.x == Approx(0.75 * r + 3.0).epsilon(1e-12));
 }
+
+TEST_CASE("a ball its keys hold sunk into a floor rests there once its keys end") {
+    // Keyed at y0 at 0 s and at 1 s (inside the floor, left alone while keyed), then free under
+    // gravity from rest: pressed into the floor, it rests where its keys left it.
+    const double y0 = 0.6;
+    Document doc = ball_in_floor(y0, {0, 0, 0});
+    key(doc, 1000, 1, placed({0.3, y0, 0.2}));
+    LoggedEnvironment logged;
+    auto t = logged.timeline(doc);
+    for (int k = 1; k <= 60; ++k) t->bake(0.05 * k);
+    CHECK(lowest(*t, 3.0) >= y0 - 1e-12);
+    CHECK(t->evaluate(3.0).models[1].center.y == Approx(y0).margin(1e-12));
+    CHECK(logged.count("'ball' and 'floor' overlap") == 1);
+}
