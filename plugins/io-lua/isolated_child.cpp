@@ -62,7 +62,7 @@ void install_syscall_filter() {
         SYS_read, SYS_write, SYS_writev, SYS_close, SYS_brk, SYS_mmap, SYS_munmap, SYS_mremap,
         SYS_mprotect, SYS_madvise, SYS_exit, SYS_exit_group, SYS_rt_sigreturn, SYS_rt_sigprocmask,
         SYS_futex, SYS_getpid, SYS_gettid, SYS_clock_gettime, SYS_gettimeofday, SYS_sched_yield,
-        SYS_fstat, SYS_newfstatat,
+        SYS_fstat, SYS_newfstatat, SYS_sigaltstack, // the last for the sanitizers
     };
     std::vector<sock_filter> program;
     program.push_back(BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(seccomp_data, arch)));
