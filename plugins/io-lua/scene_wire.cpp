@@ -154,6 +154,7 @@ bool decode_reply(const std::string &bytes, const std::string &path, SceneResult
         const char kind = r.get<char>();
         if (kind == kError) {
             error = r.get_string();
+            if (error.empty()) throw Malformed("an error without a message"); // the user would see nothing
             if (r.left() != 0) throw Malformed("bytes after the error");
             return false;
         }

@@ -210,6 +210,9 @@ TEST_CASE("scene wire: a scene survives encoding and decoding exactly") {
 
     REQUIRE_FALSE(decode_reply(encode_error("x.lua:3: boom"), "x.lua", back, error));
     CHECK(error == "x.lua:3: boom");
+    // Found by the scene wire fuzzer: an error reply without a message left the user a blank error.
+    REQUIRE_FALSE(decode_reply(encode_error(""), "x.lua", back, error));
+    CHECK(error == "x.lua: the scene reader's reply is malformed (an error without a message)");
 }
 
 TEST_CASE("scene wire: every truncation and random corruption of a reply is an error, not a crash") {
