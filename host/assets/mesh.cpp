@@ -6,6 +6,7 @@
 #include <assimp/IOStream.hpp>
 #include <assimp/IOSystem.hpp>
 #include <assimp/Importer.hpp>
+#include <assimp/MemoryIOWrapper.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <glm/geometric.hpp>
@@ -26,16 +27,27 @@ namespace {
 
 bool finite(const aiVector3D &v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// The files assimp may open besides the mesh itself: none. An OBJ names material libraries
-// ('mtllib') by any path, and animator takes materials from the document, so a hostile mesh
-// could only use them to make the reader open a FIFO (which blocks it forever), a device or a
-// huge file anywhere on the disk.
-class NoOtherFiles : public Assimp::IOSystem {
+// The only file assimp may open: the mesh's bytes, under a name of ours ending in .obj, so that
+// the OBJ importer reads them whatever the file is called (a mesh may be a path relative to its
+// document, and assimp's other forty importers are code no asset needs). Every other name is
+// refused. An OBJ names material libraries ('mtllib') by any path, and when one cannot be
+// opened the importer tries "<mesh>.mtl" beside it: assimp's MTL parser crashes on a 16-byte
+// file (the mesh fuzzer's finding), and a FIFO blocks the reader forever. animator takes
+// materials from the document.
+class OnlyTheMesh : public Assimp::IOSystem {
   public:
-    bool Exists(const char *) const override { return false; }
+    static constexpr const char *kName = "mesh.obj";
+    explicit OnlyTheMesh(const std::string &bytes) : bytes_(bytes) {}
+    bool Exists(const char *file) const override { return file && std::strcmp(file, kName) == 0; }
     char getOsSeparator() const override { return '/'; }
-    Assimp::IOStream *Open(const char *, const char *) override { return nullptr; }
+    Assimp::IOStream *Open(const char *file, const char *mode) override {
+        if (!Exists(file) || !mode || mode[0] != 'r') return nullptr;
+        return new Assimp::MemoryIOStream(reinterpret_cast<const std::uint8_t *>(bytes_.data()), bytes_.size());
+    }
     void Close(Assimp::IOStream *stream) override { delete stream; }
+
+  private:
+    const std::string &bytes_; // outlives the importer
 };
 
 // The file's bytes, refusing one larger than kMaxMeshFileBytes before reading it.
@@ -136,18 +148,15 @@ LoadedMesh load_mesh(const std::filesystem::path &path) {
     if (!too_large.empty()) throw AssetError(too_large);
 
     Assimp::Importer importer;
-    importer.SetIOHandler(new NoOtherFiles); // the importer owns it
+    importer.SetIOHandler(new OnlyTheMesh(text)); // the importer owns it
     // Keep degenerate triangles (we report them ourselves) and lines/points out.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    // Read as OBJ whatever the file is named: a mesh may be a path relative to its document, and
-    // assimp's other forty importers are code no asset needs. The identical corners are joined
-    // below, not by aiProcess_JoinIdenticalVertices, which compares every corner near a
-    // position with every other: quadratic in a file that puts thousands at one point.
-    const aiScene *scene = importer.ReadFileFromMemory(
-        text.data(), text.size(),
-        aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_GenSmoothNormals |
-            aiProcess_SortByPType | aiProcess_ValidateDataStructure,
-        "obj");
+    // The identical corners are joined below, not by aiProcess_JoinIdenticalVertices, which
+    // compares every corner near a position with every other: quadratic in a file that puts
+    // thousands at one point.
+    const aiScene *scene = importer.ReadFile(
+        OnlyTheMesh::kName, aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_GenSmoothNormals |
+                                aiProcess_SortByPType | aiProcess_ValidateDataStructure);
     if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
         const std::string reason = importer.GetErrorString();
         // assimp's validation words an empty file in terms of its own structures.

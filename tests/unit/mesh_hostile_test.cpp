@@ -138,6 +138,20 @@ TEST_CASE("a mesh's material library is never opened: a FIFO named there cannot 
     CHECK(triangles == 1);
 }
 
+TEST_CASE("no material library is parsed, not even the one beside the mesh") {
+    // When 'mtllib' names a file that cannot be opened, assimp parses "<mesh>.mtl" instead, and
+    // its MTL parser crashed on these 16 bytes (the mesh fuzzer's finding, as the OBJ's own text
+    // read as its material library).
+    const std::string crashes_mtl_parser("\0\0\0a\rmtllib 94/b", 16);
+    const fs::path dir = test::fresh_dir("mesh_mtl");
+    test::write_file(dir / "mesh.obj", "mtllib missing.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    test::write_file(dir / "mesh.mtl", crashes_mtl_parser);
+    CHECK(load_mesh(dir / "mesh.obj").mesh.triangle_count() == 1);
+    test::write_file(dir / "self.obj", crashes_mtl_parser);
+    CHECK_THROWS_WITH(load_mesh(dir / "self.obj"),
+                      Catch::StartsWith((dir / "self.obj").string() + ": "));
+}
+
 TEST_CASE("thousands of differing corners at one point are joined in one pass") {
     // 450,000 corners at three positions, each with its own UV: assimp's join compared each
     // with every other at its position and took about 36 minutes (quadratic: 30,000 took 10 s).
