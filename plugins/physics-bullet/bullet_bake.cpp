@@ -348,7 +348,13 @@ class Bake {
 
     void setup_world() {
         for (uint32_t i = 0; i < scene_.model_count; ++i) groups_.push_back(scene_.models[i].group);
-        config_ = std::make_unique<btDefaultCollisionConfiguration>();
+        // Bullet's default pools hold 4096 manifolds and algorithms, cleared when a world is made;
+        // the editor makes one per bake slice, which under ASan cost seconds each. Small pools
+        // overflow to the heap when a scene needs more (Bullet's default dynamic allocation).
+        btDefaultCollisionConstructionInfo pools;
+        pools.m_defaultMaxPersistentManifoldPoolSize = 64;
+        pools.m_defaultMaxCollisionAlgorithmPoolSize = 64;
+        config_ = std::make_unique<btDefaultCollisionConfiguration>(pools);
         dispatcher_ = std::make_unique<Dispatcher>(config_.get(), this);
         dispatcher_->setNearCallback(near_callback);
         btGImpactCollisionAlgorithm::registerAlgorithm(dispatcher_.get());
