@@ -103,7 +103,8 @@ bool Sandbox::run(const std::string &path, const std::string &text, int results,
     if (status == LUA_ERRMEM || out_of_memory_) {
         error = path + ": the scene used more than its memory budget of " +
                 std::to_string(limits_.memory_bytes >> 20) + " MiB";
-    } else if (loaded != LUA_OK && text.rfind(LUA_SIGNATURE, 0) == 0) {
+    } else if (loaded != LUA_OK && !text.empty() && text[0] == LUA_SIGNATURE[0]) {
+        // Lua takes any chunk starting with ESC as binary, and says so without a chunk name.
         error = path + ": is Lua bytecode; scenes must be Lua source text";
     } else {
         const char *message = lua_tostring(L_, -1);
@@ -112,6 +113,7 @@ bool Sandbox::run(const std::string &path, const std::string &text, int results,
         for (size_t at = error.find(marker); at != std::string::npos;
              at = error.find(marker, at + path.size() + 1))
             error.replace(at, marker.size(), path + ":");
+        if (error.rfind(path, 0) != 0) error = path + ": " + error; // every message names the file
     }
     lua_pop(L_, 1);
     return false;
