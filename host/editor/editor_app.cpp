@@ -191,16 +191,20 @@ void feed_imgui_keys(GLFWwindow *window) {
 }
 
 // With ANIMATOR_EDITOR_SIGNALS set (the end-to-end tests), the editor says each time it goes
-// to sleep with everything drawn: "animator: idle (inputs 12, moves 40)". A test waits for a
-// line counting its own keys and clicks instead of for a fixed time, which a loaded machine can
-// exceed. Off by default: a user's terminal would get a line per mouse move.
+// to sleep with everything drawn: "animator: idle (inputs 12, moves 40, time 1234 ms)". A test
+// waits for a line counting its own keys and clicks instead of for a fixed time, which a loaded
+// machine can exceed; the time is the animation's, the one the screen shows, so a test that
+// pauses playback after some real time checks the picture against the time the editor reached
+// (a loaded machine pauses later) instead of against the real time it waited. Off by default:
+// a user's terminal would get a line per mouse move.
 bool signals_wanted() {
     const char *v = std::getenv("ANIMATOR_EDITOR_SIGNALS");
     return v && *v && std::strcmp(v, "0") != 0;
 }
 
-void announce_idle(const WindowState &s) {
-    std::cout << "animator: idle (inputs " << s.inputs << ", moves " << s.moves << ")" << std::endl;
+void announce_idle(const WindowState &s, std::int64_t time_ms) {
+    std::cout << "animator: idle (inputs " << s.inputs << ", moves " << s.moves << ", time " << time_ms << " ms)"
+              << std::endl;
 }
 
 void glfw_error(int code, const char *description) {
@@ -314,7 +318,7 @@ int run_editor(const EditorOptions &options) {
                 frames_to_draw = 1;
                 glfwPollEvents();
             } else {
-                if (signals) announce_idle(window_state);
+                if (signals) announce_idle(window_state, session.time_ms());
                 glfwWaitEvents();
             }
             if (window_state.woke) {

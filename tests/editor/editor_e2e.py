@@ -17,10 +17,12 @@ pass; on a failure a message, and the folder kept with the screenshots and logs.
 
 Waits end on the program's own signals, never on a fixed time a loaded machine can exceed: its
 title, the lines it prints, and (with ANIMATOR_EDITOR_SIGNALS=1, set here) the line it prints
-each time it goes to sleep with everything drawn, "animator: idle (inputs K, moves M)": after
-sending keys and clicks, a case waits for an idle line counting at least as many (settle()).
-The remaining sleeps are a hand's pace between events, or real time a case wants to pass
-(playback runs in real time). Time limits only catch a hang.
+each time it goes to sleep with everything drawn, "animator: idle (inputs K, moves M, time T
+ms)": after sending keys and clicks, a case waits for an idle line counting at least as many
+(settle()). The remaining sleeps are a hand's pace between events, or real time a case wants
+to pass (playback runs in real time); a case that pauses playback checks the picture against
+the animation time the editor says it shows (T), never against the real time it waited, which
+a loaded machine exceeds. Time limits only catch a hang.
 
 Stdlib only. Needs Xvfb, xdotool and imagemagick (`import`, `convert`).
 """
@@ -68,12 +70,12 @@ OUTLINE_ORANGE = (255, 140, 0)
 BACKGROUND = (round(0.16 * 255), round(0.17 * 255), round(0.20 * 255))  # (41, 43, 51)
 
 # Waits end on the editor's own signals (its title, the lines it prints; with
-# ANIMATOR_EDITOR_SIGNALS set it says "animator: idle (inputs K, moves M)" each time it goes to
-# sleep with everything drawn). The limits below only catch a hang: a loaded 2-core machine
+# ANIMATOR_EDITOR_SIGNALS set it says "animator: idle (inputs K, moves M, time T ms)" each time it
+# goes to sleep with everything drawn, T the animation time on the screen). The limits below only catch a hang: a loaded 2-core machine
 # running the ASan build can be ten times slower than a quiet one, so they are generous.
 HANG_TIMEOUT = 240.0
 START_TIMEOUT = HANG_TIMEOUT
-IDLE_LINE = re.compile(r'^animator: idle \(inputs (\d+), moves (\d+)\)$', re.M)
+IDLE_LINE = re.compile(r'^animator: idle \(inputs (\d+), moves (\d+), time (\d+) ms\)$', re.M)
 
 
 class Failure(Exception):
@@ -375,9 +377,13 @@ class Editor:
             time.sleep(0.1)
 
     def idle_signal(self):
-        """The last idle line's (inputs, moves), or None before the first."""
+        """The last idle line's (inputs, moves, time in ms), or None before the first."""
         found = IDLE_LINE.findall(self.stdout())
-        return (int(found[-1][0]), int(found[-1][1])) if found else None
+        return tuple(int(v) for v in found[-1]) if found else None
+
+    def shown_ms(self):
+        """The animation time the editor showed when it last went idle (call after settle())."""
+        return self.idle_signal()[2]
 
     def settle(self, moved=False):
         """Waits until the editor has handled every key and click sent (and, with `moved`, a
@@ -812,9 +818,12 @@ def case_translate_keyframe(c):
 
 def case_model_gravity(c):
     """The seed's first animation: select the ball, tick Model Interface > Physics > Gravity,
-    press SPACE: the ball falls; the export says the ball has gravity."""
-    # A gentle gravity (2 m/s^2) keeps the ball on screen for the second or so it plays.
-    c.write('ball.ani', BALL_ANI.replace('gravity 9.81', 'gravity 2'))
+    press SPACE: the ball falls, and paused it is where free fall puts it at the time the editor
+    shows (y = g t^2 / 2); the export says the ball has gravity."""
+    # A gentle gravity keeps the whole ball in the view for all the 6 s it can fall (3.6 m,
+    # 232 px; its edge leaves the view at 296 px), so a machine slow to pause still sees it.
+    g = 0.2
+    c.write('ball.ani', BALL_ANI.replace('gravity 9.81', 'gravity %g' % g).replace('max_time_ms 5000', 'max_time_ms 6000'))
     e = c.start('ball.ani')
     e.click(round(CX), 360)
     check(model_panel_shown(e.screenshot('selected')), 'no Model Interface after selecting the ball')
@@ -825,49 +834,82 @@ def case_model_gravity(c):
     _, _, x0, y0, _ = ball_on_screen(e, 't0')
     check_moved('at t = 0', x0, y0, 0, 0)
     e.key('space', settle=False)
-    time.sleep(0.5)  # about half a second of falling (real time); pausing then waits for idle
-    e.key('space')
+    time.sleep(2.0)  # some real time of falling; the check uses the time the editor reached
+    e.key('space')   # pauses; settles once the paused frame is drawn
+    t_ms = e.shown_ms()
     _, _, x, y, _ = ball_on_screen(e, 'fallen')
-    # About 1 s of free fall at 2 m/s^2: 1 m, some 64 px at this depth.
-    check(y > y0 + 20 and abs(x - x0) < 2, 'the ball did not fall while playing: (%.1f, %.1f) -> (%.1f, %.1f)' % (x0, y0, x, y))
+    # The ball's centre stays at 12 m in front of the camera, so its fall projects at
+    # METRES_PER_PIXEL (the centroid of an off-centre sphere's image is under 2 px further out).
+    fall = g * (t_ms / 1000.0) ** 2 / 2 / METRES_PER_PIXEL
+    e.case.log('paused at %d ms: the ball %.1f px lower, free fall says %.1f px' % (t_ms, y - y0, fall))
+    check(fall > 10, 'paused at %d ms, too early for a fall to show (%.1f px)' % (t_ms, fall))
+    check(abs(x - x0) < 2 and abs(y - (y0 + fall)) < 3,
+          'paused at %d ms the ball is at (%.1f, %.1f); free fall from (%.1f, %.1f) puts it at (%.1f, %.1f)'
+          % (t_ms, x, y, x0, y0, x0, y0 + fall))
     e.key('x')
     e.wait_log(r'^animator: exported to ball\.ani$', 'the export')
     check(parse_ani(c.path('ball.ani'))['models']['ball'].get('gravity') == ['true'], 'the ball is not exported with gravity')
     e.quit()
 
 
+# The ball's second key 4 s after the first (BALL_TWO_KEYS_ANI's is at 2 s): while it moves,
+# screenshots taken on a loaded machine still catch it between its keys.
+BALL_SLOW_KEYS_ANI = BALL_ANI.replace('max_time_ms 5000', 'max_time_ms 6000') + \
+    BALL_TWO_KEYS_ANI[len(BALL_ANI):].replace('keyframe 2000', 'keyframe 4000')
+
+
 def case_play_space(c):
     """SPACE plays in real time (the ball interpolates between two keyframes and stops at its
-    last one), SPACE at the end plays again from the start, SPACE pauses; playing is not an edit."""
-    c.write('ball.ani', BALL_TWO_KEYS_ANI)
+    last one, and playback stops by itself at the end), SPACE at the end plays again from the
+    start, SPACE pauses where linear interpolation puts the ball at the time shown; playing is
+    not an edit."""
+    c.write('ball.ani', BALL_SLOW_KEYS_ANI)
+    key_ms, end_ms = 4000, 6000
     e = c.start('ball.ani')
     e.mouse_away()
     e.wait_baked()
     _, _, x0, y0, _ = ball_on_screen(e, 't0')
     check_moved('at t = 0', x0, y0, 0, 0)
     end_x = CX + 2.4 / METRES_PER_PIXEL
-    e.key('space', settle=False)  # watched while it plays
+    e.key('space', settle=False)  # watched while it plays, until it stops by itself at the end
     start = time.time()
     xs = []
-    while time.time() - start < 3.5:
+    while True:
+        asleep = e.idle_signal()[0] >= e.sent   # checked before the screenshot: it shows the end
         _, _, x, y, _ = ball_on_screen(e, 'playing')
         xs.append((time.time() - start, x))
         check(abs(y - 360) < 4, 'playing moved the ball off its line: y = %.1f' % y)
-    e.case.log('x over time: %s' % [(round(t, 2), round(x)) for t, x in xs])
+        if asleep:
+            break
+        check(e.running(), 'animator exited while playing')
+        check(time.time() - start < HANG_TIMEOUT, 'playback never stopped by itself at the end')
+    played = time.time() - start
+    e.settle()
+    e.case.log('x over time: %s; stopped after %.2f s' % ([(round(t, 2), round(x)) for t, x in xs], played))
+    check(e.shown_ms() == end_ms, 'playback stopped at %d ms, not at the end (%d ms)' % (e.shown_ms(), end_ms))
+    check(re.search(r'^animator: played to the end, 6000 ms$', e.stdout(), re.M), 'playback did not say it ended')
+    # Real time: frames are dropped, never sped up; a loaded machine can only take longer.
+    check(played > end_ms / 1000.0 - 0.2, 'the %d ms animation played in %.2f s of real time' % (end_ms, played))
     check([x for t, x in xs if x0 + 20 < x < end_x - 20], 'the ball never showed between its keyframes while playing: %s' % xs)
     check(all(b >= a - 1 for (_, a), (_, b) in zip(xs, xs[1:])), 'the ball went backwards while playing: %s' % xs)
-    check(abs(xs[-1][1] - end_x) < 4, 'after 3.5 s the ball is at x = %.1f, not at its last keyframe (%.1f)' % (xs[-1][1], end_x))
+    check(abs(xs[-1][1] - end_x) < 4, 'stopped at the end, the ball is at x = %.1f, not at its last keyframe (%.1f)' % (xs[-1][1], end_x))
 
-    e.set_time(5000)  # the end: SPACE plays again from the start
+    # At the end, SPACE plays again from the start.
     e.mouse_away()
     e.key('space', settle=False)
-    time.sleep(0.8)  # some playing (real time: frames are dropped, never slowed)
+    time.sleep(1.2)  # some playing (real time); the check uses the time the editor reached
     e.key('space')
-    _, _, xp, _, _ = ball_on_screen(e, 'paused')
+    t_ms = e.shown_ms()
+    _, _, xp, yp, _ = ball_on_screen(e, 'paused')
+    expected = x0 + min(t_ms, key_ms) / key_ms * 2.4 / METRES_PER_PIXEL  # linear interpolation
+    e.case.log('paused at %d ms: ball at x = %.1f, linear interpolation says %.1f' % (t_ms, xp, expected))
+    check(200 <= t_ms < key_ms - 200, 'paused at %d ms, not inside the motion (0..%d ms): the pause came late' % (t_ms, key_ms))
+    check(abs(xp - expected) < 3 and abs(yp - 360) < 4,
+          'paused at %d ms the ball is at (%.1f, %.1f); between its keys it should be at (%.1f, 360)' % (t_ms, xp, yp, expected))
     time.sleep(1.0)  # time that would move a playing ball
     _, _, xq, _, _ = ball_on_screen(e, 'still-paused')
-    check(x0 + 5 < xp < end_x - 5, 'paused after ~1 s of playing from the start, the ball is at x = %.1f' % xp)
     check(abs(xq - xp) < 1, 'the ball moved while paused: %.1f -> %.1f' % (xp, xq))
+    check(e.idle_signal()[2] == t_ms, 'the editor\'s time moved while paused')
     check(e.title() == 'animator - ball.ani', 'playing marked the document changed: %r' % e.title())
     e.quit()
 
