@@ -51,6 +51,7 @@ struct BakeContext {
     const std::function<bool(double)> *progress;
     std::map<std::string, double> *counts;
     std::vector<std::vector<ani_rotation_segment>> *rotations;
+    std::vector<ani_overlap> *overlaps;
 };
 
 // Euler angles (degrees in [0, 360), the documents' X-Y-Z convention) of a rotation segment at t.
@@ -146,6 +147,8 @@ void Timeline::truncate(double from) {
                    list.end());
         if (!list.empty() && list.back().t1 > from) list.back().t1 = from;
     }
+    overlaps_.erase(std::remove_if(overlaps_.begin(), overlaps_.end(), [&](const ani_overlap &o) { return o.t >= from; }),
+                    overlaps_.end());
     baked_until_ = std::min(baked_until_, from);
 }
 
@@ -198,7 +201,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         }
     };
 
-    BakeContext context{this, &segments_, &events_, &progress, &stats_.backend_counts, &rotations_};
+    BakeContext context{this, &segments_, &events_, &progress, &stats_.backend_counts, &rotations_, &overlaps_};
     ani_bake_sink sink{};
     sink.context = &context;
     sink.segment = [](void *c, const ani_motion_segment *s) {
@@ -213,6 +216,12 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     sink.rotation = [](void *c, const ani_rotation_segment *s) {
         auto *ctx = static_cast<BakeContext *>(c);
         if (s->model < ctx->rotations->size()) (*ctx->rotations)[s->model].push_back(*s);
+    };
+    sink.overlap = [](void *c, const ani_overlap *o) {
+        auto *ctx = static_cast<BakeContext *>(c);
+        const std::size_t n = ctx->segments->size();
+        if (o->a < n && o->b < n && o->a != o->b && std::isfinite(o->t) && std::isfinite(o->depth))
+            ctx->overlaps->push_back(*o);
     };
     sink.count = [](void *c, const char *name, double value) {
         if (name && std::isfinite(value)) (*static_cast<BakeContext *>(c)->counts)[name] += value;
@@ -313,6 +322,7 @@ void Timeline::edit(const Document &doc) {
     if (doc_.models().size() != segments_.size()) {
         segments_.assign(doc_.models().size(), {});
         rotations_.assign(doc_.models().size(), {});
+        overlaps_.clear();
     }
     if (baked_any_ && from < baked_until_) truncate(from);
 }

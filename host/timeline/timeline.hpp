@@ -78,6 +78,8 @@ class Timeline {
     const std::vector<ani_collision_event> &events() const { return events_; }
     // The backend's rotation segments of a model (only for a backend that turns models).
     const std::vector<ani_rotation_segment> &rotations(int model) const { return rotations_[static_cast<size_t>(model)]; }
+    // The pairs of models the backend found overlapping (each once, when found), in the order found.
+    const std::vector<ani_overlap> &overlaps() const { return overlaps_; }
     const BakeStats &stats() const { return stats_; }
     const std::string &backend_id() const { return physics_->info().id; }
     const KeyedMotion &keyed() const { return *keyed_; }
@@ -103,6 +105,7 @@ class Timeline {
     std::vector<std::vector<ani_motion_segment>> segments_;
     std::vector<ani_collision_event> events_;
     std::vector<std::vector<ani_rotation_segment>> rotations_; // per model, in time order
+    std::vector<ani_overlap> overlaps_;
     double baked_until_ = 0.0;
     bool baked_any_ = false;
     BakeStats stats_;

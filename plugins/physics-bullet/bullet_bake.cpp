@@ -1310,13 +1310,23 @@ class Bake {
         for (const auto &[key, touch] : touches()) {
             if (only && !only->count(key.first) && !only->count(key.second)) continue;
             if (touch.distance < -overlap_tolerance(touch.o0, touch.o1)) {
-                if (reported_.first(key.first, key.second, t))
+                if (reported_.first(key.first, key.second, t)) {
+                    if (sink_.overlap) {
+                        ani_overlap o{};
+                        o.t = t;
+                        o.a = static_cast<uint32_t>(touch.o0->getUserIndex());
+                        o.b = static_cast<uint32_t>(touch.o1->getUserIndex());
+                        o.normal = ani_vec3{touch.normal.x, touch.normal.y, touch.normal.z};
+                        o.depth = -touch.distance;
+                        sink_.overlap(sink_.context, &o);
+                    }
                     log(ANI_LOG_WARNING,
                         std::string("models '") + name_of(scene_.models[key.first]) + "' and '" +
                             name_of(scene_.models[key.second]) + "' overlap at t = " +
                             short_number(t) + " s by " + short_number(-touch.distance) +
                             " m: treated as touching (neither moves deeper into the other; "
                             "approaching, they collide at once; moving apart, they are let go)");
+                }
                 const glm::dvec3 relative =
                     velocity_of(touch.o0, touch.point) - velocity_of(touch.o1, touch.point);
                 const double along = glm::dot(relative, touch.normal);

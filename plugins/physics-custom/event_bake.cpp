@@ -1004,7 +1004,7 @@ class EventBake {
         // where its keys say: the pair is left alone until apart.
         const bool keyed = b.keyed() || (o && o->keyed());
         if (keyed) {
-            report_overlap(i, other, t, seen.depth);
+            report_overlap(i, other, t, seen.depth, seen.contact.normal);
             memory_.add(record);
             treat_as_touching(i, other, record);
             return;
@@ -1021,7 +1021,7 @@ class EventBake {
         }
         if (record.kind == OverlapRecord::Kind::kContactDistance && !(record.contact > 0.0))
             record.kind = OverlapRecord::Kind::kIgnored; // concentric: no direction to touch in
-        report_overlap(i, other, t, seen.depth);
+        report_overlap(i, other, t, seen.depth, seen.contact.normal);
         memory_.add(record);
         treat_as_touching(i, other, record);
 
@@ -1058,10 +1058,22 @@ class EventBake {
             ++bodies_[static_cast<size_t>(i)].overlapped_obstacles;
     }
 
-    void report_overlap(int i, int other, double t, double depth) {
+    // `normal` points from the other towards body i.
+    void report_overlap(int i, int other, double t, double depth, const glm::dvec3 &normal) {
         const uint32_t a = bodies_[static_cast<size_t>(i)].model, b = model_of(other);
         if (memory_.reported_before(a, b, t) || !reported_.insert(pair_key(i, other)).second)
             return;
+        const bool finite = std::isfinite(depth) && std::isfinite(normal.x) &&
+                            std::isfinite(normal.y) && std::isfinite(normal.z);
+        if (sink_->overlap && finite) {
+            ani_overlap o{};
+            o.t = t;
+            o.a = a;
+            o.b = b;
+            o.normal = ani_vec3{normal.x, normal.y, normal.z};
+            o.depth = depth;
+            sink_->overlap(sink_->context, &o);
+        }
         log_warning("models '" + std::string(name_of(scene_->models[a])) + "' and '" +
                     name_of(scene_->models[b]) + "' overlap at t = " + short_number(t) + " s by " +
                     short_number(depth) +
@@ -1292,7 +1304,9 @@ class EventBake {
             // Found inside each other by the advancement (keys that put it there): left alone
             // until apart, and said once.
             const int other = o ? j : -1 - obstacle;
-            report_overlap(i, other, out.t, -approach.gap(out.t));
+            Contact c;
+            const double gap = o ? gap_between(b, *o, out.t, &c) : gap_to_obstacle(b, *ob, out.t, &c);
+            report_overlap(i, other, out.t, -gap, c.normal);
             OverlapRecord record;
             record.model_a = b.model;
             record.model_b = model_of(other);

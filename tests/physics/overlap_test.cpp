@@ -53,6 +53,21 @@ Document ball_in_floor(double y0, glm::dvec3 velocity, bool dynamics = true) {
     return doc;
 }
 
+// The timeline holds one overlap, of `moved` and `other`, and moving `moved` by depth * normal
+// parts them (the pair may come either way round, the normal then the other way).
+void check_one_overlap(const Timeline &t, uint32_t moved, uint32_t other, glm::dvec3 normal,
+                       double depth, double tolerance) {
+    REQUIRE(t.overlaps().size() == 1);
+    const ani_overlap &o = t.overlaps()[0];
+    CHECK(o.t == 0.0);
+    const bool same = o.a == moved;
+    CHECK((same ? o.b : o.a) == other);
+    CHECK((same ? o.a : o.b) == moved);
+    const glm::dvec3 n = glm::dvec3(o.normal.x, o.normal.y, o.normal.z) * (same ? 1.0 : -1.0);
+    CHECK(glm::length(n - normal) < tolerance);
+    CHECK(o.depth == Approx(depth).margin(tolerance));
+}
+
 // The lowest the ball's center goes over [0, until], sampled densely and at every event.
 double lowest(const Timeline &t, double until) {
     double low = 1e300;
@@ -127,6 +142,10 @@ TEST_CASE("an overlap is said once over a bake made of many slices, and the slic
     whole->bake(10.0);
     CHECK(sliced_log.count("'ball' and 'floor' overlap") == 1);
     CHECK(whole_log.count("'ball' and 'floor' overlap") == 1);
+    // Reported to the host once too (the editor highlights the pair): the ball (radius 1) is
+    // 1 - y0 into the floor, and moving it up by that parts them.
+    check_one_overlap(*sliced, 1, 0, {0, 1, 0}, 1.0 - y0, 1e-12);
+    check_one_overlap(*whole, 1, 0, {0, 1, 0}, 1.0 - y0, 1e-12);
     REQUIRE(sliced->events().size() == whole->events().size());
     for (size_t k = 0; k < whole->events().size(); ++k)
         CHECK(sliced->events()[k].t == Approx(whole->events()[k].t).margin(1e-12));
@@ -148,6 +167,7 @@ TEST_CASE("a cube sunk into a floor never sinks deeper, with or without Dynamics
         CHECK(t->evaluate(4.0).models[1].center.y == Approx(0.5).margin(1e-9));
         CHECK(logged.count("'cube' and 'floor' overlap at t = 0 s by 0.5 m: treated as touching") ==
               1);
+        check_one_overlap(*t, 1, 0, {0, 1, 0}, 0.5, 1e-9);
     }
 }
 

@@ -108,6 +108,18 @@ typedef struct ani_rotation_segment {
     ani_vec3 w;    /* angular velocity, radians per second, world frame */
 } ani_rotation_segment;
 
+/* Since ABI 1.2: two models found overlapping when they start to interact (at the start of a
+ * bake, when a model becomes free inside another, or when its keys take it back inside one).
+ * The backend treats them as touching (docs/physics.md, "Models that start overlapping") and
+ * reports the pair once per bake, however the host slices it. Moving `a` by depth * normal (or
+ * `b` by -depth * normal) parts them. */
+typedef struct ani_overlap {
+    double t;        /* seconds, when found */
+    uint32_t a, b;   /* the two models */
+    ani_vec3 normal; /* unit, pointing from b towards a (zero when they share a center) */
+    double depth;    /* metres, > 0: how far a is into b along the normal */
+} ani_overlap;
+
 /* Where a bake reports what it finds; the host copies what it is given. */
 typedef struct ani_bake_sink {
     void *context;
@@ -123,6 +135,9 @@ typedef struct ani_bake_sink {
     /* Since ABI 1.1 (may be NULL): the rotation segments of models the backend turns, each
      * model's in time order. */
     void (*rotation)(void *context, const ani_rotation_segment *segment);
+    /* Since ABI 1.2 (a backend built for 1.2 runs only in a host of 1.2 or newer, which always
+     * sets this field, possibly to NULL): each pair found overlapping, when found. */
+    void (*overlap)(void *context, const ani_overlap *overlap);
 } ani_bake_sink;
 
 typedef struct ani_physics_api {
