@@ -28,6 +28,7 @@ Stdlib only. Needs Xvfb, xdotool and imagemagick (`import`, `convert`).
 """
 
 import argparse
+import math
 import os
 import random
 import re
@@ -1575,6 +1576,226 @@ def case_resize(c):
         _, _, _, mean = img.blob(lambda px: not is_background(px), (round(x) - 30, round(y) - 30, round(x) + 30, round(y) + 30))
         check_selected_tint('at %dx%d, clicked' % (w, h), mean, True)
         e.click(PANEL_RIGHT + 20, h - 20)  # empty space: deselect
+    e.quit()
+
+
+# --- The manual's walk-through on the demo scene (assets/scenes/simple.lua) ------------------------
+
+# simple.lua's camera: at (0, 4, 14) looking at (0, 1, 0), y up, a 50 degree vertical field of
+# view; its cube: the mesh spans -1..1, turned 30 degrees about y, its centre at (-1.5, 1, 0),
+# resting on the floor (the plane y = 0).
+SIMPLE_EYE = (0.0, 4.0, 14.0)
+SIMPLE_LOOK_AT = (0.0, 1.0, 0.0)
+CUBE_REST = (-1.5, 1.0, 0.0)
+CUBE_YAW = 30.0
+
+
+def _sub(a, b):
+    return tuple(x - y for x, y in zip(a, b))
+
+
+def _dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def _unit(a):
+    n = _dot(a, a) ** 0.5
+    return tuple(x / n for x in a)
+
+
+def _cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def simple_project(p, cx, h=HEIGHT):
+    """Where the demo scene's camera puts the world point p in a view centred at x = cx (a
+    pinhole camera; the field of view is vertical, over the view's height)."""
+    forward = _unit(_sub(SIMPLE_LOOK_AT, SIMPLE_EYE))
+    right = _unit(_cross(forward, (0.0, 1.0, 0.0)))
+    up = _cross(right, forward)
+    d = _sub(p, SIMPLE_EYE)
+    focal = (h / 2) / math.tan(math.radians(25.0))
+    depth = _dot(d, forward)
+    return cx + focal * _dot(d, right) / depth, h / 2 - focal * _dot(d, up) / depth
+
+
+def simple_depth(p):
+    """The distance of p in front of the demo scene's camera, along its view axis."""
+    return _dot(_sub(p, SIMPLE_EYE), _unit(_sub(SIMPLE_LOOK_AT, SIMPLE_EYE)))
+
+
+def cube_box(center, cx):
+    """The screen box (x0, y0, x1, y1) of the demo cube's 8 corners at `center`, projected."""
+    c, s = math.cos(math.radians(CUBE_YAW)), math.sin(math.radians(CUBE_YAW))
+    pts = [simple_project((center[0] + x * c + z * s, center[1] + y, center[2] - x * s + z * c), cx)
+           for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]
+    return (min(p[0] for p in pts), min(p[1] for p in pts), max(p[0] for p in pts), max(p[1] for p in pts))
+
+
+def outline_box(img, near_box, margin=40):
+    """The box of the selection outline's orange pixels within margin of near_box."""
+    box = (round(near_box[0]) - margin, round(near_box[1]) - margin, round(near_box[2]) + margin, round(near_box[3]) + margin)
+    xs, ys = [], []
+    for x, y, px in img.region(*box):
+        if near(px, OUTLINE_ORANGE, 40):
+            xs.append(x)
+            ys.append(y)
+    if len(xs) < 50:
+        return None, len(xs)
+    return (min(xs), min(ys), max(xs) + 1, max(ys) + 1), len(xs)
+
+
+def time_slider_x(ms, max_ms=20000):
+    """The x of the Time slider's grab at ms (Dear ImGui 1.86: a 10 px grab, 2 px padding)."""
+    x0, x1 = TIME_SLIDER_BOX[0], TIME_SLIDER_BOX[2]
+    return x0 + 2 + 5 + (x1 - x0 - 4 - 10) * ms / max_ms
+
+
+def check_cube_at(e, name, img, center, tol=4):
+    """The selected cube's outline (orange, 2 px outside its silhouette) is where the demo
+    camera projects the cube at `center` (the view beside the Model Interface)."""
+    want = cube_box(center, CX_SELECTED)
+    want = (want[0] - 2, want[1] - 2, want[2] + 2, want[3] + 2)
+    got, n = outline_box(img, want)
+    e.case.log('%s: cube outline %s (%d px), projection of (%.3f, %.3f, %.3f) %s'
+               % (name, got, n, center[0], center[1], center[2], tuple(round(v, 1) for v in want)))
+    check(got is not None, '%s: no selection outline near where the cube should be (%d orange pixels)' % (name, n))
+    off = max(abs(a - b) for a, b in zip(got, want))
+    check(off <= tol, '%s: the cube\'s outline is at %s, %.1f px from where the cube at (%.3f, %.3f, %.3f) projects, %s'
+          % (name, got, off, center[0], center[1], center[2], tuple(round(v) for v in want)))
+
+
+def case_tutorial(c):
+    """The manual's "Creating a simple animation" (docs/manual.md) on the demo scene, with the
+    mouse and keys: select the cube, tick Gravity and play (it rests on the floor), untick it;
+    drag the Time slider forward, Translate the cube (a keyframe), play from t = 0 (the cube
+    between its keys, then at its second); `x` exports animations/new.ani; renamed, reopened
+    after `q`, it shows the same picture at the second key."""
+    c.copy('assets/scenes/simple.lua')
+    e = c.start('simple.lua')
+    check(e.title() == 'animator - simple.lua', 'title %r' % e.title())
+
+    # 3. Click a model; in the Model Interface check Physics > Gravity; SPACE; uncheck Gravity.
+    box = cube_box(CUBE_REST, CX)  # nothing selected yet: the view's centre is CX
+    e.click(round((box[0] + box[2]) / 2), round((box[1] + box[3]) / 2))
+    e.mouse_away()
+    img = e.screenshot('selected')
+    check(model_panel_shown(img), 'no Model Interface after clicking the cube')
+    check_cube_at(e, 'selected', img, CUBE_REST)
+    e.click(*MODEL_GRAVITY_CHECKBOX)
+    e.wait_for(lambda: e.title() == 'animator - simple.lua *', 'the title to mark the change')
+    e.mouse_away()
+    e.wait_baked()
+    rest = e.screenshot('gravity-t0')
+    rest_box = cube_box(CUBE_REST, CX_SELECTED)
+    around = (round(rest_box[0]) - 4, round(rest_box[1]) - 4, round(rest_box[2]) + 4, round(rest_box[3]) + 4)
+    t_prev = 0
+    for i in range(2):
+        e.key('space', settle=False)
+        time.sleep(1.0)  # some real time of playing; the checks use the time the editor reached
+        e.key('space')
+        t_ms = e.shown_ms()
+        img = e.screenshot('gravity-paused-%d' % i)
+        # Had it fallen from rest with nothing under it, it would be g t^2 / 2 lower by now.
+        drop = 9.81 * (t_ms / 1000.0) ** 2 / 2
+        fallen = cube_box((CUBE_REST[0], CUBE_REST[1] - drop, CUBE_REST[2]), CX_SELECTED)
+        e.case.log('paused at %d ms: a free fall would have taken the cube %.2f m (%.0f px) down' % (t_ms, drop, fallen[3] - rest_box[3]))
+        check(t_ms > t_prev and fallen[3] - rest_box[3] > 20,
+              'paused at %d ms (after %d ms): too early for a fall to show' % (t_ms, t_prev))
+        check_cube_at(e, 'with gravity, at %d ms' % t_ms, img, CUBE_REST)
+        # It rests: its pixels are those at t = 0 (not sunk into the floor, not moving).
+        n = same_pixels(rest, img, around)
+        e.case.log('with gravity, at %d ms: %d pixels around the cube differ from t = 0' % (t_ms, n))
+        check(n < 20, 'with gravity the cube\'s picture at %d ms differs from t = 0 in %d pixels' % (t_ms, n))
+        t_prev = t_ms
+    e.click(*MODEL_GRAVITY_CHECKBOX)
+    # Unticked, the document is as opened again.
+    e.wait_for(lambda: e.title() == 'animator - simple.lua', 'the title to drop " *" once Gravity is unticked')
+
+    # 4. Drag the Time slider forward, Translate mode, drag the cube: a keyframe appears.
+    grab = round(time_slider_x(t_prev))
+    e.drag((grab, TIME_SLIDER[1]), (grab + 30, TIME_SLIDER[1]), button=1)
+    key_ms = e.shown_ms()
+    e.case.log('the Time slider dragged from %d ms to %d ms' % (t_prev, key_ms))
+    check(t_prev + 1000 < key_ms < 20000, 'dragging the Time slider 30 px forward from %d ms went to %d ms' % (t_prev, key_ms))
+    e.click(*MODE_TRANSLATE)
+    mpp = 2 * simple_depth(CUBE_REST) * math.tan(math.radians(25.0)) / HEIGHT
+    dx, dy = 40, -120  # right and up: clear of the other models
+    key_center = (CUBE_REST[0] + dx * mpp, CUBE_REST[1] - dy * mpp, CUBE_REST[2])
+    start = [round(v) for v in simple_project(CUBE_REST, CX_SELECTED)]
+    e.drag(start, (start[0] + dx, start[1] + dy), button=3)
+    e.mouse_away()
+    img = e.screenshot('dragged')
+    check(keyframe_rows(img) == 2, 'no second keyframe in the list after the drag (%d rows)' % keyframe_rows(img))
+    check_cube_at(e, 'dragged at %d ms' % key_ms, img, key_center)
+    e.wait_for(lambda: e.title() == 'animator - simple.lua *', 'the title to mark the new keyframe')
+
+    # Select the t = 0 keyframe and press SPACE: the cube moves by interpolation.
+    e.click(*KEYFRAME_ROW0)
+    e.mouse_away()
+    check(e.shown_ms() == 0, 'the t = 0 keyframe shows %d ms' % e.shown_ms())
+    check_cube_at(e, 'at the t = 0 keyframe', e.screenshot('key0'), CUBE_REST)
+    e.key('space', settle=False)
+    time.sleep(1.0)  # partway (real time); the check uses the time the editor reached
+    e.key('space')
+    t_ms = e.shown_ms()
+    check(200 < t_ms < key_ms - 200, 'paused at %d ms, not between the keys (0 and %d ms): the pause came late' % (t_ms, key_ms))
+    f = t_ms / key_ms  # linear interpolation, the default (docs/interpolation.md)
+    check_cube_at(e, 'partway, at %d ms' % t_ms, e.screenshot('partway'),
+                  tuple(a + f * (b - a) for a, b in zip(CUBE_REST, key_center)))
+    for _ in range(5):  # on to the second key's time, paused there or past it
+        if t_ms >= key_ms:
+            break
+        e.key('space', settle=False)
+        time.sleep(max(0.3, (key_ms - t_ms) / 1000.0 + 0.3))
+        e.key('space')
+        t_ms = e.shown_ms()
+    check(key_ms <= t_ms < 20000, 'playing on, paused at %d ms: not past the second key (%d ms) and before the end' % (t_ms, key_ms))
+    check_cube_at(e, 'after the second key, at %d ms' % t_ms, e.screenshot('second-key'), key_center)
+
+    # 5. `x` exports to animations/new.ani.
+    e.key('x')
+    e.wait_log(r'^animator: exported to animations/new\.ani$', 'the export to animations/new.ani')
+    e.wait_for(lambda: e.title() == 'animator - new.ani', 'the title to name the exported file')
+    doc = parse_ani(c.path('animations/new.ani'))
+    check(sorted(doc['keyframes']) == [0, key_ms], 'exported keyframes %s, expected [0, %d]' % (sorted(doc['keyframes']), key_ms))
+    k = doc['keyframes'][key_ms]
+    check(list(k['states']) == ['cube'] and k['camera'] is None, 'the new keyframe should key the cube only: %s' % k)
+    got = k['states']['cube']['center']
+    check(all(abs(a - b) < 0.03 * abs(b - r) + 0.02 for a, b, r in zip(got, key_center, CUBE_REST)),
+          'the cube\'s second key is at %s, expected about %s (dragged %d px right, %d px up)'
+          % (got, tuple(round(v, 3) for v in key_center), dx, -dy))
+    check(doc['keyframes'][0]['states']['cube']['center'] == CUBE_REST, 'the cube\'s first key moved: %s' % (doc['keyframes'][0]['states']['cube'],))
+    check(doc['models']['cube'].get('gravity') != ['true'], 'the cube is exported with gravity, unticked before')
+
+    # The picture at the second key, to compare with the reopened file's.
+    e.click(KEYFRAME_ROW0[0], KEYFRAME_ROW0[1] + KEYFRAME_ROW_STEP)
+    e.click(800, 40)  # the sky: deselects
+    e.mouse_away()
+    check(e.shown_ms() == key_ms, 'the second keyframe shows %d ms' % e.shown_ms())
+    before = e.screenshot('second-key-exported')
+    check(not model_panel_shown(before), 'a click on the sky did not deselect the cube')
+
+    # Rename it; 6. quit (q) and run `animator renamed.ani`.
+    os.rename(c.path('animations/new.ani'), c.path('renamed.ani'))
+    e.quit()
+    e = c.start('renamed.ani', name='renamed')
+    check(e.title() == 'animator - renamed.ani', 'title %r' % e.title())
+    e.click(KEYFRAME_ROW0[0], KEYFRAME_ROW0[1] + KEYFRAME_ROW_STEP)
+    e.mouse_away()
+    check(e.shown_ms() == key_ms, 'the reopened file\'s second keyframe shows %d ms, not %d' % (e.shown_ms(), key_ms))
+    after = e.screenshot('renamed-second-key')
+    check(keyframe_rows(after) == 2, 'the reopened file does not list two keyframes')
+    view = (PANEL_RIGHT + 10, 0, WIDTH, HEIGHT)
+    n = same_pixels(before, after, view)
+    e.case.log('reopened, at the second key: %d pixels differ from the picture exported' % n)
+    check(n < 50, 'reopened, the picture at the second key differs in %d pixels from the one exported' % n)
+    # A check that can tell: the picture at t = 0 differs there (the cube moved).
+    e.click(*KEYFRAME_ROW0)
+    e.mouse_away()
+    n0 = same_pixels(e.screenshot('renamed-t0'), after, view)
+    e.case.log('reopened, t = 0 and the second key: %d pixels differ' % n0)
+    check(n0 > 2000, 'the reopened file shows the same picture at t = 0 and at the second key (%d pixels differ)' % n0)
     e.quit()
 
 
