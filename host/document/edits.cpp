@@ -12,6 +12,16 @@ void SetStateEdit::apply(Document &doc) {
 
 void SetStateEdit::revert(Document &doc) { doc.set_state(keyframe_ms_, model_, before_); }
 
+void MoveKeyEdit::apply(Document &doc) {
+    const Keyframe &k = doc.keyframe_at(keyframe_ms_);
+    if (model_ < 0 || model_ >= static_cast<int>(k.states.size()) || !k.states[static_cast<size_t>(model_)])
+        throw DocumentError("model " + std::to_string(model_) + " has no key at " + std::to_string(keyframe_ms_) + " ms");
+    before_ = *k.states[static_cast<size_t>(model_)];
+    ModelState after = before_;
+    after.center += offset_;
+    doc.set_state(keyframe_ms_, model_, after);
+}
+
 void SetCameraEdit::apply(Document &doc) {
     before_ = doc.keyframe_at(keyframe_ms_).camera;
     doc.set_camera(keyframe_ms_, after_);

@@ -43,6 +43,25 @@ class SetStateEdit final : public Edit {
     std::optional<ModelState> before_, after_;
 };
 
+// Moves a model's key by an offset, as an edit of the whole document (its undo is reachable at
+// any keyframe, as it is made wherever the user is in time): the editor's fix of an overlap.
+class MoveKeyEdit final : public Edit {
+  public:
+    MoveKeyEdit(std::string label, std::int64_t keyframe_ms, int model, glm::dvec3 offset)
+        : label_(std::move(label)), keyframe_ms_(keyframe_ms), model_(model), offset_(offset) {}
+    // Throws DocumentError when the model has no key at that keyframe.
+    void apply(Document &doc) override;
+    void revert(Document &doc) override { doc.set_state(keyframe_ms_, model_, before_); }
+    std::string label() const override { return label_; }
+
+  private:
+    std::string label_;
+    std::int64_t keyframe_ms_;
+    int model_;
+    glm::dvec3 offset_;
+    ModelState before_;
+};
+
 class SetCameraEdit final : public Edit {
   public:
     SetCameraEdit(std::int64_t keyframe_ms, std::optional<CameraState> camera)

@@ -457,7 +457,7 @@ int run_editor(const EditorOptions &options) {
             target.width = static_cast<int>(std::lround(view.width * to_fb));
             target.height = static_cast<int>(std::lround(view.height * to_fb));
             target.y = fb_h - static_cast<int>(std::lround(view.y * to_fb)) - target.height; // GL's rows go up
-            if (target.width > 0 && target.height > 0) renderer.draw(session.shown_frame(), target, session.selection());
+            if (target.width > 0 && target.height > 0) renderer.draw(session.shown_frame(), target, session.selection(), session.overlapping_models());
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, fb_w, fb_h);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

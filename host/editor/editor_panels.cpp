@@ -1,5 +1,6 @@
 #include "editor/editor_panels.hpp"
 
+#include "editor/overlap_fix.hpp"
 #include "editor/status_line.hpp"
 #include "render/renderer.hpp"
 
@@ -303,6 +304,43 @@ void Panels::cel_outline(Settings &s, EditorSession &session) {
     ImGui::EndDisabled();
 }
 
+// The pairs the backend found overlapping (the view rings them in red), each with its fix.
+void Panels::overlaps(EditorSession &session) {
+    const auto &found = session.overlaps();
+    const std::size_t shown = std::min<std::size_t>(found.size(), 3);
+    for (std::size_t i = 0; i < shown; ++i) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", describe_overlap(session.document(), found[i]).c_str());
+        ImGui::PopStyleColor();
+        std::string why;
+        const auto lift = plan_lift_out(session.document(), session.meshes(), found[i], &why);
+        if (!lift) {
+            ImGui::TextDisabled("%s", why.c_str());
+            continue;
+        }
+        const std::string name = session.document().models()[static_cast<size_t>(lift->moved)].name;
+        ImGui::PushID(static_cast<int>(i));
+        const bool clicked = ImGui::SmallButton(("Lift '" + name + "' out").c_str());
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Moves '%s' %.3g m the shortest way out (its key at %.3f s): one edit, u undoes it.",
+                              name.c_str(), glm::length(lift->offset), static_cast<double>(lift->keyframe_ms) / 1000.0);
+        ImGui::PopID();
+        if (clicked) {
+            // The edit re-bakes: the list is found again, so this frame shows no more of it.
+            std::string error;
+            char distance[32];
+            std::snprintf(distance, sizeof distance, "%.3g", glm::length(lift->offset));
+            const std::string other = session.document().models()[static_cast<size_t>(lift->other)].name;
+            if (session.lift_out(i, &error))
+                say("lifted '" + name + "' " + distance + " m out of '" + other + "' (u undoes it)");
+            else
+                say("could not " + lift->label + ": " + error, true);
+            return;
+        }
+    }
+    if (found.size() > shown) ImGui::TextDisabled("and %zu more overlapping pairs", found.size() - shown);
+}
+
 void Panels::physics_backend(EditorSession &session) {
     const std::string current = session.backend();
     if (ImGui::BeginCombo("Physics", current.c_str())) {
@@ -327,6 +365,7 @@ void Panels::physics_backend(EditorSession &session) {
     } else {
         ImGui::ProgressBar(1.0f, ImVec2(-1, 0), "baked");
     }
+    overlaps(session);
 
     // The backend's parameters, saved in the document (settings.params[backend]).
     const PluginInfo *info = env_.plugins.find(current);

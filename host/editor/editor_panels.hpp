@@ -47,6 +47,7 @@ class Panels {
     void animator_panel(EditorSession &session, float height, double wall);
     void model_panel(EditorSession &session, float width, float height);
     void physics_backend(EditorSession &session);
+    void overlaps(EditorSession &session);
     void dialogs(EditorSession &session);
     void commit(bool ok, const std::string &error);
     void cel_outline(Settings &s, EditorSession &session);

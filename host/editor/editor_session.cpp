@@ -1,5 +1,6 @@
 #include "editor/editor_session.hpp"
 
+#include "editor/overlap_fix.hpp"
 #include "editor/time_steps.hpp"
 #include "io/document_io.hpp"
 #include "render/frustum.hpp"
@@ -340,6 +341,20 @@ bool EditorSession::set_model(int index, const Model &model, std::string *error)
 
 bool EditorSession::delete_keyframe(std::int64_t time_ms, std::string *error) {
     return perform(std::make_unique<DeleteKeyframeEdit>(time_ms), error);
+}
+
+std::set<int> EditorSession::overlapping_models() const {
+    return animator::overlapping_models(timeline_->overlaps(), doc_.models().size());
+}
+
+bool EditorSession::lift_out(std::size_t index, std::string *error) {
+    const auto &found = timeline_->overlaps();
+    if (index >= found.size()) {
+        if (error) *error = "no such overlap";
+        return false;
+    }
+    const auto lift = plan_lift_out(doc_, meshes_, found[index], error);
+    return lift && perform(lift_out_edit(*lift), error);
 }
 
 bool EditorSession::undo() {

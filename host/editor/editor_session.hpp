@@ -112,6 +112,13 @@ class EditorSession {
     bool set_settings(const Settings &settings, std::string *error = nullptr);
     bool set_model(int index, const Model &model, std::string *error = nullptr);
     bool delete_keyframe(std::int64_t time_ms, std::string *error = nullptr);
+
+    // Pairs of models the backend found overlapping in what is baked (each once; the view flags
+    // them), and the fix (overlap_fix.hpp): lifts one of pair `index` out of the other the
+    // shortest way, one undoable edit (of the whole document, so Undo takes it back at any time).
+    const std::vector<ani_overlap> &overlaps() const { return timeline_->overlaps(); }
+    std::set<int> overlapping_models() const;
+    bool lift_out(std::size_t index, std::string *error = nullptr);
     // Undo and redo at the current keyframe (its own stack, then the document's).
     bool undo();
     bool redo();

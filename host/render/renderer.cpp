@@ -217,7 +217,8 @@ void Renderer::draw_transparent(int m, bool selected) {
     draw_model(m, selected, 0);
 }
 
-void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::set<int> &selected) {
+void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::set<int> &selected,
+                    const std::set<int> &flagged) {
     stats_ = RenderStats{};
     bound_[0] = bound_[1] = 0;
     current_program_ = nullptr;
@@ -263,7 +264,8 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     glEnable(GL_CULL_FACE);
     for (const auto &[depth, m] : transparent_) draw_transparent(m, selected.count(m) > 0);
     glDisable(GL_CULL_FACE);
-    if (options_.selection_outline && !selected.empty()) draw_selection_outline(selected, target.width, target.height);
+    if (options_.selection_outline && (!selected.empty() || !flagged.empty()))
+        draw_outlines(selected, flagged, target.width, target.height);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     glBindVertexArray(0);
@@ -271,19 +273,22 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     glActiveTexture(GL_TEXTURE0);
 }
 
-void Renderer::draw_selection_outline(const std::set<int> &selected, int width, int height) {
+void Renderer::draw_outlines(const std::set<int> &selected, const std::set<int> &flagged, int width, int height) {
     if (!outline_) outline_ = std::make_unique<SelectionOutline>();
     current_program_ = nullptr; // the outline binds its own program
     const int count = static_cast<int>(std::min(models_.size(), world_.size()));
-    auto each = [&](auto &&draw) {
-        for (int m : selected)
+    auto each = [&](const std::set<int> &models, auto &&draw) {
+        for (int m : models)
             if (m >= 0 && m < count && gpu_meshes_[static_cast<size_t>(m)] && visible(m))
                 draw(*gpu_meshes_[static_cast<size_t>(m)], glm::mat4(world_[static_cast<size_t>(m)]));
     };
     outline_->begin(glm::mat4(view_projection_), width, height);
-    // Every silhouette first, so one selected model's ring never covers another selected one.
-    each([&](const GpuMesh &mesh, const glm::mat4 &world) { outline_->mark(mesh, world); });
-    each([&](const GpuMesh &mesh, const glm::mat4 &world) { outline_->outline(mesh, world, options_.outline_style); });
+    // Every selected silhouette first, so one selected model's ring never covers another. The
+    // wider flagged rings next, each keeping off its own silhouette only (a flagged cube on a
+    // flagged floor is ringed over the floor), then the selection's over their inner part.
+    each(selected, [&](const GpuMesh &mesh, const glm::mat4 &world) { outline_->mark(mesh, world); });
+    each(flagged, [&](const GpuMesh &mesh, const glm::mat4 &world) { outline_->outline_alone(mesh, world, options_.flagged_style); });
+    each(selected, [&](const GpuMesh &mesh, const glm::mat4 &world) { outline_->outline(mesh, world, options_.outline_style); });
     outline_->end();
 }
 

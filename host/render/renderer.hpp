@@ -47,6 +47,9 @@ struct RenderOptions {
     // A ring around each selected model that reads on any colour (selection_outline.hpp).
     bool selection_outline = true;
     OutlineStyle outline_style;
+    // A wider ring around each flagged model (the editor flags models found overlapping): red,
+    // edged in white; a flagged model that is also selected shows both rings.
+    OutlineStyle flagged_style{{0.95f, 0.1f, 0.1f}, {1.0f, 1.0f, 1.0f}, 7.0f, 9.0f};
     double near_plane = 0.1, far_plane = 1000.0;
 };
 
@@ -81,8 +84,9 @@ class Renderer {
     // saved values (the others to their defaults); throws PluginError for a value it refuses.
     void set_document(const Document &doc, const std::vector<std::shared_ptr<const Mesh>> &meshes);
 
-    // Draws `frame` into `target` (cleared first). `selected` holds model indices.
-    void draw(const Frame &frame, const RenderTarget &target, const std::set<int> &selected = {});
+    // Draws `frame` into `target` (cleared first). `selected` and `flagged` hold model indices.
+    void draw(const Frame &frame, const RenderTarget &target, const std::set<int> &selected = {},
+              const std::set<int> &flagged = {});
 
     // The model drawn at pixel (x, y), from the top left of a target of this size, or -1.
     int pick(const Frame &frame, int width, int height, int x, int y);
@@ -119,7 +123,7 @@ class Renderer {
     std::unique_ptr<GpuMesh> skybox_cube_;
     std::unique_ptr<PickingPass> picking_;
     std::unique_ptr<SelectionOutline> outline_;
-    void draw_selection_outline(const std::set<int> &selected, int width, int height);
+    void draw_outlines(const std::set<int> &selected, const std::set<int> &flagged, int width, int height);
 
     // Per frame, kept to reuse their storage.
     std::vector<glm::dmat4> world_;

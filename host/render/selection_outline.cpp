@@ -82,11 +82,30 @@ void SelectionOutline::ring(const GpuMesh &mesh, const glm::mat4 &model, float p
 
 void SelectionOutline::outline(const GpuMesh &mesh, const glm::mat4 &model, const OutlineStyle &style) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    // Outside every selected silhouette only; the wide dark band first, the light one over it.
-    glStencilFunc(GL_NOTEQUAL, 1, 0xFF);
+    // Outside every selected silhouette only (bit 1); the wide dark band first, the light one
+    // over it.
+    glStencilFunc(GL_NOTEQUAL, 1, 0x01);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     ring(mesh, model, style.outer_pixels, style.outer);
     ring(mesh, model, style.inner_pixels, style.inner);
+}
+
+void SelectionOutline::outline_alone(const GpuMesh &mesh, const glm::mat4 &model, const OutlineStyle &style) {
+    // Its own silhouette in bit 2 (cleared first), with no colour.
+    glStencilMask(0x02);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glStencilFunc(GL_ALWAYS, 0x02, 0x02);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glUniform1f(pixels_location_, 0.0f);
+    mark(mesh, model);
+    // The ring outside it and outside every selected silhouette.
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glStencilFunc(GL_EQUAL, 0, 0x03);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    ring(mesh, model, style.outer_pixels, style.outer);
+    ring(mesh, model, style.inner_pixels, style.inner);
+    glStencilMask(0xFF);
 }
 
 void SelectionOutline::end() {

@@ -92,14 +92,14 @@ Frame first_frame(const Document &doc) {
 }
 
 Rendered render_frame(const Document &doc, const Frame &frame, int width, int height,
-                      const std::set<int> &selected, RenderOptions options) {
+                      const std::set<int> &selected, RenderOptions options, const std::set<int> &flagged) {
     gl_context();
     Rendered out;
     Renderer renderer(environment().plugins, environment().assets, std::move(options),
                       [&](const std::string &m) { out.log.push_back(m); });
     renderer.set_document(doc, meshes_of(doc));
     OffscreenFramebuffer framebuffer(width, height);
-    renderer.draw(frame, framebuffer.target(), selected);
+    renderer.draw(frame, framebuffer.target(), selected, flagged);
     out.stats = renderer.stats();
     out.image.width = width;
     out.image.height = height;
@@ -108,8 +108,8 @@ Rendered render_frame(const Document &doc, const Frame &frame, int width, int he
 }
 
 Rendered render_document(const Document &doc, int width, int height, const std::set<int> &selected,
-                         RenderOptions options) {
-    return render_frame(doc, first_frame(doc), width, height, selected, std::move(options));
+                         RenderOptions options, const std::set<int> &flagged) {
+    return render_frame(doc, first_frame(doc), width, height, selected, std::move(options), flagged);
 }
 
 glm::ivec3 pixel(const Image &image, int x, int y) {

@@ -46,10 +46,12 @@ struct Rendered {
 
 // Draws `frame` of `doc` into a fresh off-screen framebuffer of width x height.
 Rendered render_frame(const Document &doc, const Frame &frame, int width, int height,
-                      const std::set<int> &selected = {}, RenderOptions options = {});
+                      const std::set<int> &selected = {}, RenderOptions options = {},
+                      const std::set<int> &flagged = {});
 // The same for the first frame.
 Rendered render_document(const Document &doc, int width = 160, int height = 120,
-                         const std::set<int> &selected = {}, RenderOptions options = {});
+                         const std::set<int> &selected = {}, RenderOptions options = {},
+                         const std::set<int> &flagged = {});
 
 // The colour at pixel (x, y) from the top left.
 glm::ivec3 pixel(const Image &image, int x, int y);

@@ -1,7 +1,8 @@
 // The selection outline (render/selection_outline.hpp), golden-free: a yellow ball, selected,
 // on which the yellow tint alone shows nothing. Around its silhouette the ring has the outline's
 // colours (the light band next to the ball, the dark band outside it); inside, the ball's pixels
-// are exactly those drawn without the outline; an unselected ball gets no ring.
+// are exactly those drawn without the outline; an unselected ball gets no ring. A flagged ball
+// (the editor flags models found overlapping) gets a wider red ring, and both when selected too.
 #include "render_support.hpp"
 
 #include <catch2/catch.hpp>
@@ -94,4 +95,51 @@ TEST_CASE("an unselected model gets no outline") {
         CHECK(near_colour(at_angle(image, a, r + 3.3), RenderOptions{}.background, 4));
         CHECK_FALSE(near_colour(at_angle(image, a, r + 1.0), style.inner));
     }
+}
+
+TEST_CASE("a flagged model gets a wider red ring, and a selected one both rings") {
+    const Document doc = yellow_ball();
+    const RenderOptions options;
+    const OutlineStyle &flag = options.flagged_style, &select = options.outline_style;
+    const double r = silhouette_radius();
+    const Image flagged = render_document(doc, kWidth, kHeight, {}, options, {0}).image;
+    const Image both = render_document(doc, kWidth, kHeight, {0}, options, {0}).image;
+    const int samples = 72;
+    int red_near = 0, red_far = 0, white = 0, beyond = 0, both_select = 0, both_red = 0;
+    for (int i = 0; i < samples; ++i) {
+        const double a = 2.0 * M_PI * i / samples;
+        red_near += near_colour(at_angle(flagged, a, r + 1.0), flag.inner);
+        red_far += near_colour(at_angle(flagged, a, r + 5.5), flag.inner);
+        white += near_colour(at_angle(flagged, a, r + 8.0), flag.outer);
+        beyond += near_colour(at_angle(flagged, a, r + 12.0), options.background, 4);
+        // Selected too: the selection's bands next to the ball, the red one outside them.
+        both_select += near_colour(at_angle(both, a, r + 1.0), select.inner) &&
+                       near_colour(at_angle(both, a, r + 3.3), select.outer);
+        both_red += near_colour(at_angle(both, a, r + 5.5), flag.inner);
+    }
+    INFO("of " << samples << ": red near " << red_near << ", red far " << red_far << ", white " << white
+               << ", background beyond " << beyond << "; selected too: selection " << both_select
+               << ", red " << both_red);
+    CHECK(red_near >= samples * 9 / 10);
+    CHECK(red_far >= samples * 9 / 10);
+    CHECK(white >= samples * 9 / 10);
+    CHECK(beyond == samples);
+    CHECK(both_select >= samples * 9 / 10);
+    CHECK(both_red >= samples * 9 / 10);
+}
+
+TEST_CASE("a flagged model in front of a flagged wall is ringed over the wall") {
+    // The editor flags both models of an overlapping pair: a cube sunk in a floor has the
+    // floor's pixels all around it, and its ring must still show.
+    Document doc = yellow_ball();
+    doc.add_model(make_model("wall", "plane", {0.2, 0.3, 0.9}), make_state({0, 0, -4}, glm::dvec3(30.0), {90, 0, 0}));
+    const RenderOptions options;
+    const Image image = render_document(doc, kWidth, kHeight, {}, options, {0, 1}).image;
+    const double r = silhouette_radius();
+    int red = 0;
+    for (int i = 0; i < 72; ++i) red += near_colour(at_angle(image, 2.0 * M_PI * i / 72, r + 3.0), options.flagged_style.inner);
+    // And the wall is there behind: far from the ball, its blue.
+    const glm::ivec3 corner = pixel(image, 5, 5);
+    CHECK(corner.z > corner.x + 40);
+    CHECK(red >= 72 * 9 / 10);
 }
