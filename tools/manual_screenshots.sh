@@ -38,7 +38,8 @@ for _ in $(seq 600); do grep -q '^animator: idle' "$work/log" && break; sleep 0.
 
 shot() { sleep "${2:-0.6}"; import -window root "$out/$1.png"; }
 # ImGui 1.86 sees one mouse position per frame: give it a moment between actions.
-click() { xdotool mousemove --window "$win" "$1" "$2" click 1; sleep 0.4; }
+# The pointer moves first and rests: a click sent with the move may land where it was before.
+click() { xdotool mousemove --window "$win" "$1" "$2"; sleep 0.3; xdotool click 1; sleep 0.4; }
 
 xdotool windowfocus --sync "$win"
 shot 01-editor
@@ -59,7 +60,7 @@ xdotool key Return
 sleep 0.4
 xdotool mousemove --window "$win" 560 380 mousedown 3
 for dx in 20 40 60 80 100 120 140 160; do
-  xdotool mousemove --window "$win" $((560 + dx)) $((380 - dx / 4))
+  xdotool mousemove --window "$win" $((560 - dx / 4)) $((380 - dx / 2))   # up and a little left, clear of the cylinder
   sleep 0.05
 done
 xdotool mouseup 3
@@ -74,4 +75,26 @@ done
 xdotool mouseup 1 keyup alt
 xdotool mousemove --window "$win" 640 650 click 5 click 5 click 5 click 5   # the wheel: zoom out
 shot 06-free-view
-echo "wrote 6 screenshots to $out"
+
+# Models inside each other: the demo's cube as it once was, half inside the floor.
+kill "$editor"; wait "$editor" 2>/dev/null || true
+sed 's/cube:translate(-1.5, 1, 0).*/cube:translate(-1.5, 0.5, 0)/' assets/scenes/simple.lua > "$work/sunk.lua"
+grep -q 'translate(-1.5, 0.5, 0)' "$work/sunk.lua" || { echo "simple.lua changed: no cube to sink" >&2; exit 1; }
+: > "$work/log"
+(cd "$work" && ANIMATOR_EDITOR_SIGNALS=1 exec "$bin" sunk.lua) >"$work/log" 2>&1 &
+editor=$!
+win=""
+for _ in $(seq 50); do
+  win=$(xdotool search --pid "$editor" --name '^animator' 2>/dev/null | head -1 || true)
+  [ -n "$win" ] && break
+  sleep 0.2
+done
+[ -n "$win" ] || { echo "the editor did not open a window:" >&2; cat "$work/log" >&2; exit 1; }
+for _ in $(seq 600); do grep -q '^animator: idle' "$work/log" && break; sleep 0.1; done
+xdotool windowfocus --sync "$win"
+click 735 390                  # the cube, sunk half into the floor (the view spans the window right of the panel)
+click 927 109                  # Model Interface > Physics > Gravity: the bake finds them overlapping
+for _ in $(seq 600); do grep -q "overlap at t = 0 s" "$work/log" && break; sleep 0.1; done
+xdotool mousemove --window "$win" 700 650
+shot 07-overlap 1.5
+echo "wrote 7 screenshots to $out"

@@ -60,9 +60,16 @@ std::optional<LiftOut> plan_lift_out(const Document &doc, const std::vector<std:
     if (!(glm::length(normal) > 0.5) || !(overlap.depth > 0.0) || !std::isfinite(overlap.depth))
         return fail(describe_overlap(doc, overlap) + " with no way out to lift along (one center)");
     const Model &ma = doc.models()[overlap.a], &mb = doc.models()[overlap.b];
+    // A key at the overlap's time put that model there (a drag that keys a model into another).
+    auto keyed_then = [&](int m) {
+        const Keyframe *k = key_before(doc, group_root(doc, m), overlap.t);
+        return k && overlap.t > 0.0 && std::abs(static_cast<double>(k->time_ms) / 1000.0 - overlap.t) < 0.0015;
+    };
     bool move_a = true;
     if (moved_by_physics(ma) != moved_by_physics(mb))
         move_a = moved_by_physics(ma);
+    else if (keyed_then(a) != keyed_then(b))
+        move_a = keyed_then(a);
     else
         move_a = size_of(doc, meshes, a, overlap.t) <= size_of(doc, meshes, b, overlap.t);
 

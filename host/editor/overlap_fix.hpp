@@ -28,7 +28,8 @@ struct LiftOut {
 };
 
 // Of the pair, the model that physics moves (Dynamics or Gravity) is lifted out of the other;
-// of two such or none, the smaller (bounding sphere). The offset is the backend's depth along
+// of two such or none, the one with a key at the overlap's time (the key that put it there),
+// else the smaller (bounding sphere). The offset is the backend's depth along
 // its normal: the shortest way out it measured. Nullopt (with the reason) when no model can move
 // (a pair with no direction: two spheres with one center).
 std::optional<LiftOut> plan_lift_out(const Document &doc, const std::vector<std::shared_ptr<const Mesh>> &meshes,

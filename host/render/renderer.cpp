@@ -285,7 +285,7 @@ void Renderer::draw_outlines(const std::set<int> &selected, const std::set<int> 
     outline_->begin(glm::mat4(view_projection_), width, height);
     // Every selected silhouette first, so one selected model's ring never covers another. The
     // wider flagged rings next, each keeping off its own silhouette only (a flagged cube on a
-    // flagged floor is ringed over the floor), then the selection's over their inner part.
+    // flagged or selected floor is ringed over the floor), then the selection's over them.
     each(selected, [&](const GpuMesh &mesh, const glm::mat4 &world) { outline_->mark(mesh, world); });
     each(flagged, [&](const GpuMesh &mesh, const glm::mat4 &world) { outline_->outline_alone(mesh, world, options_.flagged_style); });
     each(selected, [&](const GpuMesh &mesh, const glm::mat4 &world) { outline_->outline(mesh, world, options_.outline_style); });

@@ -99,9 +99,9 @@ void SelectionOutline::outline_alone(const GpuMesh &mesh, const glm::mat4 &model
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     glUniform1f(pixels_location_, 0.0f);
     mark(mesh, model);
-    // The ring outside it and outside every selected silhouette.
+    // The ring outside it (over other models, selected ones too: their own rings come after).
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glStencilFunc(GL_EQUAL, 0, 0x03);
+    glStencilFunc(GL_EQUAL, 0, 0x02);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     ring(mesh, model, style.outer_pixels, style.outer);
     ring(mesh, model, style.inner_pixels, style.inner);

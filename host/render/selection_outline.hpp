@@ -32,8 +32,8 @@ class SelectionOutline {
     void begin(const glm::mat4 &view_projection, int width, int height);
     void mark(const GpuMesh &mesh, const glm::mat4 &model);    // first every selected silhouette
     void outline(const GpuMesh &mesh, const glm::mat4 &model, const OutlineStyle &style); // then each ring
-    // A ring that keeps off only the model's own silhouette and the selected ones (a flagged
-    // model's, which may lie over a floor that is flagged too): after mark(), before outline().
+    // A ring that keeps off only the model's own silhouette (a flagged model's, which may lie
+    // over a floor that is flagged or selected): after mark(), before outline().
     void outline_alone(const GpuMesh &mesh, const glm::mat4 &model, const OutlineStyle &style);
     void end();
 

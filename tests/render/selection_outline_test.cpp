@@ -143,3 +143,14 @@ TEST_CASE("a flagged model in front of a flagged wall is ringed over the wall") 
     CHECK(corner.z > corner.x + 40);
     CHECK(red >= 72 * 9 / 10);
 }
+
+TEST_CASE("a flagged model's ring shows over a selected wall behind it") {
+    Document doc = yellow_ball();
+    doc.add_model(make_model("wall", "plane", {0.2, 0.3, 0.9}), make_state({0, 0, -4}, glm::dvec3(30.0), {90, 0, 0}));
+    const RenderOptions options;
+    const Image image = render_document(doc, kWidth, kHeight, {1}, options, {0, 1}).image;
+    const double r = silhouette_radius();
+    int red = 0;
+    for (int i = 0; i < 72; ++i) red += near_colour(at_angle(image, 2.0 * M_PI * i / 72, r + 3.0), options.flagged_style.inner);
+    CHECK(red >= 72 * 9 / 10);
+}

@@ -154,7 +154,28 @@ TEST_CASE("of two models that physics moves, the smaller is lifted out, the whol
     CHECK(plan->other == 0);
     CHECK(plan->offset == glm::dvec3(0, 0.3, 0)); // against the normal: up, out of 'big'
 
-    // Neither moved by physics: the smaller still; with no direction, no plan and a reason.
+    // Neither moved by physics: the one a key put there at the overlap's time (a drag that keyed
+    // it into the other), though it is the bigger; at another time, the smaller again.
+    doc.set_model(0, [&] { Model m = big; m.gravity = false; return m; }());
+    doc.set_model(2, [&] { Model m = small; m.gravity = false; return m; }());
+    Keyframe k;
+    k.time_ms = 2000;
+    k.states.resize(doc.models().size());
+    k.states[0] = ModelState{{0, 1, 0}, {}, glm::dvec3(2.0), {}};
+    doc.insert_keyframe(k);
+    o.t = 2.0;
+    auto keyed = plan_lift_out(doc, meshes, o);
+    REQUIRE(keyed);
+    CHECK(keyed->moved == 0);
+    CHECK(keyed->keyframe_ms == 2000);
+    CHECK(keyed->offset == glm::dvec3(0, -0.3, 0)); // along the normal: down, out of 'small'
+    o.t = 1.0;
+    keyed = plan_lift_out(doc, meshes, o);
+    REQUIRE(keyed);
+    CHECK(keyed->moved == doc.find_model("arm"));
+    CHECK(keyed->keyframe_ms == 0);
+
+    // With no direction, no plan and a reason.
     o.normal = {0, 0, 0};
     std::string why;
     CHECK_FALSE(plan_lift_out(doc, meshes, o, &why));
