@@ -1,5 +1,6 @@
 #include "bullet_bake.hpp"
 
+#include "../physics-custom/scene_print.hpp" // physics.custom's, shared
 #include "shapes.hpp"
 #include "track.hpp"
 
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <deque>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -110,6 +112,12 @@ struct Obstacle {
 
 class Bake;
 
+bool same_options(const BakeOptions &a, const BakeOptions &b) {
+    return a.step == b.step && a.solver_iterations == b.solver_iterations && a.ccd == b.ccd &&
+           a.rotate_on_contact == b.rotate_on_contact && a.friction == b.friction &&
+           a.restitution == b.restitution;
+}
+
 // Dispatches like Bullet's, then lets the bake drop the contacts of pairs it ignores.
 class Dispatcher : public btCollisionDispatcher {
   public:
@@ -155,11 +163,13 @@ class Bake {
   public:
     Bake(const ani_physics_scene &scene, double t_begin, double t_end, const ani_bake_sink &sink,
          const ani_host *host, const BakeOptions &options, SaidInBake &reported)
-        : scene_(scene), t_begin_(t_begin), t_end_(t_end), sink_(sink), host_(host),
-          options_(options), dt_(options.step), filter_(&groups_), reported_(reported) {
+        : scene_(&scene), t_begin_(t_begin), t_end_(t_end), sink_(&sink), host_(host),
+          options_(options), requested_(options), dt_(options.step), filter_(&groups_),
+          reported_(reported) {
         reported_.begin(t_begin);
         const int axis = scene.down_axis >= 0 && scene.down_axis <= 2 ? scene.down_axis : 1;
         gravity_[axis] = -scene.gravity;
+        with_rotation_sink_ = sink.rotation != nullptr;
     }
 
     ~Bake() {
@@ -168,19 +178,46 @@ class Bake {
     }
 
     void run() {
-        if (options_.rotate_on_contact && !sink_.rotation) {
+        if (options_.rotate_on_contact && !sink_->rotation) {
             // Bullet would turn models that the host then shows turned by their keys.
             log(ANI_LOG_WARNING, "rotate_on_contact needs a host that takes rotation segments; "
                                  "models turn by their keys only");
             options_.rotate_on_contact = false;
         }
+        print_ = physics_custom::scene_print(*scene_);
+        out_.resize(scene_->model_count);
+        rotation_out_.resize(scene_->model_count);
+        ++worlds_;
         setup_world();
         classify();
-        set_kinematic_poses(t_begin_, std::min(t_end_, t_begin_ + dt_));
+        set_kinematic_poses(t_begin_, t_begin_ + dt_);
         find_overlaps(nullptr);
-        if (t_end_ > t_begin_) loop();
-        for (Body &b : bodies_) finish(b);
-        report_counts();
+        t_ = previous_ = t_begin_;
+        k_ = static_cast<int64_t>(std::floor(t_begin_ / dt_ + 1e-9)) + 1;
+        end_slice();
+    }
+
+    // Whether a bake of `scene` from t_begin is the next slice of this one: it starts where this
+    // one stopped (not at 0), with the same options, and the scene is the same (scene_print: the
+    // models, their meshes, physics flags, keyed spans, key times and the states at their keys;
+    // gravity). The host builds the scene anew for every call.
+    bool continues(const ani_physics_scene &scene, double t_begin, const BakeOptions &options,
+                   const ani_bake_sink &sink) const {
+        return t_begin > 0.0 && t_begin == t_end_ && same_options(options, requested_) &&
+               (sink.rotation != nullptr) == with_rotation_sink_ &&
+               physics_custom::scene_print(scene) == print_;
+    }
+
+    // The next slice, [t_end of the last, t_end]: Bullet's world goes on from where the last
+    // slice left it (its bodies, contacts and tracks as they are), so the slices step as one bake
+    // would (issue 16: each slice built a new world and restarted from the host's states).
+    void resume(const ani_physics_scene &scene, double t_end, const ani_bake_sink &sink) {
+        scene_ = &scene;
+        sink_ = &sink;
+        t_begin_ = t_end_;
+        t_end_ = t_end;
+        flush();
+        end_slice();
     }
 
     // Called by the near callback after Bullet computed a pair's contacts. A pair let go while
@@ -347,9 +384,11 @@ class Bake {
     }
 
     void setup_world() {
-        for (uint32_t i = 0; i < scene_.model_count; ++i) groups_.push_back(scene_.models[i].group);
+        for (uint32_t i = 0; i < scene_->model_count; ++i)
+            groups_.push_back(scene_->models[i].group);
         // Bullet's default pools hold 4096 manifolds and algorithms, cleared when a world is made;
-        // the editor makes one per bake slice, which under ASan cost seconds each. Small pools
+        // the editor made one per bake slice, which under ASan cost seconds each (a slice now goes
+        // on with the last one's world, but every edit still starts a new one). Small pools
         // overflow to the heap when a scene needs more (Bullet's default dynamic allocation).
         btDefaultCollisionConstructionInfo pools;
         pools.m_defaultMaxPersistentManifoldPoolSize = 64;
@@ -380,12 +419,12 @@ class Bake {
     ani_model_state keyed_state(uint32_t m, double t, glm::dvec3 *velocity = nullptr) const {
         ani_model_state state{};
         ani_vec3 v{};
-        if (scene_.evaluate_keyed(scene_.host_context, m, t, &state, &v) != ANI_OK)
+        if (scene_->evaluate_keyed(scene_->host_context, m, t, &state, &v) != ANI_OK)
             throw ani::Failure(ANI_ERR_FAILED, std::string("cannot evaluate the keys of model '") +
-                                                   name_of(scene_.models[m]) + "'");
+                                                   name_of(scene_->models[m]) + "'");
         if (!finite(state.center) || !finite(state.angles) || !finite(state.scale) || !finite(v))
             throw ani::Failure(ANI_ERR_FAILED, std::string("the keys of model '") +
-                                                   name_of(scene_.models[m]) +
+                                                   name_of(scene_->models[m]) +
                                                    "' give a value that is not finite");
         if (velocity) *velocity = vec(v);
         return state;
@@ -398,7 +437,7 @@ class Bake {
 
     // The first of the model's keys after t (the end of its keyed span if none is in between).
     double next_key(uint32_t i, double t) const {
-        const ani_physics_model &m = scene_.models[i];
+        const ani_physics_model &m = scene_->models[i];
         if (has_key_times(m))
             for (uint32_t k = 0; k < m.key_count; ++k)
                 if (m.key_times[k] > t) return m.key_times[k];
@@ -406,7 +445,7 @@ class Bake {
     }
 
     double last_key(uint32_t i) const {
-        const ani_physics_model &m = scene_.models[i];
+        const ani_physics_model &m = scene_->models[i];
         double last = m.keyed_span_count ? m.keyed_spans[0].end : 0.0;
         if (has_key_times(m) && m.key_count) last = std::max(last, m.key_times[m.key_count - 1]);
         return last;
@@ -415,7 +454,7 @@ class Bake {
     // Whether a model's keys from t_begin to its last key all place it the same way and leave it
     // still (as physics.custom decides: checked at each key and half-way between keys).
     bool keys_hold_still(uint32_t i, double last) const {
-        const ani_physics_model &m = scene_.models[i];
+        const ani_physics_model &m = scene_->models[i];
         if (!has_key_times(m)) return false;
         std::vector<double> times = {t_begin_};
         for (uint32_t k = 0; k < m.key_count; ++k)
@@ -439,7 +478,7 @@ class Bake {
 
     // The state a model is in at t: the host's where a resumed bake starts, otherwise its keys'.
     ani_body_state start_of(uint32_t i, double t) const {
-        const ani_physics_model &m = scene_.models[i];
+        const ani_physics_model &m = scene_->models[i];
         if (t == t_begin_ && m.start.motion != ANI_MOTION_KEYED) return m.start;
         glm::dvec3 v;
         const ani_model_state s = keyed_state(i, t, &v);
@@ -455,12 +494,11 @@ class Bake {
     // the rest (jointed parts, models without a mesh) move without collisions.
     void classify() {
         std::vector<uint32_t> statics;
-        for (uint32_t i = 0; i < scene_.model_count; ++i) {
-            const ani_physics_model &m = scene_.models[i];
+        for (uint32_t i = 0; i < scene_->model_count; ++i) {
+            const ani_physics_model &m = scene_->models[i];
             if (!m.desc) throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "a model has no description");
             const ani_time_span span =
                 m.keyed_span_count ? m.keyed_spans[0] : ani_time_span{t_begin_, t_begin_};
-            const double keyed_until = std::min(std::max(span.end, t_begin_), t_end_);
             const bool free_now = span.end <= t_begin_;
             const bool released = !free_now && m.start.motion != ANI_MOTION_KEYED;
             const ani_model_desc &d = *m.desc;
@@ -472,28 +510,25 @@ class Bake {
             const bool keyed_here = !free_now && span.end > t_begin_ && !held_still;
             check_mesh(i);
 
+            // Models outside Bullet's stepping: keyed to the end of their keys, then a closed
+            // form, reported up to the end of each slice (cut()).
             if (!movable && (free_now || held_still) && solid) {
                 statics.push_back(i);
-                Track track(i, segment_sink());
-                if (held_still) track.keyed(t_begin_, keyed_until);
-                const double from = held_still ? keyed_until : t_begin_;
-                if (from < t_end_) {
-                    track.start_closed(from, vec(start_of(i, from).center), glm::dvec3(0.0),
-                                       glm::dvec3(0.0), ANI_MOTION_REST);
-                    track.close(t_end_);
-                }
+                const double from = held_still ? std::max(span.end, t_begin_) : t_begin_;
+                Fixed f{i, t_begin_, from, Track(i, segment_sink())};
+                f.track.start_closed(from, vec(start_of(i, from).center), glm::dvec3(0.0),
+                                     glm::dvec3(0.0), ANI_MOTION_REST);
+                fixed_.push_back(std::move(f));
                 continue;
             }
             if (solid && (movable || keyed_here)) {
                 add_body(i, span, free_now, released);
                 continue;
             }
-            Track track(i, segment_sink());
-            if (keyed_until > t_begin_) track.keyed(t_begin_, keyed_until);
-            if (!(free_now || span.end < t_end_)) continue; // keyed throughout this bake
-            const double from = free_now ? t_begin_ : keyed_until;
-            free_closed_form(track, i, start_of(i, from), from);
-            track.close(t_end_);
+            const double from = free_now ? t_begin_ : span.end;
+            Fixed f{i, t_begin_, from, Track(i, segment_sink())};
+            if (std::isfinite(from)) free_closed_form(f.track, i, start_of(i, from), from);
+            fixed_.push_back(std::move(f));
         }
         set_kinematic_poses(t_begin_, t_begin_ + dt_); // where the bodies start, for rooms
         for (uint32_t i : statics) add_obstacle(i);
@@ -501,7 +536,7 @@ class Bake {
     }
 
     void check_mesh(uint32_t i) const {
-        const ani_physics_model &m = scene_.models[i];
+        const ani_physics_model &m = scene_->models[i];
         if (!m.mesh || !m.mesh->positions) return;
         for (size_t k = 0; k < 3 * static_cast<size_t>(m.mesh->vertex_count); ++k)
             if (!std::isfinite(m.mesh->positions[k]))
@@ -517,7 +552,7 @@ class Bake {
 
     // physics.md's four cases after a model's keys, as one closed form (no collisions).
     void free_closed_form(Track &track, uint32_t i, const ani_body_state &start, double t) const {
-        const ani_model_desc &d = *scene_.models[i].desc;
+        const ani_model_desc &d = *scene_->models[i].desc;
         const bool carries = d.dynamics || (d.gravity && start.motion == ANI_MOTION_FREE);
         const glm::dvec3 v = carries ? vec(start.velocity) : glm::dvec3(0.0);
         const glm::dvec3 a = d.gravity ? gravity_ : glm::dvec3(0.0);
@@ -526,7 +561,7 @@ class Bake {
     }
 
     const MeshInfo &info_of(uint32_t i) {
-        const ani_mesh_view *mesh = scene_.models[i].mesh;
+        const ani_mesh_view *mesh = scene_->models[i].mesh;
         auto it = mesh_info_.find(mesh);
         if (it == mesh_info_.end()) it = mesh_info_.emplace(mesh, analyse_mesh(*mesh)).first;
         return it->second;
@@ -536,10 +571,10 @@ class Bake {
     // never moves, GImpact when it does). `room`: a static convex mesh a body starts inside.
     std::unique_ptr<Shape> make_shape(uint32_t i, const glm::dvec3 &scale, bool moving,
                                       bool room = false) {
-        const ani_mesh_view &mesh = *scene_.models[i].mesh;
+        const ani_mesh_view &mesh = *scene_->models[i].mesh;
         if (!(scale.x > 0.0 && scale.y > 0.0 && scale.z > 0.0))
             throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, std::string("model '") +
-                                                             name_of(scene_.models[i]) +
+                                                             name_of(scene_->models[i]) +
                                                              "' has a scale that is not positive");
         std::unique_ptr<Shape> shape;
         if (mesh.is_sphere && uniform(scale) && mesh.bound_radius > 0.0 &&
@@ -549,7 +584,7 @@ class Bake {
             const MeshInfo &info = info_of(i);
             if (!info.has_area)
                 throw ani::Failure(ANI_ERR_INVALID_ARGUMENT,
-                                   std::string("model '") + name_of(scene_.models[i]) +
+                                   std::string("model '") + name_of(scene_->models[i]) +
                                        "' has a mesh without area (every triangle is degenerate)");
             if (info.convex && !room)
                 shape = hull_shape(mesh, scale);
@@ -557,13 +592,14 @@ class Bake {
                 shape = triangle_shape(mesh, scale, moving);
         }
         shape->scale = scale;
+        ++shapes_built_;
         if (described_.insert(i).second) {
             ++counts_[shape->count_name()];
             std::string what = shape->describe();
             if (room) what += ", a room: a moving model starts inside it";
             if (reported_.first_description(i)) // once per bake, not once per slice
                 log(ANI_LOG_INFO,
-                    std::string("model '") + name_of(scene_.models[i]) + "': " + what);
+                    std::string("model '") + name_of(scene_->models[i]) + "': " + what);
         }
         return shape;
     }
@@ -571,7 +607,7 @@ class Bake {
     void add_obstacle(uint32_t i) {
         const ani_model_state s = keyed_state(i, t_begin_);
         glm::dvec3 center = vec(s.center);
-        const ani_physics_model &m = scene_.models[i];
+        const ani_physics_model &m = scene_->models[i];
         if (m.start.motion != ANI_MOTION_KEYED && finite(m.start.center))
             center = vec(m.start.center);
         const glm::dquat q = orientation(s);
@@ -608,7 +644,7 @@ class Bake {
     }
 
     void add_body(uint32_t i, const ani_time_span &span, bool free_now, bool released) {
-        const ani_physics_model &m = scene_.models[i];
+        const ani_physics_model &m = scene_->models[i];
         const ani_model_desc &d = *m.desc;
         Body b;
         b.model = i;
@@ -759,7 +795,7 @@ class Bake {
 
     // Times where a body changes how it moves: steps end there.
     double next_breakpoint(double t) const {
-        double next = t_end_;
+        double next = kNever;
         const double after = t + 1e-9 * dt_;
         for (const Body &b : bodies_) {
             if (b.mode == Mode::kKeyed && b.keys_end > after) next = std::min(next, b.keys_end);
@@ -770,33 +806,36 @@ class Bake {
 
     bool same_time(double a, double b) const { return std::abs(a - b) <= 1e-9 * dt_; }
 
+    // Steps end on the grid k dt (anchored at 0, so a resumed bake steps where one bake would)
+    // and at each breakpoint, never at t_end: a bake steps on past it until the step it is on
+    // starts at t_end or later, since a step finds the contacts at its start and dates them back
+    // into the step before (contacts()). Then every contact before t_end is known, and a bake in
+    // slices takes the very steps one whole bake takes; what lies beyond t_end is held back for
+    // the next slice (put()). A step of the grid is exactly dt long (times far from 0 round).
     void loop() {
-        // Steps end on the grid k dt (anchored at 0, so a resumed bake steps where one bake would),
-        // at each breakpoint and at t_end; the last step is shorter where t_end is off the grid.
-        double t = t_begin_;
-        int64_t k = static_cast<int64_t>(std::floor(t / dt_ + 1e-9)) + 1;
-        double previous = t_begin_; // start of the step before the current one
-        while (t < t_end_ && !same_time(t, t_end_)) {
-            if (handle_breakpoints(t)) {
-                set_kinematic_poses(t, t + dt_);
+        while (previous_ < t_end_ && !same_time(previous_, t_end_)) {
+            if (handle_breakpoints(t_)) {
+                set_kinematic_poses(t_, t_ + dt_);
                 find_overlaps(&switched_);
             }
-            double grid = static_cast<double>(k) * dt_;
-            while (grid <= t || same_time(grid, t)) grid = static_cast<double>(++k) * dt_;
-            if (try_coast(t, k, previous)) continue;
-            double next = std::min(grid, next_breakpoint(t));
-            if (t_end_ < next || same_time(next, t_end_)) next = t_end_;
-            // A whole step of the grid is exactly dt long (times far from 0 round).
+            double grid = static_cast<double>(k_) * dt_;
+            while (grid <= t_ || same_time(grid, t_)) grid = static_cast<double>(++k_) * dt_;
+            if (try_coast()) continue;
+            const double next = std::min(grid, next_breakpoint(t_));
             const bool whole =
-                same_time(next, grid) && same_time(t, static_cast<double>(k - 1) * dt_);
-            step(t, next, whole ? dt_ : next - t, whole, previous);
-            previous = t;
-            t = next;
-            ++steps_;
-            if (sink_.progress && steps_ % 256 == 0 &&
-                !sink_.progress(sink_.context, (t - t_begin_) / (t_end_ - t_begin_)))
-                throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
+                same_time(next, grid) && same_time(t_, static_cast<double>(k_ - 1) * dt_);
+            step(t_, next, whole ? dt_ : next - t_, whole, previous_);
+            previous_ = t_;
+            t_ = next;
+            took({0, 0, next, false});
+            if (++taken_ % 256 == 0) progress();
         }
+    }
+
+    void progress() const {
+        const double done = std::min(1.0, (t_ - t_begin_) / std::max(t_end_ - t_begin_, 1e-300));
+        if (sink_->progress && !sink_->progress(sink_->context, done))
+            throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
     }
 
     // ---- coasting ---------------------------------------------------------------------------
@@ -810,7 +849,10 @@ class Bake {
     // that Bullet would do in those steps is skipped: it finds no contact at any of them, and its
     // CCD sweep (within the boxes) none either.
 
-    bool try_coast(double &t, int64_t &k, double &previous) {
+    bool try_coast() {
+        double &t = t_;
+        int64_t &k = k_;
+        double &previous = previous_;
         if (coast_wait_ > 0) {
             --coast_wait_;
             return false;
@@ -821,9 +863,15 @@ class Bake {
             if (t < b.last_key && !same_time(t, b.last_key)) return false;
             if (b.mode == Mode::kDynamic && !b.track->stepping()) return false;
         }
-        const double limit = std::min(next_breakpoint(t), t_end_);
-        const int64_t n_max = static_cast<int64_t>(std::floor(limit / dt_ + 1e-9)) - (k - 1);
-        int64_t n = std::min(n_max, coast_window_);
+        // Not bounded by t_end: where a bake coasts to (and so where Bullet steps again) must
+        // not depend on where it is cut into slices. A bake may coast past its end (closed
+        // forms cost nothing); the next slice goes on from there.
+        const double to_breakpoint =
+            std::floor(next_breakpoint(t) / dt_ + 1e-9) - static_cast<double>(k - 1);
+        if (to_breakpoint < 2.0) return false; // just before a breakpoint: nothing to wait for
+        int64_t n = to_breakpoint < static_cast<double>(coast_window_)
+                        ? static_cast<int64_t>(to_breakpoint)
+                        : coast_window_;
         while (n >= 2 && !clear_for(t, static_cast<double>(n) * dt_)) n /= 2;
         if (n < 2) {
             coast_wait_ = coast_backoff_;
@@ -847,15 +895,11 @@ class Bake {
             b.rb->setCenterOfMassTransform(tr);
             b.rb->setLinearVelocity(bt(s.v));
         }
-        const int64_t before = steps_;
-        steps_ += n;
-        coasted_ += n;
+        took({k, k - 1 + n, t_new, true});
         k += n;
         previous = t_new - dt_;
         t = t_new;
-        if (sink_.progress && steps_ / 256 != before / 256 &&
-            !sink_.progress(sink_.context, (t - t_begin_) / (t_end_ - t_begin_)))
-            throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
+        progress();
         return true;
     }
 
@@ -1267,7 +1311,7 @@ class Bake {
     }
 
     [[noreturn]] void not_finite(uint32_t model) const {
-        throw ani::Failure(ANI_ERR_FAILED, std::string("model '") + name_of(scene_.models[model]) +
+        throw ani::Failure(ANI_ERR_FAILED, std::string("model '") + name_of(scene_->models[model]) +
                                                "' would move to a value that is not finite");
     }
 
@@ -1311,21 +1355,19 @@ class Bake {
             if (only && !only->count(key.first) && !only->count(key.second)) continue;
             if (touch.distance < -overlap_tolerance(touch.o0, touch.o1)) {
                 if (reported_.first(key.first, key.second, t)) {
-                    if (sink_.overlap) {
-                        ani_overlap o{};
-                        o.t = t;
-                        o.a = static_cast<uint32_t>(touch.o0->getUserIndex());
-                        o.b = static_cast<uint32_t>(touch.o1->getUserIndex());
-                        o.normal = ani_vec3{touch.normal.x, touch.normal.y, touch.normal.z};
-                        o.depth = -touch.distance;
-                        sink_.overlap(sink_.context, &o);
-                    }
-                    log(ANI_LOG_WARNING,
-                        std::string("models '") + name_of(scene_.models[key.first]) + "' and '" +
-                            name_of(scene_.models[key.second]) + "' overlap at t = " +
-                            short_number(t) + " s by " + short_number(-touch.distance) +
-                            " m: treated as touching (neither moves deeper into the other; "
-                            "approaching, they collide at once; moving apart, they are let go)");
+                    ani_overlap o{};
+                    o.t = t;
+                    o.a = static_cast<uint32_t>(touch.o0->getUserIndex());
+                    o.b = static_cast<uint32_t>(touch.o1->getUserIndex());
+                    o.normal = ani_vec3{touch.normal.x, touch.normal.y, touch.normal.z};
+                    o.depth = -touch.distance;
+                    put_overlap(
+                        o, std::string("models '") + name_of(scene_->models[key.first]) +
+                               "' and '" + name_of(scene_->models[key.second]) +
+                               "' overlap at t = " + short_number(t) + " s by " +
+                               short_number(-touch.distance) +
+                               " m: treated as touching (neither moves deeper into the other; "
+                               "approaching, they collide at once; moving apart, they are let go)");
                 }
                 const glm::dvec3 relative =
                     velocity_of(touch.o0, touch.point) - velocity_of(touch.o1, touch.point);
@@ -1349,11 +1391,36 @@ class Bake {
         }
     }
 
-    void finish(Body &b) {
-        if (b.mode == Mode::kKeyed)
-            b.track->keyed(b.keyed_from, t_end_);
-        else
-            close_free(b, t_end_);
+    // Each slice's end: loops past t_end, then reports every model's motion up to t_end
+    // without closing what goes on (the rest is reported by the next slice, or never).
+    void end_slice() {
+        loop();
+        cut();
+        report_counts();
+    }
+
+    // Reports what each track has open up to t_end (from copies: the tracks go on; put() holds
+    // back what lies past t_end, and the next slice reports only what follows what was said).
+    void cut() {
+        provisional_ = true;
+        for (Body &b : bodies_) {
+            if (b.mode == Mode::kKeyed) {
+                b.track->keyed(b.keyed_from, t_end_);
+            } else {
+                Track open = *b.track;
+                open.close(t_end_);
+            }
+            if (b.rotation && b.rotation->open()) {
+                RotationTrack open = *b.rotation;
+                open.close(t_end_);
+            }
+        }
+        for (Fixed &f : fixed_) {
+            f.track.keyed(f.keyed_from, f.keyed_to);
+            Track open = f.track;
+            open.close(t_end_);
+        }
+        provisional_ = false;
     }
 
     // ---- reporting -------------------------------------------------------------------------
@@ -1366,8 +1433,7 @@ class Bake {
             if (!finite(s.p0) || !finite(s.v0) || !finite(s.a) || !std::isfinite(s.t0) ||
                 !std::isfinite(s.t1) || !finite(end) || !finite(vec(s.v0) + tau * vec(s.a)))
                 not_finite(s.model);
-            ++segments_;
-            sink_.segment(sink_.context, &s);
+            put(s);
         };
     }
 
@@ -1376,30 +1442,163 @@ class Bake {
             if (!finite(s.w) || !std::isfinite(s.q0.w) || !std::isfinite(s.q0.x) ||
                 !std::isfinite(s.q0.y) || !std::isfinite(s.q0.z))
                 not_finite(s.model);
-            if (sink_.rotation) sink_.rotation(sink_.context, &s);
+            put(s);
         };
+    }
+
+    // What the host is told of a model's motion, slice by slice: each segment's part from where
+    // the model was reported to (`said`) up to this slice's t_end; a segment that goes on past
+    // t_end is kept (`later`), with every one after it, for the next slice. A provisional segment
+    // (cut(): an open track up to t_end) is not kept: its track reports it again, in full.
+    template <class Segment> struct Out {
+        double said = -kNever;
+        std::vector<Segment> later;
+    };
+
+    template <class Segment> void put(std::vector<Out<Segment>> &outs, const Segment &s) {
+        if (s.model >= outs.size()) return;
+        Out<Segment> &out = outs[s.model];
+        const bool past = !out.later.empty() || s.t1 > t_end_;
+        const double t0 = std::max(s.t0, out.said), t1 = std::min(s.t1, t_end_);
+        if (out.later.empty() && t1 > t0) {
+            Segment part = s;
+            if (t0 > s.t0) from(part, t0);
+            part.t1 = t1;
+            out.said = t1;
+            send(part);
+        }
+        if (past && !provisional_) out.later.push_back(s);
+    }
+    void put(const ani_motion_segment &s) { put(out_, s); }
+    void put(const ani_rotation_segment &s) { put(rotation_out_, s); }
+
+    // The segment from t on (t within it): the same motion, restated at t.
+    static void from(ani_motion_segment &s, double t) {
+        const double tau = t - s.t0;
+        if (s.motion != ANI_MOTION_KEYED) {
+            const glm::dvec3 v0 = vec(s.v0), a = vec(s.a);
+            s.p0 = ani(vec(s.p0) + v0 * tau + 0.5 * tau * tau * a);
+            s.v0 = ani(v0 + a * tau);
+        }
+        s.t0 = t;
+    }
+    static void from(ani_rotation_segment &s, double t) {
+        const glm::dquat q = turned(glm::dquat(s.q0.w, s.q0.x, s.q0.y, s.q0.z), vec(s.w), t - s.t0);
+        s.q0 = ani_quat{q.w, q.x, q.y, q.z};
+        s.t0 = t;
+    }
+
+    void send(const ani_motion_segment &s) {
+        ++segments_;
+        sink_->segment(sink_->context, &s);
+    }
+    void send(const ani_rotation_segment &s) {
+        if (sink_->rotation) sink_->rotation(sink_->context, &s);
+    }
+
+    // At the start of a slice, what the last one held back, up to the new t_end.
+    void flush() {
+        for (auto &out : out_) {
+            std::vector<ani_motion_segment> later;
+            later.swap(out.later);
+            for (const auto &s : later) put(s);
+        }
+        for (auto &out : rotation_out_) {
+            std::vector<ani_rotation_segment> later;
+            later.swap(out.later);
+            for (const auto &s : later) put(s);
+        }
+        std::vector<ani_collision_event> events;
+        events.swap(later_events_);
+        for (const auto &e : events) put_event(e);
+        std::vector<std::pair<ani_overlap, std::string>> overlaps;
+        overlaps.swap(later_overlaps_);
+        for (const auto &[o, message] : overlaps) put_overlap(o, message);
+    }
+
+    // Events and overlaps past t_end are told by the slice that reaches them (in time order).
+    void put_event(const ani_collision_event &e) {
+        if (e.t > t_end_ || !later_events_.empty()) {
+            later_events_.push_back(e);
+            return;
+        }
+        if (sink_->event) sink_->event(sink_->context, &e);
+    }
+
+    void put_overlap(const ani_overlap &o, const std::string &message) {
+        if (o.t > t_end_ || !later_overlaps_.empty()) {
+            later_overlaps_.emplace_back(o, message);
+            return;
+        }
+        if (sink_->overlap) sink_->overlap(sink_->context, &o);
+        log(ANI_LOG_WARNING, message);
     }
 
     void report(const ani_collision_event &e) {
         if (!finite(e.normal) || !finite(e.point) || !std::isfinite(e.speed) || !std::isfinite(e.t))
             throw ani::Failure(ANI_ERR_FAILED, std::string("the contact of models '") +
-                                                   name_of(scene_.models[e.a]) + "' and '" +
-                                                   name_of(scene_.models[e.b]) + "' is not finite");
+                                                   name_of(scene_->models[e.a]) + "' and '" +
+                                                   name_of(scene_->models[e.b]) +
+                                                   "' is not finite");
         ++contacts_found_;
-        if (sink_.event) sink_.event(sink_.context, &e);
+        put_event(e);
+    }
+
+    // Each call reports the work it did (the host adds the calls up): a slice that goes on with
+    // the world reports no world or shape built.
+    // The steps a bake took, or coasted, up to t_end: a bake goes on past t_end (loop(),
+    // try_coast()), and the steps it took there are counted by the slice that reaches their end,
+    // so that slices count what one bake counts. `first`, `last`: grid indices of coasted steps.
+    struct Steps {
+        int64_t first, last;
+        double end;
+        bool coasted;
+    };
+
+    void took(const Steps &steps) {
+        uncounted_.push_back(steps);
+        count_steps();
+    }
+
+    void count_steps() {
+        const auto last = static_cast<int64_t>(std::floor(t_end_ / dt_ + 1e-9));
+        while (!uncounted_.empty()) {
+            Steps &u = uncounted_.front();
+            if (!u.coasted) {
+                if (u.end > t_end_ && !same_time(u.end, t_end_)) return;
+                ++steps_;
+                uncounted_.pop_front();
+                continue;
+            }
+            if (u.first > last) return;
+            const int64_t n = std::min(u.last, last) - u.first + 1;
+            steps_ += n;
+            coasted_ += n;
+            u.first += n;
+            if (u.first <= u.last) return;
+            uncounted_.pop_front();
+        }
     }
 
     void report_counts() {
-        if (!sink_.count) return;
-        counts_["steps"] += static_cast<double>(steps_);
-        counts_["steps coasted"] += static_cast<double>(coasted_);
-        counts_["coasting checks"] += static_cast<double>(coast_checks_);
-        counts_["contacts"] += static_cast<double>(contacts_found_);
-        counts_["releases from keys"] += static_cast<double>(releases_);
-        counts_["segments"] += static_cast<double>(segments_);
+        count_steps();
+        if (!sink_->count) return;
+        std::map<std::string, double> totals = counts_;
+        totals["steps"] = static_cast<double>(steps_);
+        totals["steps coasted"] = static_cast<double>(coasted_);
+        totals["coasting checks"] = static_cast<double>(coast_checks_);
+        totals["contacts"] = static_cast<double>(contacts_found_);
+        totals["releases from keys"] = static_cast<double>(releases_);
+        totals["segments"] = static_cast<double>(segments_);
+        totals["worlds built"] = static_cast<double>(worlds_);
+        totals["shapes built"] = static_cast<double>(shapes_built_);
         for (const char *name : {"sphere shapes", "convex hulls", "triangle meshes"})
-            counts_[name] += 0.0;
-        for (const auto &[name, value] : counts_) sink_.count(sink_.context, name.c_str(), value);
+            totals[name] += 0.0;
+        for (const auto &[name, value] : totals) {
+            double &said = counted_[name];
+            sink_->count(sink_->context, name.c_str(), value - said);
+            said = value;
+        }
     }
 
     static std::string short_number(double x) {
@@ -1412,13 +1611,19 @@ class Bake {
         if (host_ && host_->log) host_->log(host_, level, kPluginId, message.c_str());
     }
 
-    const ani_physics_scene &scene_;
-    double t_begin_, t_end_;
-    const ani_bake_sink &sink_;
+    const ani_physics_scene *scene_; // this call's (the host builds it anew for each)
+    double t_begin_, t_end_;         // this slice's
+    const ani_bake_sink *sink_;
     const ani_host *host_;
-    BakeOptions options_;
+    BakeOptions options_, requested_;
+    bool with_rotation_sink_ = false;
+    physics_custom::ScenePrint print_; // the scene the bake goes on with
     double dt_;
     glm::dvec3 gravity_{0.0};
+    // Where Bullet's world is (t_, on or past t_end), the start of the step before (previous_),
+    // the grid index of the next step's end (k_).
+    double t_ = 0.0, previous_ = 0.0;
+    int64_t k_ = 1;
     std::vector<uint32_t> groups_;
     Filter filter_;
     std::unique_ptr<btDefaultCollisionConfiguration> config_;
@@ -1428,6 +1633,18 @@ class Bake {
     std::unique_ptr<btDiscreteDynamicsWorld> world_;
     std::vector<Body> bodies_;
     std::vector<Obstacle> obstacles_;
+    // The models outside Bullet's stepping: keyed over [keyed_from, keyed_to], then `track`.
+    struct Fixed {
+        uint32_t model;
+        double keyed_from, keyed_to;
+        Track track;
+    };
+    std::vector<Fixed> fixed_;
+    std::vector<Out<ani_motion_segment>> out_;
+    std::vector<Out<ani_rotation_segment>> rotation_out_;
+    std::vector<ani_collision_event> later_events_;
+    std::vector<std::pair<ani_overlap, std::string>> later_overlaps_;
+    bool provisional_ = false;
     std::map<const ani_mesh_view *, MeshInfo> mesh_info_;
     std::set<uint32_t> described_;
     // Pairs that overlapped and move apart, let go until apart; pairs apart by the end of a step.
@@ -1436,7 +1653,10 @@ class Bake {
     std::set<uint32_t> switched_;
     double last_switch_ = 0.0;
     btManifoldArray manifolds_;
-    std::map<std::string, double> counts_;
+    std::map<std::string, double> counts_, counted_; // counted_: what earlier slices reported
+    std::size_t worlds_ = 0, shapes_built_ = 0;
+    std::deque<Steps> uncounted_; // steps past t_end, counted by the slice that reaches them
+    int64_t taken_ = 0;           // Bullet's steps, for progress
     int64_t steps_ = 0, coasted_ = 0, coast_checks_ = 0;
     int64_t coast_wait_ = 0, coast_backoff_ = 1, coast_window_ = 64;
     std::size_t contacts_found_ = 0, releases_ = 0, segments_ = 0;
@@ -1444,11 +1664,36 @@ class Bake {
 
 } // namespace
 
+struct BakeInProgress::State {
+    SaidInBake said;
+    std::unique_ptr<Bake> bake; // the last slice's, to go on with
+};
+
+BakeInProgress::BakeInProgress() : state_(std::make_unique<State>()) {}
+BakeInProgress::~BakeInProgress() = default;
+
 void bake_scene(const ani_physics_scene &scene, double t_begin, double t_end,
                 const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options,
-                SaidInBake *reported) {
-    SaidInBake one_bake;
-    Bake(scene, t_begin, t_end, sink, host, options, reported ? *reported : one_bake).run();
+                BakeInProgress *in_progress) {
+    if (!in_progress) {
+        SaidInBake one_bake;
+        Bake(scene, t_begin, t_end, sink, host, options, one_bake).run();
+        return;
+    }
+    auto &state = *in_progress->state_;
+    try {
+        if (state.bake && state.bake->continues(scene, t_begin, options, sink)) {
+            state.bake->resume(scene, t_end, sink);
+            return;
+        }
+        state.bake.reset();
+        auto bake = std::make_unique<Bake>(scene, t_begin, t_end, sink, host, options, state.said);
+        bake->run();
+        state.bake = std::move(bake);
+    } catch (...) {
+        state.bake.reset(); // cancelled or failed half-way: the next bake starts afresh
+        throw;
+    }
 }
 
 } // namespace physics_bullet

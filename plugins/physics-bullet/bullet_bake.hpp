@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <set>
 #include <utility>
 
@@ -24,8 +25,9 @@ struct BakeOptions {
 
 // What a bake has said in the log (the overlapping pairs, models lower first, to when it found
 // them; the models whose shape it described), kept by the instance from one slice of a bake to
-// the next so that each is said once per bake, not once per slice: a bake from 0 starts afresh,
-// and one from a later time forgets the overlaps found from then on.
+// the next so that each is said once per bake, not once per slice, also when a slice starts a
+// new world: a bake from 0 starts afresh, and one from a later time forgets the overlaps found
+// from then on.
 class SaidInBake {
   public:
     void begin(double t_begin) {
@@ -44,10 +46,28 @@ class SaidInBake {
     std::set<uint32_t> described_;
 };
 
+// What a backend instance keeps from one bake call to the next: the editor bakes in slices, each
+// call going on from where the last stopped. The last slice's bake (Bullet's world, its bodies
+// and shapes, each model's track, what lies past the slice's end), to go on with when the next
+// call continues it (the same scene and options, from where it stopped, not from 0): the slices
+// then take the steps one whole bake takes. And what was said in the log.
+class BakeInProgress {
+  public:
+    BakeInProgress();
+    ~BakeInProgress();
+    struct State;
+
+  private:
+    friend void bake_scene(const ani_physics_scene &, double, double, const ani_bake_sink &,
+                           const ani_host *, const BakeOptions &, BakeInProgress *);
+    std::unique_ptr<State> state_;
+};
+
 // Bakes [t_begin, t_end]: keyed spans, Bullet's steps, collision events. Throws ani::Failure.
-// `reported` is the instance's (without it, every call is a bake of its own).
+// With `in_progress` (the instance's), a call that continues the last one goes on with its
+// world; without it, every call is a bake of its own.
 void bake_scene(const ani_physics_scene &scene, double t_begin, double t_end,
                 const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options,
-                SaidInBake *reported = nullptr);
+                BakeInProgress *in_progress = nullptr);
 
 } // namespace physics_bullet

@@ -91,7 +91,7 @@ const ani_param_descriptor kParams[] = {
 struct Instance {
     const ani_host *host = nullptr;
     ani::ParamStore params{kParams, sizeof(kParams) / sizeof(kParams[0])};
-    physics_bullet::SaidInBake said; // said once per bake, however it is sliced
+    physics_bullet::BakeInProgress bake; // the last slice's world, and what it said
 };
 
 void *create(const ani_host *host, ani_status *status) {
@@ -148,7 +148,7 @@ ani_status_code bake(void *instance, const ani_physics_scene *scene, double t_be
             static std::mutex bullet;
             std::lock_guard<std::mutex> lock(bullet);
             physics_bullet::bake_scene(*scene, t_begin, t_end, *sink, self.host, options,
-                                       &self.said);
+                                       &self.bake);
         }
         if (sink->progress && !sink->progress(sink->context, 1.0))
             throw ani::Failure(ANI_ERR_CANCELLED, "the bake was cancelled");
