@@ -1875,6 +1875,14 @@ def message_pixels_in(img, box, predicate):
     return sum(1 for _, _, px in img.region(*box) if predicate(px))
 
 
+# Cases of later tools live beside this file, one file per tool (cases_TOOL.py), run in this
+# module's namespace so they use its helpers and constants as the cases above do.
+for _extra in sorted(os.listdir(os.path.dirname(os.path.abspath(__file__)))):
+    if _extra.startswith('cases_') and _extra.endswith('.py'):
+        _path = os.path.join(os.path.dirname(os.path.abspath(__file__)), _extra)
+        with open(_path) as _f:
+            exec(compile(_f.read(), _path, 'exec'), globals())
+
 CASES = {name[5:]: f for name, f in globals().items() if name.startswith('case_')}
 
 
