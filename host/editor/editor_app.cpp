@@ -190,6 +190,44 @@ void feed_imgui_keys(GLFWwindow *window) {
     }
 }
 
+// The motion paths to draw, sampled again only when what they show can have changed (the
+// document, the bake, the drag's own bake, which models show one), not on every frame drawn.
+class PathCache {
+  public:
+    const std::vector<PathLines> &get(const EditorSession &s) {
+        Key key{s.version(), s.timeline().baked_until(), s.preview_baked_until(), s.preview_version(), s.dragging(),
+                s.path_models()};
+        if (key == key_ && valid_) return lines_;
+        key_ = key;
+        valid_ = true;
+        lines_.clear();
+        for (const MotionPath &p : s.motion_paths()) {
+            PathLines l;
+            for (const glm::dvec3 &x : p.frames) l.frames.emplace_back(x);
+            for (const glm::dvec3 &x : p.keys) l.keys.emplace_back(x);
+            for (const glm::dvec3 &x : p.hits) l.hits.emplace_back(x);
+            lines_.push_back(std::move(l));
+        }
+        return lines_;
+    }
+
+  private:
+    struct Key {
+        std::uint64_t version = 0;
+        double baked = -1, preview = -1;
+        std::uint64_t preview_version = 0;
+        bool dragging = false;
+        std::vector<int> models;
+        bool operator==(const Key &o) const {
+            return version == o.version && baked == o.baked && preview == o.preview &&
+                   preview_version == o.preview_version && dragging == o.dragging && models == o.models;
+        }
+    };
+    Key key_;
+    bool valid_ = false;
+    std::vector<PathLines> lines_;
+};
+
 // With ANIMATOR_EDITOR_SIGNALS set (the end-to-end tests), the editor says each time it goes
 // to sleep with everything drawn: "animator: idle (inputs 12, moves 40, time 1234 ms)". A test
 // waits for a line counting its own keys and clicks instead of for a fixed time, which a loaded
@@ -307,6 +345,8 @@ int run_editor(const EditorOptions &options) {
         bool quitting = false;
         const bool signals = signals_wanted();
         FrameRate frame_rate;
+        PathCache path_lines;
+        std::uint64_t previewed = 0; // the drag's document last said baked (signals)
         while (!quitting) {
             const bool busy = session.playing() || session.baking() || pointer.down() || frames_to_draw > 0;
             if (busy || !window_state.imgui_keys.empty()) glfwPollEvents();
@@ -386,6 +426,8 @@ int run_editor(const EditorOptions &options) {
                     } else if (e.code == GLFW_KEY_ESCAPE) {
                         session.cancel_drag();
                         pointer.cancel(session);
+                    } else if (e.code == GLFW_KEY_P && !ctrl) {
+                        session.set_paths_on(!session.paths_on());
                     } else if ((e.code == GLFW_KEY_C && !ctrl) || e.code == GLFW_KEY_KP_0) {
                         session.set_free_view(!session.free_view());
                     } else if (e.code == GLFW_KEY_HOME || (e.code == GLFW_KEY_F && !ctrl)) {
@@ -430,6 +472,15 @@ int run_editor(const EditorOptions &options) {
             played_to = session.time();
             // Bake between frames: a slice small enough to keep playback and the mouse smooth.
             session.bake_some(session.playing() || pointer.down() ? 0.008 : 0.03);
+            // A drag's own bake, for the motion paths to follow it (never blocking the drag).
+            if (pointer.down()) {
+                session.preview_some(0.008);
+                if (signals && session.preview_baked_until() >= session.max_time() &&
+                    session.preview_version() != previewed) {
+                    previewed = session.preview_version();
+                    std::cout << "animator: drag previewed (moves " << window_state.moves << ")" << std::endl;
+                }
+            }
             if (was_baking && !session.baking()) std::cout << "animator: " << bake_status(session) << std::endl;
 
             if (drawn_version != session.version()) {
@@ -457,7 +508,10 @@ int run_editor(const EditorOptions &options) {
             target.width = static_cast<int>(std::lround(view.width * to_fb));
             target.height = static_cast<int>(std::lround(view.height * to_fb));
             target.y = fb_h - static_cast<int>(std::lround(view.y * to_fb)) - target.height; // GL's rows go up
-            if (target.width > 0 && target.height > 0) renderer.draw(session.shown_frame(), target, session.selection(), session.overlapping_models());
+            if (target.width > 0 && target.height > 0) {
+                renderer.draw(session.shown_frame(), target, session.selection(), session.overlapping_models());
+                renderer.draw_paths(path_lines.get(session), target);
+            }
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, fb_w, fb_h);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

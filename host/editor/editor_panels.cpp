@@ -245,6 +245,13 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
     }
     ImGui::SameLine();
     cel_outline(s, session);
+    ImGui::SameLine();
+    bool paths = session.paths_on(); // a view setting, not an edit
+    if (ImGui::Checkbox("Paths (p)", &paths)) session.set_paths_on(paths);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Motion paths of the selected models: a dot per frame, white at keys, magenta at\n"
+                          "collisions. They follow a drag as it happens. A model's own Path box keeps its\n"
+                          "path shown when it is not selected.");
     if (asset_combo("Skybox", s.skybox, env_.assets.list(ANI_ASSET_SKYBOX))) {
         std::string error;
         commit(session.set_settings(s, &error), error);

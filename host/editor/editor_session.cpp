@@ -1,5 +1,6 @@
 #include "editor/editor_session.hpp"
 
+#include "editor/motion_paths.hpp"
 #include "editor/overlap_fix.hpp"
 #include "editor/time_steps.hpp"
 #include "io/document_io.hpp"
@@ -50,9 +51,11 @@ bool EditorSession::open(const fs::path &path, std::string &error) {
         export_to_path_ = path.extension() == ".ani";
         timeline_ = std::move(timeline);
         meshes_ = std::move(meshes);
+        preview_.reset(); // baked with the meshes of the document before
         warnings_ = std::move(warnings);
         history_.clear();
         selection_.clear();
+        pinned_paths_.clear();
         last_selected_ = -1;
         drag_.reset();
         playing_ = false;
@@ -214,7 +217,86 @@ void EditorSession::begin_drag(DragButton button, int viewport_height) {
 }
 
 void EditorSession::update_drag(glm::dvec2 delta) {
-    if (drag_) drag_->delta = delta;
+    if (!drag_ || drag_->delta == delta) return;
+    drag_->delta = delta;
+    preview_stale_ = true;
+}
+
+std::optional<Document> EditorSession::dragged_document() const {
+    if (!drag_ || mode_ == EditMode::Camera) return std::nullopt;
+    std::vector<std::pair<int, ModelState>> after;
+    for (const auto &[m, start] : drag_->models) {
+        const ModelState s = drag_model(start, mode_, drag_->button, drag_->delta, drag_->metres_per_pixel);
+        if (!(s == start)) after.emplace_back(m, s);
+    }
+    if (after.empty()) return std::nullopt;
+    Document doc = doc_;
+    try {
+        transform_edit(after, std::nullopt)->apply(doc);
+    } catch (const std::exception &) {
+        return std::nullopt; // the drop would be refused too; the paths stay as baked
+    }
+    return doc;
+}
+
+void EditorSession::pin_path(int model, bool on) {
+    if (on) pinned_paths_.insert(model);
+    else pinned_paths_.erase(model);
+}
+
+std::vector<int> EditorSession::path_models() const {
+    std::set<int> shown = pinned_paths_;
+    if (paths_on_) shown.insert(selection_.begin(), selection_.end());
+    std::vector<int> out;
+    for (int m : shown)
+        if (m >= 0 && m < static_cast<int>(doc_.models().size())) out.push_back(m);
+    return out;
+}
+
+std::vector<MotionPath> EditorSession::motion_paths() const {
+    const std::vector<int> models = path_models();
+    if (models.empty()) return {};
+    // During a drag, the dragged document's own bake (as far as it has gone).
+    if (drag_ && preview_ && preview_doc_ && !preview_stale_)
+        return sample_motion_paths(*preview_doc_, *preview_, models, max_time(), kStepFramesPerSecond);
+    return sample_motion_paths(doc_, *timeline_, models, max_time(), kStepFramesPerSecond);
+}
+
+bool EditorSession::preview_some(double budget) {
+    if (!drag_ || path_models().empty()) return false;
+    if (preview_stale_) {
+        preview_stale_ = false;
+        ++preview_version_;
+        preview_doc_ = dragged_document();
+        if (!preview_doc_) return false;
+        try {
+            if (preview_ && preview_->backend_id() != timeline_->backend_id()) preview_.reset();
+            if (!preview_) {
+                preview_ = std::make_unique<Timeline>(*preview_doc_, env_.plugins, timeline_->backend_override());
+                preview_->set_meshes(meshes_);
+            } else {
+                preview_->edit(*preview_doc_);
+            }
+        } catch (const std::exception &) {
+            preview_.reset();
+            preview_doc_.reset();
+            return false;
+        }
+    }
+    if (!preview_ || !preview_doc_) return false;
+    const double end = max_time();
+    const auto start = std::chrono::steady_clock::now();
+    while (preview_->baked_until() < end && seconds_since(start) < budget) {
+        try {
+            // Slices of the main bake's size (bake_some() keeps it to its budget).
+            preview_->bake(std::min(end, preview_->baked_until() + chunk_));
+        } catch (const std::exception &) {
+            preview_.reset();
+            preview_doc_.reset();
+            return false;
+        }
+    }
+    return preview_->baked_until() < end;
 }
 
 std::unique_ptr<Edit> EditorSession::transform_edit(const std::vector<std::pair<int, ModelState>> &models,

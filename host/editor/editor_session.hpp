@@ -7,6 +7,7 @@
 #include "document/history.hpp"
 #include "editor/free_view.hpp"
 #include "editor/manipulation.hpp"
+#include "editor/motion_paths.hpp"
 #include "io/environment.hpp"
 #include "timeline/timeline.hpp"
 
@@ -119,6 +120,23 @@ class EditorSession {
     const std::vector<ani_overlap> &overlaps() const { return timeline_->overlaps(); }
     std::set<int> overlapping_models() const;
     bool lift_out(std::size_t index, std::string *error = nullptr);
+
+    // Motion paths (motion_paths.hpp), none of it an edit: with paths on (p), the selected
+    // models show theirs, and a model pinned on shows its own always. While models are dragged
+    // their paths follow the drag: the dragged document is baked on its own (preview_some(),
+    // between frames, never blocking the drag), and the paths show as far as it has baked.
+    bool paths_on() const { return paths_on_; }
+    void set_paths_on(bool on) { paths_on_ = on; }
+    bool path_pinned(int model) const { return pinned_paths_.count(model) > 0; }
+    void pin_path(int model, bool on);
+    std::vector<int> path_models() const;
+    std::vector<MotionPath> motion_paths() const;
+    // Bakes the drag in progress on for about `budget` seconds; true while more remains.
+    bool preview_some(double budget);
+    // How far the drag's own bake has gone (seconds; -1 without one).
+    double preview_baked_until() const { return preview_ ? preview_->baked_until() : -1.0; }
+    // Changes each time the drag's document changes.
+    std::uint64_t preview_version() const { return preview_version_; }
     // Undo and redo at the current keyframe (its own stack, then the document's).
     bool undo();
     bool redo();
@@ -183,6 +201,14 @@ class EditorSession {
     EditMode mode_ = EditMode::Camera;
     std::optional<Drag> drag_;
     bool free_view_on_ = false, view_started_ = false;
+    bool paths_on_ = false;
+    std::set<int> pinned_paths_;
+    // The document with the drag in progress applied, and its own timeline (motion paths).
+    std::unique_ptr<Timeline> preview_;
+    std::optional<Document> preview_doc_;
+    bool preview_stale_ = false;
+    std::uint64_t preview_version_ = 0;
+    std::optional<Document> dragged_document() const;
     FreeView view_;
 };
 

@@ -292,6 +292,15 @@ void Renderer::draw_outlines(const std::set<int> &selected, const std::set<int> 
     outline_->end();
 }
 
+void Renderer::draw_paths(const std::vector<PathLines> &paths, const RenderTarget &target, const PathStyle &style) {
+    if (paths.empty()) return;
+    if (!paths_) paths_ = std::make_unique<MotionPathOverlay>();
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    glViewport(target.x, target.y, target.width, target.height);
+    current_program_ = nullptr; // the overlay binds its own program
+    paths_->draw(paths, glm::mat4(view_projection_), style);
+}
+
 int Renderer::pick(const Frame &frame, int width, int height, int x, int y) {
     if (!picking_) picking_ = std::make_unique<PickingPass>();
     prepare_frame(frame, width, height);

@@ -19,6 +19,7 @@
 #include "render/gpu_mesh.hpp"
 #include "render/gpu_texture.hpp"
 #include "render/picking_pass.hpp"
+#include "render/motion_path_overlay.hpp"
 #include "render/selection_outline.hpp"
 #include "render/shading_programs.hpp"
 #include "render/uniform_values.hpp"
@@ -88,6 +89,9 @@ class Renderer {
     void draw(const Frame &frame, const RenderTarget &target, const std::set<int> &selected = {},
               const std::set<int> &flagged = {});
 
+    // Motion paths over the frame draw() drew last, into the same target (motion_path_overlay.hpp).
+    void draw_paths(const std::vector<PathLines> &paths, const RenderTarget &target, const PathStyle &style = {});
+
     // The model drawn at pixel (x, y), from the top left of a target of this size, or -1.
     int pick(const Frame &frame, int width, int height, int x, int y);
 
@@ -123,6 +127,7 @@ class Renderer {
     std::unique_ptr<GpuMesh> skybox_cube_;
     std::unique_ptr<PickingPass> picking_;
     std::unique_ptr<SelectionOutline> outline_;
+    std::unique_ptr<MotionPathOverlay> paths_;
     void draw_outlines(const std::set<int> &selected, const std::set<int> &flagged, int width, int height);
 
     // Per frame, kept to reuse their storage.
