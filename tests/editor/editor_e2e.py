@@ -411,13 +411,22 @@ class Editor:
     def screenshot(self, name):
         """The whole screen (the window is at (0, 0)), as an Image; the PNG stays in the folder."""
         time.sleep(0.15)
+        return self.read_capture(self.capture(name))
+
+    def capture(self, name):
+        """Takes the screenshot now and returns its PNG's path, to read later (read_capture):
+        while playback runs, capturing alone keeps the shots close together on a loaded machine,
+        where reading each one took seconds."""
         png = os.path.join(self.case.dir, '%02d-%s.png' % (self.case.next_shot(), name))
-        ppm = png[:-4] + '.ppm'
         subprocess.run(['import', '-window', 'root', png], check=True, capture_output=True, timeout=30)
+        self.case.log('screenshot %s' % os.path.basename(png))
+        return png
+
+    def read_capture(self, png):
+        ppm = png[:-4] + '.ppm'
         subprocess.run(['convert', png, ppm], check=True, capture_output=True, timeout=30)
         img = Image(ppm)
         os.remove(ppm)
-        self.case.log('screenshot %s' % os.path.basename(png))
         return img
 
     # Acting
@@ -637,9 +646,10 @@ MESSAGE_BOX = (18, 518, 342, 540)      # the status message, under the status li
 
 # --- Checks on screenshots ------------------------------------------------------------------------
 
-def ball_on_screen(e, name):
-    """Screenshot; the test ball's pixels (whatever is not background in the 3D view)."""
-    img = e.screenshot(name)
+def ball_on_screen(e, name, img=None):
+    """Screenshot (or img, one taken earlier); the test ball's pixels (whatever is not
+    background in the 3D view)."""
+    img = img or e.screenshot(name)
     n, x, y, mean = img.blob(lambda px: not is_background(px), view_box(img))
     SHOWN_CX[0] = view_centre(img)
     check(n > 5000, '%s: the ball is not on screen (%d pixels not background)' % (name, n))
@@ -874,17 +884,20 @@ def case_play_space(c):
     end_x = CX + 2.4 / METRES_PER_PIXEL
     e.key('space', settle=False)  # watched while it plays, until it stops by itself at the end
     start = time.time()
-    xs = []
+    shots, xs = [], []
     while True:
         asleep = e.idle_signal()[0] >= e.sent   # checked before the screenshot: it shows the end
-        _, _, x, y, _ = ball_on_screen(e, 'playing')
-        xs.append((time.time() - start, x))
-        check(abs(y - 360) < 4, 'playing moved the ball off its line: y = %.1f' % y)
+        shots.append((time.time() - start, e.capture('playing')))
         if asleep:
             break
+        time.sleep(0.4)  # a shot every half second or so, read once playback has ended
         check(e.running(), 'animator exited while playing')
         check(time.time() - start < HANG_TIMEOUT, 'playback never stopped by itself at the end')
     played = time.time() - start
+    for t, png in shots:
+        _, _, x, y, _ = ball_on_screen(e, os.path.basename(png), e.read_capture(png))
+        xs.append((t, x))
+        check(abs(y - 360) < 4, 'playing moved the ball off its line: y = %.1f' % y)
     e.settle()
     e.case.log('x over time: %s; stopped after %.2f s' % ([(round(t, 2), round(x)) for t, x in xs], played))
     check(e.shown_ms() == end_ms, 'playback stopped at %d ms, not at the end (%d ms)' % (e.shown_ms(), end_ms))
