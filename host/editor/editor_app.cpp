@@ -423,6 +423,10 @@ int run_editor(const EditorOptions &options) {
                         panels.say(r.message, !r.ok);
                     } else if (e.code == GLFW_KEY_Q && !ctrl) {
                         window_state.close_requested = true;
+                    } else if (e.code == GLFW_KEY_F1) {
+                        panels.toggle_help();
+                    } else if (e.code == GLFW_KEY_ESCAPE && panels.help_open()) {
+                        panels.close_help();
                     } else if (e.code == GLFW_KEY_ESCAPE) {
                         session.cancel_drag();
                         pointer.cancel(session);

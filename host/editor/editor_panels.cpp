@@ -1,5 +1,6 @@
 #include "editor/editor_panels.hpp"
 
+#include "editor/help.hpp"
 #include "editor/overlap_fix.hpp"
 #include "editor/status_line.hpp"
 #include "render/renderer.hpp"
@@ -112,6 +113,7 @@ void Panels::draw(EditorSession &session, float width, float height, double wall
     animator_panel(session, height, wall);
     if (session.last_selected() >= 0) model_panel(session, width, height);
     dialogs(session);
+    draw_help_overlay(&help_open_, width, height);
     // After the dialogs, so the frame a dialog opens in already counts.
     dialog_open_ = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
 }

@@ -33,6 +33,10 @@ class Panels {
     void redo(EditorSession &session);
     // Where the panels were drawn this frame, for the view to take the space they leave.
     const std::vector<PanelPlace> &places() const { return places_; }
+    // The F1 overlay of every key and mouse action (help.hpp).
+    void toggle_help() { help_open_ = !help_open_; }
+    bool help_open() const { return help_open_; }
+    void close_help() { help_open_ = false; }
     // A modal dialog is open: the editor's shortcuts wait until it is answered.
     bool dialog_open() const { return dialog_open_; }
 
@@ -64,6 +68,7 @@ class Panels {
     bool dialog_open_ = false;
     std::vector<PanelPlace> places_;
     bool quit_asked_ = false, quit_confirmed_ = false;
+    bool help_open_ = false;
     std::string error_title_, error_text_;
     bool error_pending_ = false;
     float placed_at_width_ = 0.0f; // the window width the Model Interface was placed for

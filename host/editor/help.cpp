@@ -1,0 +1,90 @@
+#include "editor/help.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace animator {
+
+const std::vector<HelpSection> &help_sections() {
+    static const std::vector<HelpSection> sections = {
+        {"Keys",
+         {
+             {"SPACE", "play / pause from the current time (real time: frames are dropped, never slowed)"},
+             {"Left, Right", "one frame back or on (30 frames a second); pauses playback"},
+             {"Up, Down", "the previous or next keyframe; pauses playback"},
+             {"`c`, Numpad 0", "free view on or off"},
+             {"Home, F", "frame all, frame the selection (in the free view)"},
+             {"`p`", "motion paths of the selected models on or off"},
+             {"`u`, CTRL+Z", "undo the last transformation or change at this keyframe"},
+             {"`r`, CTRL+SHIFT+Z, CTRL+Y", "redo"},
+             {"`x`", "export to the open .ani (or animations/new.ani)"},
+             {"F1", "this overlay (F1 or ESC closes it)"},
+             {"`q`", "quit; with unsaved changes it asks first"},
+             {"ESC", "cancel a drag (also a look-around drag: the view goes back)"},
+         }},
+        {"Mouse in the 3D view (choose a mode in the Animator Interface)",
+         {
+             {"left click", "select a model (CTRL: add or remove it); empty space: select none"},
+             {"Camera: left / middle / right drag", "move the camera on its x/y / roll it / turn it"},
+             {"Camera: scroll", "move the camera along its view"},
+             {"Rotate: middle / right drag", "turn the selected models about y / about x and z"},
+             {"Translate: middle / right drag", "move them along z / on x and y with the cursor"},
+             {"Scale: middle / right drag", "scale z / scale x and y (right and up grow)"},
+             {"any drag at a time with no keyframe", "makes a keyframe there, keying what moved"},
+         }},
+        {"Free view (looking around: never an edit)",
+         {
+             {"Alt + left drag", "orbit about the pivot (the distance to it stays)"},
+             {"Alt + middle drag", "pan: the scene at the pivot's depth follows the cursor"},
+             {"Alt + right drag, wheel", "zoom towards the pivot"},
+             {"Home", "frame all: every model fits the view"},
+             {"F", "frame the selected models"},
+             {"`c`, Numpad 0, the *Free view* checkbox", "switch between the free view and the animated camera"},
+         }},
+    };
+    return sections;
+}
+
+namespace {
+
+// The manual's markdown (`c`, *Free view*) as plain text.
+std::string plain(const std::string &text) {
+    std::string out;
+    for (char c : text)
+        if (c != '`' && c != '*') out += c;
+    return out;
+}
+
+} // namespace
+
+void draw_help_overlay(bool *open, float width, float height) {
+    if (!*open) return;
+    const ImVec2 size(std::min(width - 40.0f, 760.0f), std::min(height - 40.0f, 600.0f));
+    ImGui::SetNextWindowPos(ImVec2((width - size.x) / 2.0f, (height - size.y) / 2.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(size, ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.94f);
+    ImGui::SetNextWindowFocus();
+    if (ImGui::Begin("Keys and mouse (F1)", open, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
+        for (const HelpSection &section : help_sections()) {
+            ImGui::TextColored(ImVec4(1.0f, 0.78f, 0.25f, 1.0f), "%s", section.title.c_str());
+            if (ImGui::BeginTable(section.title.c_str(), 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+                ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 250.0f);
+                ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
+                for (const HelpRow &row : section.rows) {
+                    ImGui::TableNextRow();
+                    ImGui::TableSetColumnIndex(0);
+                    ImGui::TextUnformatted(plain(row.keys).c_str());
+                    ImGui::TableSetColumnIndex(1);
+                    ImGui::TextWrapped("%s", row.action.c_str());
+                }
+                ImGui::EndTable();
+            }
+            ImGui::Spacing();
+        }
+        ImGui::TextDisabled("docs/manual.md says more. Close: F1, ESC or the x above.");
+    }
+    ImGui::End();
+}
+
+} // namespace animator
