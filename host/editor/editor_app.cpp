@@ -48,6 +48,8 @@ struct WindowState {
     // (announce_idle) says how many, so a test knows its input was seen before the editor slept.
     std::uint64_t inputs = 0, moves = 0;
     bool close_requested = false;
+    double cursor_x = 0, cursor_y = 0; // from the last motion event, in event order
+    bool cursor_known = false;
     // ImGui 1.86 reads keys as up or down once a frame, so a key pressed and released between
     // two frames (a fast typist, xdotool) would never reach a text field: keys reach ImGui from
     // this queue, at most one change of each key per frame.
@@ -66,8 +68,11 @@ void install_callbacks(GLFWwindow *window) {
         auto &s = state_of(w);
         s.woke = true;
         ++s.inputs;
-        double x = 0, y = 0;
-        glfwGetCursorPos(w, &x, &y);
+        // Where the pointer was when the button changed: the last motion event's place. (On X11
+        // glfwGetCursorPos asks the server where the pointer is now, which may be past moves
+        // still queued: a drag released and moved on at once was dropped where it moved to.)
+        double x = s.cursor_x, y = s.cursor_y;
+        if (!s.cursor_known) glfwGetCursorPos(w, &x, &y);
         s.events.push_back({action == GLFW_PRESS ? InputEvent::Press : InputEvent::Release, button, mods, x, y});
     });
     glfwSetScrollCallback(window, [](GLFWwindow *w, double, double dy) {
@@ -76,10 +81,13 @@ void install_callbacks(GLFWwindow *window) {
         ++s.inputs;
         s.events.push_back({InputEvent::Scroll, 0, 0, 0, dy});
     });
-    glfwSetCursorPosCallback(window, [](GLFWwindow *w, double, double) {
+    glfwSetCursorPosCallback(window, [](GLFWwindow *w, double x, double y) {
         auto &s = state_of(w);
         s.woke = true;
         ++s.moves;
+        s.cursor_x = x;
+        s.cursor_y = y;
+        s.cursor_known = true;
     });
     glfwSetCharCallback(window, [](GLFWwindow *w, unsigned) { state_of(w).woke = true; });
     glfwSetWindowSizeCallback(window, [](GLFWwindow *w, int, int) { state_of(w).woke = true; });
@@ -482,7 +490,8 @@ int run_editor(const EditorOptions &options) {
                 if (signals && session.preview_baked_until() >= session.max_time() &&
                     session.preview_version() != previewed) {
                     previewed = session.preview_version();
-                    std::cout << "animator: drag previewed (moves " << window_state.moves << ")" << std::endl;
+                    std::cout << "animator: drag previewed (delta " << session.drag_delta().x << " " << session.drag_delta().y
+                              << ")" << std::endl;
                 }
             }
             if (was_baking && !session.baking()) std::cout << "animator: " << bake_status(session) << std::endl;

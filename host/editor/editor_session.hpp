@@ -85,6 +85,7 @@ class EditorSession {
     void end_drag();
     void cancel_drag() { drag_.reset(); }
     bool dragging() const { return drag_.has_value(); }
+    glm::dvec2 drag_delta() const { return drag_ ? drag_->delta : glm::dvec2(0.0); } // pixels
     // The scroll wheel in Camera mode: moves the camera along its view, one undoable edit.
     void scroll(double notches);
 
