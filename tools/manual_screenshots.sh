@@ -43,7 +43,8 @@ click() { xdotool mousemove --window "$win" "$1" "$2"; sleep 0.3; xdotool click 
 
 xdotool windowfocus --sync "$win"
 shot 01-editor
-click 590 250                  # the red ball: selected, tinted yellow, its Model Interface opens beside the view
+# The 3D view is right of the Animator Interface and above the Timeline (560 px tall at 1280x720).
+click 642 196                  # the red ball: selected, tinted yellow, its Model Interface opens beside the view
 shot 02-selected
 xdotool key space              # play: the ball falls and bounces
 shot 03-playing 0.55
@@ -51,30 +52,38 @@ xdotool key space              # pause
 click 27 370                   # Cel Shading
 shot 04-cel-shading
 click 27 370                   # back to Phong
-click 560 380                  # the textured cube
+click 576 296                  # the textured cube
 click 174 63                   # Translate mode
 xdotool mousemove --window "$win" 128 86 keydown ctrl click 1 keyup ctrl   # the Time slider as a text field
 sleep 0.4
 xdotool key ctrl+a type 4000
 xdotool key Return
 sleep 0.4
-xdotool mousemove --window "$win" 560 380 mousedown 3
+xdotool mousemove --window "$win" 576 296 mousedown 3
 for dx in 20 40 60 80 100 120 140 160; do
-  xdotool mousemove --window "$win" $((560 - dx / 4)) $((380 - dx / 2))   # up and a little left, clear of the cylinder
+  xdotool mousemove --window "$win" $((576 - dx / 5)) $((296 - dx * 2 / 5))   # up and a little left, clear of the cylinder
   sleep 0.05
 done
 xdotool mouseup 3
 shot 05-new-keyframe
 xdotool key f                  # the free view, framing the selected cube
 sleep 0.4
-xdotool mousemove --window "$win" 700 600 keydown alt mousedown 1   # Alt + left drag: orbit
+xdotool mousemove --window "$win" 700 470 keydown alt mousedown 1   # Alt + left drag: orbit
 for dx in 15 30 45 60 75 90; do
-  xdotool mousemove --window "$win" $((700 + dx)) $((600 + dx * 2 / 3))
+  xdotool mousemove --window "$win" $((700 + dx)) $((470 + dx * 2 / 3))
   sleep 0.05
 done
 xdotool mouseup 1 keyup alt
-xdotool mousemove --window "$win" 640 650 click 5 click 5 click 5 click 5   # the wheel: zoom out
+xdotool mousemove --window "$win" 640 500 click 5 click 5 click 5 click 5   # the wheel: zoom out
 shot 06-free-view
+# The Timeline: the cube's key at 4 s (rows: Camera, floor, ball, cube, ...; 20 s across the
+# tracks from x 476 to 1264) dragged to 8 s; the ball's bounces tick its row and the floor's.
+xdotool mousemove --window "$win" 634 656; sleep 0.3
+xdotool mousedown 1; sleep 0.2
+for x in 660 690 720 750 780 791; do xdotool mousemove --window "$win" $x 656; sleep 0.05; done
+sleep 0.2; xdotool mouseup 1
+xdotool mousemove --window "$win" 1000 450
+shot 08-timeline
 
 # Models inside each other: the demo's cube as it once was, half inside the floor.
 kill "$editor"; wait "$editor" 2>/dev/null || true
@@ -92,7 +101,7 @@ done
 [ -n "$win" ] || { echo "the editor did not open a window:" >&2; cat "$work/log" >&2; exit 1; }
 for _ in $(seq 600); do grep -q '^animator: idle' "$work/log" && break; sleep 0.1; done
 xdotool windowfocus --sync "$win"
-click 735 390                  # the cube, sunk half into the floor (the view spans the window right of the panel)
+click 753 303                  # the cube, sunk half into the floor (the view spans the window right of the panel, above the Timeline)
 click 927 109                  # Model Interface > Physics > Gravity: the bake finds them overlapping
 for _ in $(seq 600); do grep -q "overlap at t = 0 s" "$work/log" && break; sleep 0.1; done
 xdotool mousemove --window "$win" 700 650

@@ -25,6 +25,11 @@ class Edit {
     // The time of the keyframe this edit creates, if it creates one: that keyframe starts with
     // a fresh undo stack.
     virtual std::optional<std::int64_t> creates_keyframe() const { return std::nullopt; }
+    // Every keyframe this edit creates (an edit of keys can make several).
+    virtual std::vector<std::int64_t> creates_keyframes() const {
+        const auto one = creates_keyframe();
+        return one ? std::vector<std::int64_t>{*one} : std::vector<std::int64_t>{};
+    }
 };
 
 class SetStateEdit final : public Edit {

@@ -16,7 +16,7 @@ void EditHistory::perform(Document &doc, std::unique_ptr<Edit> edit) {
     edit->apply(doc);
     // A keyframe made anew starts with an empty history; an older keyframe that was at the
     // same time and was deleted takes its history with it.
-    if (auto created = edit->creates_keyframe()) keyframe_stacks_.erase(*created);
+    for (std::int64_t created : edit->creates_keyframes()) keyframe_stacks_.erase(created);
     Stack &stack = stack_for(edit->keyframe());
     stack.undone.clear();
     stack.done.push_back(Entry{std::move(edit), ++clock_});

@@ -392,8 +392,10 @@ int run_editor(const EditorOptions &options) {
                 switch (e.kind) {
                 case InputEvent::Press:
                     // Drags are in window coordinates, so the viewport height is too (on a
-                    // HiDPI screen the framebuffer has more pixels than the window).
-                    if (!io.WantCaptureMouse && !pointer.down()) pointer.press(session, e, win_h);
+                    // HiDPI screen the framebuffer has more pixels than the window): the 3D
+                    // view's, which ends above the Timeline.
+                    if (!io.WantCaptureMouse && !pointer.down())
+                        pointer.press(session, e, static_cast<int>(std::lround(view.height)));
                     break;
                 case InputEvent::Release:
                     if (auto click = pointer.release(session, e)) {
@@ -438,6 +440,13 @@ int run_editor(const EditorOptions &options) {
                     } else if (e.code == GLFW_KEY_ESCAPE) {
                         session.cancel_drag();
                         pointer.cancel(session);
+                        panels.cancel_timeline_drag();
+                    } else if (e.code == GLFW_KEY_DELETE) {
+                        panels.delete_keys(session); // the Timeline's selected keys, if any
+                    } else if (e.code == GLFW_KEY_C && ctrl) {
+                        panels.copy_keys(session); // never `c`'s free view
+                    } else if (e.code == GLFW_KEY_V && ctrl) {
+                        panels.paste_keys(session);
                     } else if (e.code == GLFW_KEY_P && !ctrl) {
                         session.set_paths_on(!session.paths_on());
                     } else if ((e.code == GLFW_KEY_C && !ctrl) || e.code == GLFW_KEY_KP_0) {

@@ -111,12 +111,32 @@ void Panels::draw(EditorSession &session, float width, float height, double wall
     }
     places_.clear();
     animator_panel(session, height, wall);
-    if (session.last_selected() >= 0) model_panel(session, width, height);
+    timeline(session, width, height);
+    // The Model Interface stays above the Timeline.
+    const PanelPlace &bottom = places_.back();
+    const float above = bottom.collapsed ? height : static_cast<float>(bottom.rect.y);
+    if (session.last_selected() >= 0) model_panel(session, width, height, above);
     dialogs(session);
     draw_help_overlay(&help_open_, width, height);
     // After the dialogs, so the frame a dialog opens in already counts.
     dialog_open_ = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
 }
+
+void Panels::timeline(EditorSession &session, float width, float height) {
+    const ScreenRect rect = bottom_panel_rect(width, height, bottom_panel_height(height), places_);
+    places_.push_back(dope_sheet_.draw(session, rect));
+    if (auto m = dope_sheet_.take_message()) say(*m);
+}
+
+bool Panels::delete_keys(EditorSession &session) {
+    if (!dope_sheet_.has_selection()) return false;
+    say(dope_sheet_.delete_selected(session));
+    return true;
+}
+
+void Panels::copy_keys(EditorSession &session) { say(dope_sheet_.copy(session)); }
+
+void Panels::paste_keys(EditorSession &session) { say(dope_sheet_.paste(session)); }
 
 void Panels::animator_panel(EditorSession &session, float height, double wall) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
@@ -440,7 +460,7 @@ void Panels::physics_backend(EditorSession &session) {
     ImGui::TreePop();
 }
 
-void Panels::model_panel(EditorSession &session, float width, float height) {
+void Panels::model_panel(EditorSession &session, float width, float height, float bottom) {
     const int index = session.last_selected();
     if (!model_draft_ || model_draft_index_ != index) {
         model_draft_ = session.document().models()[static_cast<size_t>(index)];
@@ -449,10 +469,12 @@ void Panels::model_panel(EditorSession &session, float width, float height) {
     // At the right edge, and back there when the window's width changes. Narrower in a small
     // window (800 px: 240), so the view between the panels keeps some room.
     const float panel_width = std::clamp(width * 0.3f, 240.0f, 360.0f);
-    const ImGuiCond place = width != placed_at_width_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+    // Above the Timeline (`bottom`, its top), and placed again when that moves.
+    const ImGuiCond place = width != placed_at_width_ || bottom != placed_at_bottom_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
     ImGui::SetNextWindowPos(ImVec2(width - panel_width - 10.0f, 10), place);
-    ImGui::SetNextWindowSize(ImVec2(panel_width, std::min(height - 20.0f, 560.0f)), place);
+    ImGui::SetNextWindowSize(ImVec2(panel_width, std::max(100.0f, std::min({height - 20.0f, bottom - 20.0f, 560.0f}))), place);
     placed_at_width_ = width;
+    placed_at_bottom_ = bottom;
     const bool open = ImGui::Begin("Model Interface");
     places_.push_back(current_place());
     if (!open) {

@@ -4,6 +4,7 @@
 // of a slider is one edit.
 #pragma once
 
+#include "editor/dope_sheet.hpp"
 #include "editor/editor_session.hpp"
 #include "editor/view_layout.hpp"
 
@@ -17,8 +18,9 @@ class Panels {
   public:
     explicit Panels(Environment &env) : env_(env) {}
 
-    // Draws the Animator Interface (left) and, with a model selected, the Model Interface
-    // (right), in a window `width` x `height` (screen coordinates).
+    // Draws the Animator Interface (left), the Timeline (along the bottom, dope_sheet.hpp)
+    // and, with a model selected, the Model Interface (right), in a window `width` x `height`
+    // (screen coordinates).
     void draw(EditorSession &session, float width, float height, double wall);
 
     // A line for the status bar: the last thing that happened or went wrong.
@@ -31,6 +33,12 @@ class Panels {
     // from an earlier action ("nothing to undo here") never outlives the next one.
     void undo(EditorSession &session);
     void redo(EditorSession &session);
+    // The Timeline's keys: DELETE (true when keys were selected there, so the key was its),
+    // CTRL+C, CTRL+V; the status line says what happened. ESC stops a drag in it.
+    bool delete_keys(EditorSession &session);
+    void copy_keys(EditorSession &session);
+    void paste_keys(EditorSession &session);
+    void cancel_timeline_drag() { dope_sheet_.cancel_drag(); }
     // Where the panels were drawn this frame, for the view to take the space they leave.
     const std::vector<PanelPlace> &places() const { return places_; }
     // The F1 overlay of every key and mouse action (help.hpp).
@@ -49,7 +57,9 @@ class Panels {
 
   private:
     void animator_panel(EditorSession &session, float height, double wall);
-    void model_panel(EditorSession &session, float width, float height);
+    void model_panel(EditorSession &session, float width, float height, float bottom);
+    void timeline(EditorSession &session, float width, float height);
+    void say(const DopeSheet::Result &r) { say(r.message, !r.ok); }
     void physics_backend(EditorSession &session);
     void overlaps(EditorSession &session);
     void dialogs(EditorSession &session);
@@ -72,6 +82,8 @@ class Panels {
     std::string error_title_, error_text_;
     bool error_pending_ = false;
     float placed_at_width_ = 0.0f; // the window width the Model Interface was placed for
+    float placed_at_bottom_ = 0.0f; // and the bottom it was kept above (the Timeline's top)
+    DopeSheet dope_sheet_;
 };
 
 } // namespace animator

@@ -63,10 +63,26 @@ UNDO_BUTTON = (50, 487)
 REDO_BUTTON = (121, 487)
 EXPORT_BUTTON = (200, 487)
 PANEL_RIGHT = 350                # the 3D view is unobstructed right of this (no model panel)
-MODEL_PANEL = (910, 10, 1270, 570)  # the Model Interface: x0, y0, x1, y1 at 1280x720
+MODEL_PANEL = (910, 10, 1270, 550)  # the Model Interface: x0, y0, x1, y1 at 1280x720 (above the Timeline)
 MODEL_GRAVITY_CHECKBOX = (927, 109)  # in it: Physics > Gravity (Dynamics is at (927, 86))
 
 WIDTH, HEIGHT = 1280, 720
+# The Timeline (dope sheet) is docked along the bottom (host/editor/view_layout.hpp): 160 px tall
+# (at most 40% of a small window's height). The 3D view ends above it: VIEW_HEIGHT tall at
+# 1280x720, its centre at y = CY. The field of view is vertical: over the view's height.
+TIMELINE_HEIGHT = 160
+
+
+def timeline_height(h=HEIGHT):
+    return min(TIMELINE_HEIGHT, 0.4 * h)
+
+
+def view_height(h=HEIGHT):
+    return h - timeline_height(h)
+
+
+VIEW_HEIGHT = view_height()
+CY = VIEW_HEIGHT / 2
 OUTLINE_ORANGE = (255, 140, 0)
 BACKGROUND = (round(0.16 * 255), round(0.17 * 255), round(0.20 * 255))  # (41, 43, 51)
 
@@ -232,7 +248,7 @@ def parse_ani(path):
 # A scene for the tests: a blue ball in front of the camera, no floor, plain background, no
 # physics moving it, so what is on screen is only what the test did. The camera at z = 12 looks
 # down -Z with a 50 degree field of view: the ball (radius 1) is at the centre of the 3D view,
-# about 64 px in radius at 1280x720.
+# about 50 px in radius at 1280x720 (64.3 px in a 720 px tall view).
 BALL_ANI = '''animator-ani 1
 # A blue ball in front of the camera (editor e2e tests).
 
@@ -258,8 +274,8 @@ keyframe 0
 end
 '''
 
-# The size of one pixel at the ball's depth (12 m) in a 720 px tall view, fov 50 degrees.
-METRES_PER_PIXEL = 2 * 12 * 0.46630765815 / 720
+# The size of one pixel at the ball's depth (12 m) in the VIEW_HEIGHT px tall view, fov 50 degrees.
+METRES_PER_PIXEL = 2 * 12 * 0.46630765815 / VIEW_HEIGHT
 
 # The same ball as a Lua scene (a scene, not an animation: export goes to animations/new.ani).
 BALL_LUA = '''gr.settings{gravity = 9.81, down = 'y', max_time = 5}
@@ -500,8 +516,8 @@ class Editor:
     def mouse_away(self):
         """Parks the cursor over the 3D view's bottom-right corner, away from every widget."""
         # Two moves: at least one changes the cursor's place, so the editor sees a move.
-        self.xdo('mousemove', '--window', self.window, WIDTH - 6, HEIGHT - 6)
-        self.xdo('mousemove', '--window', self.window, WIDTH - 5, HEIGHT - 5)
+        self.xdo('mousemove', '--window', self.window, WIDTH - 6, VIEW_HEIGHT - 6)
+        self.xdo('mousemove', '--window', self.window, WIDTH - 5, VIEW_HEIGHT - 5)
         self.settle(moved=True)
 
     def set_time(self, ms):
@@ -524,7 +540,12 @@ class Editor:
             check(self.running(), '`q` with unsaved changes quit without asking')
             self.click(*QUIT_WITHOUT_EXPORTING, settle=False)
         else:
-            self.key('q', settle=False)
+            # The editor quits on the press: by the release its window may be gone, and xdotool
+            # then fails to find the focused window (seen on a loaded machine), which is no fault.
+            self.xdo('keydown', 'q')
+            time.sleep(0.08)
+            subprocess.run(['xdotool', 'keyup', 'q'], capture_output=True, timeout=30)
+            self.sent += 2
         self.wait_exit(timeout)
 
     def wait_exit(self, timeout=HANG_TIMEOUT):
@@ -619,19 +640,19 @@ QUIT_CANCEL = (783, 378)
 # The 3D view is the space the panels leave (editor/view_layout.hpp): right of the Animator
 # Interface, and left of the Model Interface while one is selected (its width is 30% of the
 # window's, 240..360 px, 10 px from the edge; a view narrower than 200 px gives its space back).
-def view_right(img, w=WIDTH):
-    if not model_panel_shown(img, w):
+def view_right(img, w=WIDTH, h=HEIGHT):
+    if not model_panel_shown(img, w, h):
         return w
     right = w - min(max(0.3 * w, 240), 360) - 10
     return right if right - PANEL_RIGHT >= 200 else w
 
 
 def view_box(img, w=WIDTH, h=HEIGHT):
-    return (PANEL_RIGHT + 10, 0, round(view_right(img, w)) - 10, h)
+    return (PANEL_RIGHT + 10, 0, round(view_right(img, w, h)) - 10, round(view_height(h)))
 
 
-def view_centre(img, w=WIDTH):
-    return (PANEL_RIGHT + view_right(img, w)) / 2
+def view_centre(img, w=WIDTH, h=HEIGHT):
+    return (PANEL_RIGHT + view_right(img, w, h)) / 2
 
 
 CX = (PANEL_RIGHT + WIDTH) / 2            # 815: the view's centre, nothing selected
@@ -670,10 +691,11 @@ def outline_pixels(img):
     return len([1 for _, _, px in img.region(*view_box(img)) if near(px, OUTLINE_ORANGE, 40)])
 
 
-def model_panel_shown(img, w=WIDTH):
-    """The Model Interface window's title bar and body are drawn at the right."""
+def model_panel_shown(img, w=WIDTH, h=HEIGHT):
+    """The Model Interface window's title bar and body are drawn at the right (its bottom 10 px
+    above the Timeline, at most 570)."""
     x0 = w - min(max(0.3 * w, 240), 360) - 10
-    y0, y1 = MODEL_PANEL[1], MODEL_PANEL[3]
+    y0, y1 = MODEL_PANEL[1], min(view_height(h) - 10, 570)
     title = img.at(round(x0) + 100, y0 + 9)
     body = img.at(round(x0) + 150, y1 - 60)
     return not is_background(title) and sum(body) < 90  # ImGui's dark window body
@@ -693,8 +715,8 @@ def keyframe_rows(img):
 
 def check_moved(name, x, y, dx, dy, tol=4):
     cx = SHOWN_CX[0]
-    check(abs(x - (cx + dx)) < tol and abs(y - (360 + dy)) < tol,
-          '%s: the ball is at (%.1f, %.1f), expected near (%d, %d)' % (name, x, y, cx + dx, 360 + dy))
+    check(abs(x - (cx + dx)) < tol and abs(y - (CY + dy)) < tol,
+          '%s: the ball is at (%.1f, %.1f), expected near (%d, %d)' % (name, x, y, cx + dx, CY + dy))
 
 
 def top_colour_share(img, k=12):
@@ -739,11 +761,11 @@ def red_ball_y(e, name):
 def translate_ball(e, dx, dy, time_ms):
     """Selects the ball (at the centre), Translate mode, goes to time_ms, drags with the right
     button by (dx, dy) pixels."""
-    e.click(round(CX), 360)  # selected, the ball moves with the view's centre
+    e.click(round(CX), round(CY))  # selected, the ball moves with the view's centre
     e.click(*MODE_TRANSLATE)
     if time_ms is not None:
         e.set_time(time_ms)
-    start = (round(CX_SELECTED), 360)
+    start = (round(CX_SELECTED), round(CY))
     e.drag(start, (start[0] + dx, start[1] + dy), button=3)
 
 
@@ -755,7 +777,7 @@ def case_select_click(c):
     c.write('ball.ani', BALL_ANI)
     e = c.start('ball.ani')
     img, n0, x0, y0, mean = ball_on_screen(e, 'before')
-    check(abs(x0 - CX) < 4 and abs(y0 - 360) < 4, 'the ball is not at the centre of the view: (%.0f, %.0f)' % (x0, y0))
+    check(abs(x0 - CX) < 4 and abs(y0 - CY) < 4, 'the ball is not at the centre of the view: (%.0f, %.0f)' % (x0, y0))
     check_selected_tint('before', mean, False)
     check(outline_pixels(img) < 10, 'an outline before anything was selected')
     check(not model_panel_shown(img), 'a Model Interface is shown before anything was selected')
@@ -770,7 +792,7 @@ def case_select_click(c):
     check(model_panel_shown(img), 'no Model Interface after selecting the ball')
     check(e.title() == 'animator - ball.ani', 'selecting is not an edit, yet the title is %r' % e.title())
 
-    e.click(500, 650)  # empty space
+    e.click(500, 500)  # empty space
     img, n, x, y, mean = ball_on_screen(e, 'deselected')
     check_selected_tint('after a click on empty space', mean, False)
     check(outline_pixels(img) < 10, 'the outline stays after deselecting (%d orange pixels)' % outline_pixels(img))
@@ -832,11 +854,11 @@ def case_model_gravity(c):
     press SPACE: the ball falls, and paused it is where free fall puts it at the time the editor
     shows (y = g t^2 / 2); the export says the ball has gravity."""
     # A gentle gravity keeps the whole ball in the view for all the 6 s it can fall (3.6 m,
-    # 232 px; its edge leaves the view at 296 px), so a machine slow to pause still sees it.
+    # 180 px; its edge leaves the view at 230 px), so a machine slow to pause still sees it.
     g = 0.2
     c.write('ball.ani', BALL_ANI.replace('gravity 9.81', 'gravity %g' % g).replace('max_time_ms 5000', 'max_time_ms 6000'))
     e = c.start('ball.ani')
-    e.click(round(CX), 360)
+    e.click(round(CX), round(CY))
     check(model_panel_shown(e.screenshot('selected')), 'no Model Interface after selecting the ball')
     e.click(*MODEL_GRAVITY_CHECKBOX)  # noqa
     e.wait_for(lambda: e.title() == 'animator - ball.ani *', 'the title to mark the change')
@@ -897,7 +919,7 @@ def case_play_space(c):
     for t, png in shots:
         _, _, x, y, _ = ball_on_screen(e, os.path.basename(png), e.read_capture(png))
         xs.append((t, x))
-        check(abs(y - 360) < 4, 'playing moved the ball off its line: y = %.1f' % y)
+        check(abs(y - CY) < 4, 'playing moved the ball off its line: y = %.1f' % y)
     e.settle()
     e.case.log('x over time: %s; stopped after %.2f s' % ([(round(t, 2), round(x)) for t, x in xs], played))
     check(e.shown_ms() == end_ms, 'playback stopped at %d ms, not at the end (%d ms)' % (e.shown_ms(), end_ms))
@@ -918,8 +940,8 @@ def case_play_space(c):
     expected = x0 + min(t_ms, key_ms) / key_ms * 2.4 / METRES_PER_PIXEL  # linear interpolation
     e.case.log('paused at %d ms: ball at x = %.1f, linear interpolation says %.1f' % (t_ms, xp, expected))
     check(200 <= t_ms < key_ms - 200, 'paused at %d ms, not inside the motion (0..%d ms): the pause came late' % (t_ms, key_ms))
-    check(abs(xp - expected) < 3 and abs(yp - 360) < 4,
-          'paused at %d ms the ball is at (%.1f, %.1f); between its keys it should be at (%.1f, 360)' % (t_ms, xp, yp, expected))
+    check(abs(xp - expected) < 3 and abs(yp - CY) < 4,
+          'paused at %d ms the ball is at (%.1f, %.1f); between its keys it should be at (%.1f, %.1f)' % (t_ms, xp, yp, expected, CY))
     time.sleep(1.0)  # time that would move a playing ball
     _, _, xq, _, _ = ball_on_screen(e, 'still-paused')
     check(abs(xq - xp) < 1, 'the ball moved while paused: %.1f -> %.1f' % (xp, xq))
@@ -951,7 +973,7 @@ def case_undo_redo(c):
     e.wait_for(lambda: e.title() == 'animator - ball.ani *', 'the title to show " *" after redo')
 
     # A second drag at the same keyframe changes it; then the buttons.
-    e.drag((round(CX_SELECTED), 360), (round(CX_SELECTED), 300), button=3)
+    e.drag((round(CX_SELECTED), round(CY)), (round(CX_SELECTED), round(CY) - 60), button=3)
     _, _, x, y, _ = ball_on_screen(e, 'dragged-again')
     check_moved('after the second drag', x, y, 150, -60)
     e.click(*UNDO_BUTTON)
@@ -980,7 +1002,7 @@ def case_cel_skybox(c):
     e.mouse_away()
     img = e.screenshot('smooth')
     check_cel('at the start', img, False)
-    check(is_background(img.at(1200, 650)) and is_background(img.at(500, 100)), 'the background is not the plain colour')
+    check(is_background(img.at(1200, 500)) and is_background(img.at(500, 100)), 'the background is not the plain colour')
 
     e.click(*CEL_CHECKBOX)
     e.mouse_away()
@@ -992,7 +1014,7 @@ def case_cel_skybox(c):
     e.click(*SKYBOX_ITEM_DAY)
     e.mouse_away()
     img = e.screenshot('skybox')
-    plain = len([1 for _, _, px in img.region(PANEL_RIGHT + 10, 0, WIDTH, HEIGHT, step=7) if is_background(px)])
+    plain = len([1 for _, _, px in img.region(PANEL_RIGHT + 10, 0, WIDTH, VIEW_HEIGHT, step=7) if is_background(px)])
     check(plain < 50, 'with a skybox, %d sampled pixels are still the plain background colour' % plain)
     r, g, b = img.at(1100, 60)
     check(b > r + 20, 'the day sky above the ball is not blue: %s' % ((r, g, b),))
@@ -1005,7 +1027,7 @@ def case_cel_skybox(c):
     e.key('u')  # the skybox
     e.mouse_away()
     img = e.screenshot('skybox-undone')
-    check(is_background(img.at(1200, 650)) and is_background(img.at(500, 100)), 'u did not take the skybox away')
+    check(is_background(img.at(1200, 500)) and is_background(img.at(500, 100)), 'u did not take the skybox away')
     check_cel('after undoing the skybox', img, True)
     e.key('u')  # cel shading
     e.mouse_away()
@@ -1200,7 +1222,7 @@ def case_dialog_keys(c):
     e.key('Escape')
     e.mouse_away()
     img = e.screenshot('after-esc')
-    check(not error_dialog_shown(img) and is_background(img.at(1100, 600)), 'Esc did not close the error dialog')
+    check(not error_dialog_shown(img) and is_background(img.at(1100, 500)), 'Esc did not close the error dialog')
     e.quit()
 
     e = c.start('ani_string.ani', name='enter')
@@ -1208,7 +1230,7 @@ def case_dialog_keys(c):
     e.key('Return')
     e.mouse_away()
     img = e.screenshot('after-enter')
-    check(not error_dialog_shown(img) and is_background(img.at(1100, 600)), 'Enter did not close the error dialog')
+    check(not error_dialog_shown(img) and is_background(img.at(1100, 500)), 'Enter did not close the error dialog')
     e.quit()
 
     c.copy('assets/animations/drop.ani')
@@ -1272,12 +1294,13 @@ def case_cel_outline(c):
     img = e.screenshot('outlined')
     outlined = dark_outline_pixels(img)
     e.case.log('dark pixels: %d without the outline, %d with it' % (plain, outlined))
-    # The ball is about 64 px in radius: its silhouette is some 400 px around.
+    # The ball is about 50 px in radius: its silhouette is some 314 px around.
     check(plain < 20 and outlined > 250, 'no outline: %d dark pixels before, %d after' % (plain, outlined))
     # The outline is on the silhouette: dark pixels 60-66 px from the ball's centre, none inside.
     c0 = round(CX)
-    ring = [1 for x, y, px in img.region(c0 - 80, 280, c0 + 80, 440) if max(px) < 16 and 58 < ((x - CX) ** 2 + (y - 360) ** 2) ** 0.5 < 68]
-    inside = [1 for x, y, px in img.region(c0 - 80, 280, c0 + 80, 440) if max(px) < 16 and ((x - CX) ** 2 + (y - 360) ** 2) ** 0.5 < 50]
+    r0, c1 = 64.3 * VIEW_HEIGHT / 720, round(CY)
+    ring = [1 for x, y, px in img.region(c0 - 80, c1 - 80, c0 + 80, c1 + 80) if max(px) < 16 and r0 - 6 < ((x - CX) ** 2 + (y - CY) ** 2) ** 0.5 < r0 + 4]
+    inside = [1 for x, y, px in img.region(c0 - 80, c1 - 80, c0 + 80, c1 + 80) if max(px) < 16 and ((x - CX) ** 2 + (y - CY) ** 2) ** 0.5 < r0 - 14]
     check(len(ring) > 200 and not inside, 'the outline is not on the silhouette (%d on it, %d inside)' % (len(ring), len(inside)))
     e.key('x')
     e.wait_log(r'^animator: exported to ball\.ani$', 'the export')
@@ -1336,7 +1359,7 @@ def alt_drag(e, start, end, button):
 
 def wheel(e, notches):
     """Scroll wheel notches over the view (up: positive); X sends a button per notch."""
-    e.xdo('mousemove', '--window', e.window, 640, 600)
+    e.xdo('mousemove', '--window', e.window, 640, VIEW_HEIGHT - 60)
     for _ in range(abs(notches)):
         e.xdo('click', 4 if notches > 0 else 5)
         e.sent += 1  # GLFW reports the press as one scroll; the release is no event
@@ -1365,14 +1388,14 @@ def case_free_view(c):
     e.set_time(1500)  # away from any keyframe, where a camera move in Camera mode would make one
     e.mouse_away()
 
-    alt_drag(e, (round(CX), 360), (round(CX) + 100, 300), button=2)
+    alt_drag(e, (round(CX), round(CY)), (round(CX) + 100, round(CY) - 60), button=2)
     e.mouse_away()
     _, _, x, y, _ = ball_on_screen(e, 'panned')
     check_moved('after an Alt+middle drag of (100, -60)', x, y, 100, -60)
     e.click(round(x), round(y))  # picking sees the same view
     _, _, _, _, mean = ball_on_screen(e, 'picked')
     check_selected_tint('clicked where the free view shows it', mean, True)
-    e.click(500, 650)
+    e.click(500, 500)
 
     alt_drag(e, (640, 500), (700, 500), button=1)  # orbit about the pivot (the ball's old place)
     e.mouse_away()
@@ -1384,8 +1407,8 @@ def case_free_view(c):
     img, _, xf, yf, _ = ball_on_screen(e, 'framed')
     r = ball_radius(img, xf, yf)
     e.case.log('framed: ball at (%.1f, %.1f), radius %.1f px' % (xf, yf, r))
-    # Framed: centred, and 1/1.1 of the view's half-height seen from the side (about 321 px).
-    check(abs(xf - CX) < 30 and abs(yf - 360) < 6 and 290 < r < 345,
+    # Framed: centred, and 1/1.1 of the view's half-height seen from the side (about 250 px).
+    check(abs(xf - CX) < 30 and abs(yf - CY) < 6 and 0.9 * 250 < r < 1.07 * 250,
           'Home did not frame the ball: at (%.1f, %.1f), radius %.1f px' % (xf, yf, r))
     wheel(e, -3)
     e.mouse_away()
@@ -1397,7 +1420,7 @@ def case_free_view(c):
     e.mouse_away()
     img, n, x, y, _ = ball_on_screen(e, 'animated-camera')
     check_moved('through the animated camera again', x, y, 0, 0)
-    check(abs(ball_radius(img, x, y) - 64.3) < 4, 'the animated camera moved: the ball is %.1f px in radius' % ball_radius(img, x, y))
+    check(abs(ball_radius(img, x, y) - 64.3 * VIEW_HEIGHT / 720) < 4, 'the animated camera moved: the ball is %.1f px in radius' % ball_radius(img, x, y))
     e.click(*FREE_VIEW_CHECKBOX)
     e.mouse_away()
     img, _, x2, y2, _ = ball_on_screen(e, 'free-view-checkbox')
@@ -1428,7 +1451,7 @@ def case_bad_file(c):
     check(sum(body) < 90, 'no dark dialog body at %s: %s' % (ERROR_DIALOG_BODY, body))
     # A modal dialog dims what is behind it, fading in over about 0.17 s of ImGui's clock
     # (ModalWindowDimBg: 0.8 grey at 35%); the editor must draw until the fade is done.
-    dimmed = img.at(1100, 600)
+    dimmed = img.at(1100, 500)
     full_dim = tuple(round(0.65 * v + 0.35 * 204) for v in BACKGROUND)
     check(near(dimmed, full_dim, 6), 'the view behind the modal dialog is %s, not fully dimmed %s' % (dimmed, full_dim))
     text = [px for _, _, px in img.region(465, 342, 815, 375) if sum(px) > 450]
@@ -1436,7 +1459,7 @@ def case_bad_file(c):
     click_error_ok(e, img)
     e.mouse_away()
     img = e.screenshot('dismissed')
-    check(is_background(img.at(1100, 600)) and is_background(img.at(*ERROR_DIALOG_BODY)), 'OK did not close the dialog')
+    check(is_background(img.at(1100, 500)) and is_background(img.at(*ERROR_DIALOG_BODY)), 'OK did not close the dialog')
     e.quit()
     # A Lua scene with a syntax error: the same, with the Lua file's line.
     c.copy('tests/data/bad/lua_syntax.lua')
@@ -1566,29 +1589,30 @@ def case_resize(c):
         e.wait_for(lambda: ('%dx%d' % (w, h)) in subprocess.run(
             ['xdotool', 'getwindowgeometry', e.window], capture_output=True, text=True).stdout,
             'the window to be %dx%d' % (w, h))
-        e.xdo('mousemove', '--window', e.window, w - 5, h - 5)
+        vh = round(view_height(h))  # the view ends at the Timeline's top
+        e.xdo('mousemove', '--window', e.window, w - 5, vh - 5)
         e.settle(moved=True)
         img = e.screenshot('%dx%d' % (w, h))
-        for x, y in ((w - 3, h - 3), (w - 3, 3), (PANEL_RIGHT + 20, h - 3), (w // 2, h - 3)):
+        for x, y in ((w - 3, vh - 3), (w - 3, 3), (PANEL_RIGHT + 20, vh - 3), (w // 2, vh - 3)):
             check(is_background(img.at(x, y)), 'at %dx%d the view does not reach (%d, %d): %s' % (w, h, x, y, img.at(x, y)))
         if w < WIDTH:
             check(img.at(w + 5, 100) == (0, 0, 0) and img.at(100, h + 5) == (0, 0, 0),
                   'something is drawn outside the %dx%d window' % (w, h))
-        n, x, y, _ = img.blob(lambda px: not is_background(px), (PANEL_RIGHT + 10, 0, w, h))
+        n, x, y, _ = img.blob(lambda px: not is_background(px), (PANEL_RIGHT + 10, 0, w, vh))
         e.case.log('%dx%d: ball %d px at (%.1f, %.1f)' % (w, h, n, x or -1, y or -1))
         # The view is the space right of the Animator Interface; the ball at its centre.
-        check(n > 1000 and abs(x - (PANEL_RIGHT + w) / 2) < 4 and abs(y - h / 2) < 4,
+        check(n > 1000 and abs(x - (PANEL_RIGHT + w) / 2) < 4 and abs(y - vh / 2) < 4,
               'at %dx%d the ball is not at the centre of the view: (%s, %s)' % (w, h, x, y))
-        # Its size follows the height (the field of view is vertical): 64.3 px at 720.
+        # Its size follows the view's height (the field of view is vertical): 64.3 px at 720.
         radius = (n / 3.14159) ** 0.5
-        check(abs(radius - h / 720 * 64.3) < 4, 'at %dx%d the ball is %.1f px in radius' % (w, h, radius))
+        check(abs(radius - vh / 720 * 64.3) < 4, 'at %dx%d the ball is %.1f px in radius' % (w, h, radius))
         e.click(round(x), round(y))
         img = e.screenshot('%dx%d-selected' % (w, h))
         # Selected, the Model Interface takes its space: the ball is at the narrower view's centre.
-        x = view_centre(img, w)
+        x = view_centre(img, w, h)
         _, _, _, mean = img.blob(lambda px: not is_background(px), (round(x) - 30, round(y) - 30, round(x) + 30, round(y) + 30))
         check_selected_tint('at %dx%d, clicked' % (w, h), mean, True)
-        e.click(PANEL_RIGHT + 20, h - 20)  # empty space: deselect
+        e.click(PANEL_RIGHT + 20, vh - 20)  # empty space: deselect
     e.quit()
 
 
@@ -1620,7 +1644,7 @@ def _cross(a, b):
     return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
 
-def simple_project(p, cx, h=HEIGHT):
+def simple_project(p, cx, h=VIEW_HEIGHT):
     """Where the demo scene's camera puts the world point p in a view centred at x = cx (a
     pinhole camera; the field of view is vertical, over the view's height)."""
     forward = _unit(_sub(SIMPLE_LOOK_AT, SIMPLE_EYE))
@@ -1732,7 +1756,7 @@ def case_tutorial(c):
     e.case.log('the Time slider dragged from %d ms to %d ms' % (t_prev, key_ms))
     check(t_prev + 1000 < key_ms < 20000, 'dragging the Time slider 30 px forward from %d ms went to %d ms' % (t_prev, key_ms))
     e.click(*MODE_TRANSLATE)
-    mpp = 2 * simple_depth(CUBE_REST) * math.tan(math.radians(25.0)) / HEIGHT
+    mpp = 2 * simple_depth(CUBE_REST) * math.tan(math.radians(25.0)) / VIEW_HEIGHT
     dx, dy = 40, -120  # right and up: clear of the other models
     key_center = (CUBE_REST[0] + dx * mpp, CUBE_REST[1] - dy * mpp, CUBE_REST[2])
     start = [round(v) for v in simple_project(CUBE_REST, CX_SELECTED)]
@@ -1799,7 +1823,7 @@ def case_tutorial(c):
     check(e.shown_ms() == key_ms, 'the reopened file\'s second keyframe shows %d ms, not %d' % (e.shown_ms(), key_ms))
     after = e.screenshot('renamed-second-key')
     check(keyframe_rows(after) == 2, 'the reopened file does not list two keyframes')
-    view = (PANEL_RIGHT + 10, 0, WIDTH, HEIGHT)
+    view = (PANEL_RIGHT + 10, 0, WIDTH, VIEW_HEIGHT)
     n = same_pixels(before, after, view)
     e.case.log('reopened, at the second key: %d pixels differ from the picture exported' % n)
     check(n < 50, 'reopened, the picture at the second key differs in %d pixels from the one exported' % n)

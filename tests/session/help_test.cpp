@@ -66,3 +66,9 @@ TEST_CASE("the F1 overlay lists exactly the manual's free view controls", "[help
     CHECK(manual.size() >= 5);
     CHECK(overlay_keys("Free view") == manual);
 }
+
+TEST_CASE("the F1 overlay lists exactly the manual's Timeline controls", "[help]") {
+    const auto manual = first_cells("The Timeline (dope sheet)");
+    CHECK(manual.size() >= 10);
+    CHECK(overlay_keys("Timeline") == manual);
+}
