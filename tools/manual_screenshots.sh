@@ -8,6 +8,9 @@ bin=$(realpath "${1:-build/bin/animator}")
 out=$(realpath docs/manual)
 mkdir -p "$out"
 work=$(mktemp -d)
+# Autosave's recovery files go here, not to ~/.local/state: one of the user's own would greet
+# the editor with a "Recover unsaved work" dialog in every screenshot.
+export XDG_STATE_HOME="$work/state"
 editor=""
 xvfb=""
 cleanup() {
@@ -106,4 +109,72 @@ click 927 109                  # Model Interface > Physics > Gravity: the bake f
 for _ in $(seq 600); do grep -q "overlap at t = 0 s" "$work/log" && break; sleep 0.1; done
 xdotool mousemove --window "$win" 700 650
 shot 07-overlap 1.5
-echo "wrote 7 screenshots to $out"
+
+# The Outliner and the Model Interface over several models (docs/manual.md, "The Outliner").
+# Starts the editor on a copy of a shipped scene, and waits for it to draw and sleep.
+start_editor() {
+  kill "$editor" 2>/dev/null; wait "$editor" 2>/dev/null || true
+  cp "$1" "$work/"
+  : > "$work/log"
+  (cd "$work" && ANIMATOR_EDITOR_SIGNALS=1 exec "$bin" "$(basename "$1")") >"$work/log" 2>&1 &
+  editor=$!
+  win=""
+  for _ in $(seq 50); do
+    win=$(xdotool search --pid "$editor" --name '^animator' 2>/dev/null | head -1 || true)
+    [ -n "$win" ] && break
+    sleep 0.2
+  done
+  [ -n "$win" ] || { echo "the editor did not open a window:" >&2; cat "$work/log" >&2; exit 1; }
+  for _ in $(seq 600); do grep -q '^animator: idle' "$work/log" && break; sleep 0.1; done
+  xdotool windowfocus --sync "$win"
+}
+ctrl_click() { xdotool mousemove --window "$win" "$1" "$2"; sleep 0.3; xdotool keydown ctrl; sleep 0.1; xdotool click 1; sleep 0.1; xdotool keyup ctrl; sleep 0.4; }
+# Outliner rows (1280x720) start at y 584, 17 px apart; a row's box is at x 33 + 21 per level.
+start_editor assets/scenes/puppet.lua
+click 110 652                  # the left arm's row (under left_shoulder)
+ctrl_click 110 686             # and the right arm's: both selected, outlined in the view
+click 54 618                   # the head's box: hidden from the view
+xdotool mousemove --window "$win" 700 650
+shot outliner
+start_editor assets/scenes/simple.lua
+click 110 601                  # the ball's row
+ctrl_click 110 618             # and the cube's: the Model Interface edits both, mixed fields say so
+xdotool mousemove --window "$win" 700 650
+shot multi-edit
+# Autosave and recovery: an edit autosaved (every second here), the editor killed, started again.
+kill "$editor"; wait "$editor" 2>/dev/null || true
+cp assets/animations/drop.ani "$work/drop.ani"
+touch -d '1 minute ago' "$work/drop.ani"   # the autosave is newer: offered
+: > "$work/log"
+# A home of its own, so the dialog names the folder a user's shows: ~/.local/state/animator/recovery.
+mkdir -p "$work/home"
+(cd "$work" && HOME="$work/home" XDG_STATE_HOME= ANIMATOR_EDITOR_SIGNALS=1 ANIMATOR_AUTOSAVE_SECONDS=1 exec "$bin" drop.ani) >"$work/log" 2>&1 &
+editor=$!
+win=""
+for _ in $(seq 50); do
+  win=$(xdotool search --pid "$editor" --name '^animator' 2>/dev/null | head -1 || true)
+  [ -n "$win" ] && break
+  sleep 0.2
+done
+[ -n "$win" ] || { echo "the editor did not open a window:" >&2; cat "$work/log" >&2; exit 1; }
+for _ in $(seq 600); do grep -q '^animator: idle' "$work/log" && break; sleep 0.1; done
+xdotool windowfocus --sync "$win"
+click 27 370                   # Cel Shading: an unsaved change
+for _ in $(seq 600); do grep -q '^animator: autosaved' "$work/log" && break; sleep 0.1; done
+grep -q '^animator: autosaved' "$work/log" || { echo "no autosave:" >&2; cat "$work/log" >&2; exit 1; }
+kill -KILL "$editor"; wait "$editor" 2>/dev/null || true
+: > "$work/log"
+(cd "$work" && HOME="$work/home" XDG_STATE_HOME= ANIMATOR_EDITOR_SIGNALS=1 exec "$bin" drop.ani) >"$work/log" 2>&1 &
+editor=$!
+win=""
+for _ in $(seq 50); do
+  win=$(xdotool search --pid "$editor" --name '^animator' 2>/dev/null | head -1 || true)
+  [ -n "$win" ] && break
+  sleep 0.2
+done
+[ -n "$win" ] || { echo "the editor did not open a window:" >&2; cat "$work/log" >&2; exit 1; }
+for _ in $(seq 600); do grep -q '^animator: idle' "$work/log" && break; sleep 0.1; done
+grep -q '^animator: Recover unsaved work' "$work/log" || { echo "no recovery offered:" >&2; cat "$work/log" >&2; exit 1; }
+xdotool mousemove --window "$win" 700 650
+shot recovery-dialog 1.0
+echo "wrote the screenshots to $out"

@@ -3,6 +3,7 @@
 #include "audio/live_player.hpp"
 #include "editor/editor_panels.hpp"
 #include "editor/editor_session.hpp"
+#include "editor/recovery.hpp"
 #include "editor/screen_state.hpp"
 #include "editor/status_line.hpp"
 #include "editor/view_layout.hpp"
@@ -338,6 +339,15 @@ int run_editor(const EditorOptions &options) {
             for (const std::string &w : session.warnings()) panels.say("warning: " + w, true);
             panels.say("opened " + file.string());
         }
+        // Autosave (recovery.hpp): work left unsaved by a crash or a kill is offered back.
+        std::string autosave_warning;
+        Autosaver autosaver(env.plugins, recovery_folder(), autosave_interval(&autosave_warning));
+        if (!autosave_warning.empty()) panels.say(autosave_warning, true);
+        if (const auto offer = autosaver.offer(file))
+            panels.ask_to_recover(local_time_label(offer->written),
+                                  "Recover opens it as unsaved changes to " +
+                                      (file.empty() ? std::string("an untitled animation") : file.filename().string()) +
+                                      "; Discard sets it aside.\nAutosaved in " + home_path(offer->file));
 
         std::uint64_t drawn_version = ~std::uint64_t{0};
         std::string title;
@@ -354,6 +364,8 @@ int run_editor(const EditorOptions &options) {
         const bool signals = signals_wanted();
         FrameRate frame_rate;
         PathCache path_lines;
+        long play_frames = 0;      // frames drawn since playback started
+        double play_started = -1.0; // when it started (wall seconds), -1 while not playing
         std::uint64_t previewed = 0; // the drag's document last said baked (signals)
         while (!quitting) {
             const bool busy = session.playing() || session.baking() || pointer.down() || frames_to_draw > 0;
@@ -367,7 +379,9 @@ int run_editor(const EditorOptions &options) {
                 glfwPollEvents();
             } else {
                 if (signals) announce_idle(window_state, session.time_ms());
-                glfwWaitEvents();
+                // Asleep until the next event, or until an autosave is due (unsaved work only).
+                if (const auto due = autosaver.seconds_to_wait(glfwGetTime())) glfwWaitEventsTimeout(*due + 0.005);
+                else glfwWaitEvents();
             }
             if (window_state.woke) {
                 frames_to_draw = 3; // ImGui settles within a few frames
@@ -402,6 +416,7 @@ int run_editor(const EditorOptions &options) {
                         if (session.playing()) break;
                         // Picked in the view as drawn: its own pixels, from its top-left corner.
                         int model = -1;
+                        renderer.set_hidden(session.hidden_models());
                         if (view.contains(click->x, click->y))
                             model = renderer.pick(session.shown_frame(), static_cast<int>(std::lround(view.width * to_fb)),
                                                   static_cast<int>(std::lround(view.height * to_fb)),
@@ -456,6 +471,8 @@ int run_editor(const EditorOptions &options) {
                         const double aspect = view.height > 0 ? view.width / view.height : 1.0;
                         if (!session.frame_models(selected, aspect))
                             panels.say(selected ? "nothing selected to frame" : "no model to frame");
+                    } else if (e.code == GLFW_KEY_F2) {
+                        if (session.last_selected() >= 0) panels.start_rename(session.last_selected());
                     } else if (e.code == GLFW_KEY_LEFT || e.code == GLFW_KEY_RIGHT) {
                         session.step_frames(e.code == GLFW_KEY_RIGHT ? 1 : -1);
                     } else if (e.code == GLFW_KEY_UP || e.code == GLFW_KEY_DOWN) {
@@ -481,10 +498,32 @@ int run_editor(const EditorOptions &options) {
             view = view_rect(win_w, win_h, panels.places());
             // What this frame's panels show; the work below (playback, the bake) may change it.
             const ScreenState shown = screen_state(session, panels.message());
+            if (const auto recover = panels.take_recover_answer()) {
+                std::string said;
+                const bool ok = *recover ? autosaver.recover(session, said) : autosaver.discard(said);
+                panels.say(said, !ok);
+            }
+            // Not in the middle of a drag (its flush to disk could stall it): when it ends.
+            bool autosave_failed = false;
+            if (!pointer.down())
+                if (const std::string said = autosaver.tick(session, glfwGetTime(), &autosave_failed); !said.empty())
+                    panels.say(said, autosave_failed);
 
             const bool was_playing = session.playing(), was_baking = session.baking();
             session.tick(glfwGetTime());
             if (was_playing && !session.playing()) panels.say("played to the end, " + std::to_string(session.time_ms()) + " ms");
+            // How fast playback drew (docs/performance.md measures the editor with it): from the
+            // first frame drawn playing to the end or a pause.
+            if (session.playing() && play_started < 0.0) {
+                play_frames = 0;
+                play_started = glfwGetTime();
+            } else if (!session.playing() && play_started >= 0.0) {
+                const double took = glfwGetTime() - play_started;
+                if (signals)
+                    std::cout << "animator: played " << play_frames << " frames in " << took << " s ("
+                              << (took > 0.0 ? play_frames / took : 0.0) << " fps)" << std::endl;
+                play_started = -1.0;
+            }
             if (session.playing() && session.time() > played_to) {
                 player.advance(session.timeline(), played_to, session.time());
             } else if (!session.playing() && played_to != session.time()) {
@@ -530,6 +569,7 @@ int run_editor(const EditorOptions &options) {
             target.width = static_cast<int>(std::lround(view.width * to_fb));
             target.height = static_cast<int>(std::lround(view.height * to_fb));
             target.y = fb_h - static_cast<int>(std::lround(view.y * to_fb)) - target.height; // GL's rows go up
+            renderer.set_hidden(session.hidden_models()); // the Outliner's eyes (not drawn, not picked)
             if (target.width > 0 && target.height > 0) {
                 renderer.draw(session.shown_frame(), target, session.selection(), session.overlapping_models());
                 renderer.draw_paths(path_lines.get(session), target);
@@ -539,11 +579,14 @@ int run_editor(const EditorOptions &options) {
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             glfwSwapBuffers(window);
             frame_rate.frame(glfwGetTime());
+            if (session.playing()) ++play_frames;
             if (frames_to_draw > 0) --frames_to_draw;
             // Playback ended, a bake slice, an undo's effect on the buttons, a new message: the
             // panels drawn above are already out of date, so one more frame shows it.
             if (screen_state(session, panels.message()) != shown) frames_to_draw = std::max(frames_to_draw, 1);
         }
+        bool keep_failed = false;
+        if (const std::string said = autosaver.quit(session, &keep_failed); !said.empty()) panels.say(said, keep_failed);
         exit_code = 0;
     }
     ImGui_ImplOpenGL3_Shutdown();

@@ -1,13 +1,16 @@
 #include "editor/editor_panels.hpp"
 
 #include "editor/help.hpp"
+#include "editor/model_fields.hpp"
 #include "editor/overlap_fix.hpp"
 #include "editor/status_line.hpp"
 #include "render/renderer.hpp"
 
+#include <animator/interpolator.h>
 #include <animator/shading.h>
 
 #include <imgui.h>
+#include <imgui_internal.h> // ImGuiItemFlags_MixedValue, GetActiveID
 #include <imgui_stdlib.h>
 
 #include <algorithm>
@@ -22,17 +25,27 @@ namespace {
 // checkbox, a radio button), so one gesture is one edit.
 bool let_go(bool changed) { return (changed && !ImGui::IsItemActive()) || ImGui::IsItemDeactivatedAfterEdit(); }
 
+// Where a field's values differ among the selected models (a "mixed" field), its widget says
+// "(mixed)" instead of a value until it is changed; the label keeps its ID ("###").
+std::string mixed_label(const char *label, bool mixed) {
+    return mixed ? std::string(label) + " (mixed)###" + label : std::string(label);
+}
+
+// While a mixed slider is held (or typed into), it shows the value being set.
+bool item_active(const char *label) { return ImGui::GetActiveID() == ImGui::GetID(label); }
+
 // A dropdown of asset ids with "(none)" first; true when the choice changed.
-bool asset_combo(const char *label, std::string &value, const std::vector<std::string> &ids) {
+bool asset_combo(const char *label, std::string &value, const std::vector<std::string> &ids, bool mixed = false) {
     bool changed = false;
-    if (ImGui::BeginCombo(label, value.empty() ? "(none)" : value.c_str())) {
-        if (ImGui::Selectable("(none)", value.empty())) {
-            changed = !value.empty();
+    if (ImGui::BeginCombo(label, mixed ? "(mixed)" : value.empty() ? "(none)" : value.c_str())) {
+        // Mixed, any choice is a change: it goes to every selected model.
+        if (ImGui::Selectable("(none)", !mixed && value.empty())) {
+            changed = mixed || !value.empty();
             value.clear();
         }
         for (const std::string &id : ids)
-            if (ImGui::Selectable(id.c_str(), id == value)) {
-                changed = id != value;
+            if (ImGui::Selectable(id.c_str(), !mixed && id == value)) {
+                changed = mixed || id != value;
                 value = id;
             }
         ImGui::EndCombo();
@@ -40,16 +53,36 @@ bool asset_combo(const char *label, std::string &value, const std::vector<std::s
     return changed;
 }
 
-bool colour(const char *label, glm::dvec3 &c) {
+bool colour(const char *label, glm::dvec3 &c, bool mixed = false) {
     float rgb[3] = {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
-    const bool changed = ImGui::ColorEdit3(label, rgb);
+    const bool changed = ImGui::ColorEdit3(mixed_label(label, mixed).c_str(), rgb);
     if (changed) c = glm::dvec3(rgb[0], rgb[1], rgb[2]);
     return changed;
 }
 
 bool slider(const char *label, double &value, double lo, double hi, const char *format = "%.3f",
-            ImGuiSliderFlags flags = 0) {
+            ImGuiSliderFlags flags = 0, bool mixed = false) {
+    if (mixed && !item_active(label)) format = "(mixed)";
     return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
+}
+
+// Three numbers dragged (or CTRL+clicked and typed), as Blender's vector fields.
+bool vector3(const char *label, glm::dvec3 &v, bool mixed = false) {
+    double xyz[3] = {v.x, v.y, v.z};
+    const char *format = mixed && !item_active(label) ? "(mixed)" : "%.3f";
+    const bool changed = ImGui::DragScalarN(label, ImGuiDataType_Double, xyz, 3, 0.05f, nullptr, nullptr, format);
+    if (changed) v = glm::dvec3(xyz[0], xyz[1], xyz[2]);
+    return changed;
+}
+
+// A checkbox that shows a dash when its value differs among the selected models; clicked then,
+// it ticks (for all of them).
+bool mixed_checkbox(const char *label, bool &value, bool mixed) {
+    ImGui::PushItemFlag(ImGuiItemFlags_MixedValue, mixed);
+    const bool changed = ImGui::Checkbox(label, &value);
+    ImGui::PopItemFlag();
+    if (changed && mixed) value = true;
+    return changed;
 }
 
 // A dialog's keys: Enter confirms (only where that is harmless), Esc cancels. Read from ImGui,
@@ -85,6 +118,21 @@ void Panels::show_error(const std::string &title, const std::string &message) {
     error_text_ = message;
     error_pending_ = true;
     say(title + ": " + message, true);
+}
+
+void Panels::ask_to_recover(const std::string &when, const std::string &detail) {
+    recover_when_ = when;
+    recover_detail_ = detail;
+    recover_asked_ = true;
+    std::string line = detail;
+    std::replace(line.begin(), line.end(), '\n', ' ');
+    std::cout << "animator: Recover unsaved work from " << when << "? " << line << std::endl; // a test reads it
+}
+
+std::optional<bool> Panels::take_recover_answer() {
+    auto answer = recover_answer_;
+    recover_answer_.reset();
+    return answer;
 }
 
 void Panels::commit(bool ok, const std::string &error) {
@@ -223,6 +271,8 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
 
     ImGui::Separator();
     ImGui::TextUnformatted("Keyframes");
+    ImGui::SameLine();
+    interpolation(session);
     ImGui::BeginChild("keyframes", ImVec2(0, 140), true);
     std::optional<std::int64_t> to_delete;
     for (const Keyframe &k : doc.keyframes()) {
@@ -307,7 +357,179 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
         ImGui::TextWrapped("%s", message_.c_str());
         if (message_error_) ImGui::PopStyleColor();
     }
+    outliner(session);
     ImGui::End();
+}
+
+// The interpolator of keyed motion (Settings::interpolation, saved in the animation), on the
+// Keyframes heading's line: it says how models and the camera go from key to key. Drawn no
+// taller than the heading, so the list and everything under it stay where they were.
+void Panels::interpolation(EditorSession &session) {
+    Settings &s = *settings_draft_;
+    const auto short_name = [](const std::string &id) {
+        const std::string prefix = "interpolation.";
+        return id.compare(0, prefix.size(), prefix) == 0 ? id.substr(prefix.size()) : id;
+    };
+    ImGui::TextDisabled("  between keys:");
+    ImGui::SameLine();
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 0.0f));
+    ImGui::SetNextItemWidth(-1.0f);
+    const std::string current = short_name(s.interpolation);
+    if (ImGui::BeginCombo("##interpolation", current.c_str())) {
+        // Those that handle every channel (not interpolation.kinematic: centers only, which
+        // the models with Dynamics on use by themselves).
+        uint32_t all = 0;
+        for (int kind = ANI_CHANNEL_POSITION; kind <= ANI_CHANNEL_CAMERA_ROTATION; ++kind) all |= 1u << kind;
+        for (const PluginInfo *p : env_.plugins.find_kind(ANI_KIND_INTERPOLATOR)) {
+            const auto *api = p->descriptor ? static_cast<const ani_interpolator_api *>(p->descriptor->api) : nullptr;
+            if (!api || (api->channel_mask & all) != all) continue;
+            const std::string label = short_name(p->id) + "  (" + p->name + ")";
+            if (ImGui::Selectable(label.c_str(), p->id == s.interpolation) && p->id != s.interpolation) {
+                s.interpolation = p->id;
+                std::string error;
+                commit(session.set_settings(s, &error), error);
+            }
+            if (ImGui::IsItemHovered() && p->descriptor->description)
+                ImGui::SetTooltip("%s", p->descriptor->description);
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::PopStyleVar();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("How keyed motion goes from key to key (%s), saved in the animation.\n"
+                          "A model with Dynamics on moves its center by the kinematic equations.",
+                          s.interpolation.c_str());
+}
+
+void Panels::start_rename(int model) {
+    renaming_ = model;
+    rename_frames_ = 0;
+    rename_active_ = false;
+    if (model >= 0) outliner_seen_ = -1; // scrolled to, should the row be out of sight
+}
+
+// The Outliner (beyond the seed, as Blender's and Maya's): the scene tree, joints and parents
+// included, at the end of the Animator Interface, its top kept at one place so the rows do not
+// move with the status message above (only a longer message, or the overlap list, pushes it
+// down). A row's box shows or hides the model (a view, not an edit); a click selects it as a
+// click in the view does (CTRL+click toggles); a double-click (or F2) renames it.
+void Panels::outliner(EditorSession &session) {
+    constexpr float kTop = 540.0f; // in the window, below a one-line status message
+    if (ImGui::GetCursorPosY() < kTop) ImGui::SetCursorPosY(kTop);
+    if (!ImGui::CollapsingHeader("Outliner", ImGuiTreeNodeFlags_DefaultOpen)) {
+        renaming_ = -1;
+        return;
+    }
+    const Document &doc = session.document();
+    const int count = static_cast<int>(doc.models().size());
+    if (renaming_ >= count) renaming_ = -1;
+    std::vector<std::vector<int>> children(static_cast<size_t>(count) + 1); // [count]: the root's
+    for (int m = 0; m < count; ++m) {
+        const int parent = doc.models()[static_cast<size_t>(m)].parent;
+        children[parent >= 0 && parent < count ? static_cast<size_t>(parent) : static_cast<size_t>(count)].push_back(m);
+    }
+    // A model selected elsewhere (in the view) is brought into sight: its parents open.
+    std::set<int> reveal;
+    const int last = session.last_selected();
+    if (last != outliner_seen_ && last >= 0 && last < count && !outliner_clicked_)
+        for (int p = last; p >= 0; p = doc.models()[static_cast<size_t>(p)].parent) reveal.insert(p);
+    outliner_seen_ = last;
+    outliner_clicked_ = false;
+
+    const std::set<int> hidden = session.hidden_models();
+    // Compact rows (a 15 px box, 2 px apart), so the demo's six models and the puppet's seven
+    // fit under the panel's other widgets at 1280x720; a longer list scrolls.
+    const float row = ImGui::GetFontSize() + 4.0f, pad = 4.0f;
+    const float rows = static_cast<float>(std::max(count, 1)) * row + 2.0f * pad;
+    const float room = ImGui::GetContentRegionAvail().y;
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8.0f, pad));
+    ImGui::BeginChild("outliner", ImVec2(0, std::max(std::min(rows, room), 6.0f * row + 2.0f * pad)), true);
+    ImGui::PopStyleVar();
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(4.0f, 1.0f));
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(4.0f, 2.0f));
+    if (count == 0) ImGui::TextDisabled("no models");
+    for (int m : children[static_cast<size_t>(count)]) outliner_row(session, m, children, hidden, reveal);
+    ImGui::PopStyleVar(2);
+    ImGui::EndChild();
+}
+
+void Panels::outliner_row(EditorSession &session, int model, const std::vector<std::vector<int>> &children,
+                          const std::set<int> &hidden, const std::set<int> &reveal) {
+    const Document &doc = session.document();
+    const Model &m = doc.models()[static_cast<size_t>(model)];
+    const auto &under = children[static_cast<size_t>(model)];
+    ImGui::PushID(model);
+    // The eye: the model's own visibility; a model under a hidden one shows dimmed.
+    bool visible = !session.hidden(model);
+    if (ImGui::Checkbox("##shown", &visible)) session.set_hidden(model, !visible);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(visible ? "Shown in the view: untick to hide '%s'%s (not an edit)"
+                                  : "Hidden from the view: tick to show '%s'%s",
+                          m.name.c_str(), under.empty() ? "" : " and what hangs under it");
+    ImGui::SameLine();
+    ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_DefaultOpen;
+    if (under.empty()) flags |= ImGuiTreeNodeFlags_Leaf | ImGuiTreeNodeFlags_NoTreePushOnOpen;
+    if (session.selection().count(model)) flags |= ImGuiTreeNodeFlags_Selected;
+    if (reveal.count(model) && !under.empty() && model != session.last_selected()) ImGui::SetNextItemOpen(true);
+    const bool dim = hidden.count(model) > 0;
+    if (dim) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    bool open = false;
+    if (renaming_ == model) {
+        // The name as a text field: Enter (or a click elsewhere) renames, ESC keeps the name.
+        open = ImGui::TreeNodeEx("##node", flags | ImGuiTreeNodeFlags_AllowItemOverlap);
+        ImGui::SameLine();
+        if (rename_frames_++ == 0) {
+            rename_text_ = m.name;
+            ImGui::SetKeyboardFocusHere();
+        }
+        ImGui::SetNextItemWidth(-1.0f);
+        const bool enter = ImGui::InputText("##name", &rename_text_,
+                                            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+        rename_active_ |= ImGui::IsItemActive();
+        const bool escaped = ImGui::IsItemDeactivated() && escape_pressed();
+        if (enter || (rename_active_ && ImGui::IsItemDeactivated() && !escaped)) {
+            const std::string old = m.name;
+            std::string error;
+            if (trim_name(rename_text_) == old) {
+                // unchanged: nothing to say
+            } else if (session.rename_model(model, rename_text_, &error)) {
+                say("renamed '" + old + "' to '" + trim_name(rename_text_) + "'");
+            } else {
+                say(error, true);
+            }
+            renaming_ = -1;
+        } else if (escaped || (!rename_active_ && rename_frames_ > 3)) {
+            renaming_ = -1; // ESC, or the field never took the keyboard
+        }
+    } else {
+        flags |= ImGuiTreeNodeFlags_SpanAvailWidth;
+        open = ImGui::TreeNodeEx("##node", flags, "%s", m.name.c_str());
+        const bool toggled = ImGui::IsItemToggledOpen();
+        if (ImGui::IsItemClicked(ImGuiMouseButton_Left) && !toggled) {
+            session.click(model, ImGui::GetIO().KeyCtrl);
+            outliner_clicked_ = true;
+            if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && !ImGui::GetIO().KeyCtrl) {
+                session.click(model, false); // the model renamed is the one selected
+                start_rename(model);
+                outliner_seen_ = session.last_selected();
+            }
+        }
+        if (ImGui::IsItemHovered() && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+            const std::string kind = m.mesh.empty() ? "an empty (a joint or a group)" : "mesh '" + m.mesh + "'";
+            ImGui::SetTooltip("%s: %s%s\nClick selects it, CTRL+click adds or removes it, double-click (or F2) renames it.",
+                              m.name.c_str(), kind.c_str(), dim ? "; hidden from the view" : "");
+        }
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", m.mesh.empty() ? "empty" : m.mesh.c_str());
+    }
+    // Selected in the view (or renamed with F2): the row comes into sight.
+    if (reveal.count(model) && model == session.last_selected() && !ImGui::IsItemVisible()) ImGui::SetScrollHereY(0.5f);
+    if (dim) ImGui::PopStyleColor();
+    if (open && !under.empty()) {
+        for (int child : under) outliner_row(session, child, children, hidden, reveal);
+        ImGui::TreePop();
+    }
+    ImGui::PopID();
 }
 
 // The shading plugin's cel outline (a parameter saved in the document like the backend's), as
@@ -482,35 +704,68 @@ void Panels::model_panel(EditorSession &session, float width, float height, floa
         return;
     }
     ImGui::PushItemWidth(-130.0f); // room for the longest label
+    // Every selected model is edited: a change of one field goes to all of them (one edit), and
+    // their other fields stay their own. The widgets show the last selected model's values; a
+    // field whose values differ among the selected says "(mixed)" until it is changed.
+    const Document &doc = session.document();
+    const std::set<int> &selected = session.selection();
     Model &m = *model_draft_;
-    bool done = false; // a change to commit now
-    ImGui::Text("%s%s", m.name.c_str(), session.selection().size() > 1 ? "  (last selected)" : "");
+    std::optional<ModelField> done; // a field to commit now
+    auto mixed = [&](ModelField f) { return selected.size() > 1 && field_mixed(doc, selected, f); };
+    if (selected.size() > 1) {
+        ImGui::Text("%zu models selected", selected.size());
+        if (ImGui::IsItemHovered()) {
+            std::string names;
+            for (int i : selected) names += (names.empty() ? "" : ", ") + doc.models()[static_cast<size_t>(i)].name;
+            ImGui::SetTooltip("A change goes to every selected model: %s.\nThe values shown are '%s''s; "
+                              "(mixed) marks a field whose values differ.",
+                              names.c_str(), m.name.c_str());
+        }
+    } else {
+        ImGui::TextUnformatted(m.name.c_str());
+    }
 
-    if (ImGui::CollapsingHeader("Physics", ImGuiTreeNodeFlags_DefaultOpen)) {
-        done |= ImGui::Checkbox("Dynamics", &m.dynamics);
-        done |= ImGui::Checkbox("Gravity", &m.gravity);
-        done |= let_go(slider("Mass (kg)", m.mass, 0.01, 1000.0, "%.3f", ImGuiSliderFlags_Logarithmic));
+    // The fields every physics backend reads of a model (the SDK's ani_model_desc): the SDK
+    // has no per-model parameters of a backend's own, only the backend's document-wide ones
+    // (the Animator Interface's "Backend parameters").
+    const std::string physics = "Physics (" + session.backend() + ")###Physics";
+    if (ImGui::CollapsingHeader(physics.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (mixed_checkbox("Dynamics", m.dynamics, mixed(ModelField::Dynamics))) done = ModelField::Dynamics;
+        if (mixed_checkbox("Gravity", m.gravity, mixed(ModelField::Gravity))) done = ModelField::Gravity;
+        if (let_go(slider("Mass (kg)", m.mass, 0.01, 1000.0, "%.3f", ImGuiSliderFlags_Logarithmic, mixed(ModelField::Mass))))
+            done = ModelField::Mass;
+        if (let_go(vector3("Velocity (m/s)", m.initial_velocity, mixed(ModelField::Velocity)))) done = ModelField::Velocity;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("The velocity of the model's center at t = 0.");
     }
     if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
-        done |= let_go(colour("kd", m.material.kd));
-        done |= let_go(colour("ks", m.material.ks));
-        done |= asset_combo("Texture", m.texture, env_.assets.list(ANI_ASSET_TEXTURE));
-        if (!m.texture.empty()) done |= let_go(slider("Tint", m.tint, 0.0, 1.0));
-        done |= let_go(slider("Shininess", m.material.shininess, 0.0, ANI_SHININESS_MAX, "%.1f"));
-        done |= let_go(slider("Reflectivity", m.reflectivity, 0.0, 1.0));
-        done |= let_go(slider("Transparency", m.transparency, 0.0, 1.0));
-        done |= let_go(slider("Refractive index", m.refractive_index, 1.0, 3.0));
+        if (let_go(colour("kd", m.material.kd, mixed(ModelField::Kd)))) done = ModelField::Kd;
+        if (let_go(colour("ks", m.material.ks, mixed(ModelField::Ks)))) done = ModelField::Ks;
+        if (asset_combo("Texture", m.texture, env_.assets.list(ANI_ASSET_TEXTURE), mixed(ModelField::Texture)))
+            done = ModelField::Texture;
+        const bool textured = std::any_of(selected.begin(), selected.end(), [&](int i) {
+            return !doc.models()[static_cast<size_t>(i)].texture.empty();
+        });
+        if (textured && let_go(slider("Tint", m.tint, 0.0, 1.0, "%.3f", 0, mixed(ModelField::Tint)))) done = ModelField::Tint;
+        if (let_go(slider("Shininess", m.material.shininess, 0.0, ANI_SHININESS_MAX, "%.1f", 0, mixed(ModelField::Shininess))))
+            done = ModelField::Shininess;
+        if (let_go(slider("Reflectivity", m.reflectivity, 0.0, 1.0, "%.3f", 0, mixed(ModelField::Reflectivity))))
+            done = ModelField::Reflectivity;
+        if (let_go(slider("Transparency", m.transparency, 0.0, 1.0, "%.3f", 0, mixed(ModelField::Transparency))))
+            done = ModelField::Transparency;
+        if (let_go(slider("Refractive index", m.refractive_index, 1.0, 3.0, "%.3f", 0, mixed(ModelField::RefractiveIndex))))
+            done = ModelField::RefractiveIndex;
     }
     if (ImGui::CollapsingHeader("Sound", ImGuiTreeNodeFlags_DefaultOpen)) {
         const auto sounds = env_.assets.list(ANI_ASSET_SOUND);
-        done |= asset_combo("Collision", m.collision_sound, sounds);
-        done |= asset_combo("Moving", m.moving_sound, sounds);
+        if (asset_combo("Collision", m.collision_sound, sounds, mixed(ModelField::CollisionSound)))
+            done = ModelField::CollisionSound;
+        if (asset_combo("Moving", m.moving_sound, sounds, mixed(ModelField::MovingSound))) done = ModelField::MovingSound;
     }
     ImGui::PopItemWidth();
     ImGui::End();
     if (done) {
         std::string error;
-        commit(session.set_model(index, m, &error), error);
+        commit(session.set_field(selected, *done, m, &error), error);
         model_draft_.reset();
     }
 }
@@ -527,6 +782,29 @@ void Panels::dialogs(EditorSession &session) {
         ImGui::PopTextWrapPos();
         // Enter and Esc both close it: there is nothing to decide, only to read.
         if (ImGui::Button("OK") || enter_pressed() || escape_pressed()) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+    // After any other dialog (an error opening the file): one modal at a time, and not in the
+    // frame that one closed, whose Enter or Esc would answer this one too.
+    if (recover_asked_ && !dialog_open_ &&
+        !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel)) {
+        ImGui::OpenPopup("Recover unsaved work");
+        recover_asked_ = false;
+    }
+    if (ImGui::BeginPopupModal("Recover unsaved work", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("Recover unsaved work from %s?", recover_when_.c_str());
+        ImGui::TextDisabled("%s", recover_detail_.c_str()); // its lines as they are: a path stays whole
+        // Enter recovers: it loses nothing (the work opens as unsaved changes, the file on disk
+        // is untouched until exported). Esc discards, setting the autosave aside (discarded.ani).
+        if (ImGui::Button("Recover") || enter_pressed()) {
+            recover_answer_ = true;
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Discard") || escape_pressed()) {
+            recover_answer_ = false;
+            ImGui::CloseCurrentPopup();
+        }
         ImGui::EndPopup();
     }
     if (quit_asked_) {

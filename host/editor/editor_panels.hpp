@@ -1,7 +1,8 @@
-// The editor's Dear ImGui windows (seed, "The Animator Interface" and "The Model Interface"):
-// what they show comes from the session, and every change they make goes back through it as an
-// undoable edit. Sliders and colour editors edit a draft and commit once, when let go, so a drag
-// of a slider is one edit.
+// The editor's Dear ImGui windows (seed, "The Animator Interface" and "The Model Interface", and
+// the Outliner at the Animator Interface's end): what they show comes from the session, and every
+// change they make goes back through it as an undoable edit (but the Outliner's visibility, a
+// view). Sliders and colour editors edit a draft and commit once, when let go, so a drag of a
+// slider is one edit; with several models selected the field changed goes to all of them.
 #pragma once
 
 #include "editor/dope_sheet.hpp"
@@ -10,7 +11,9 @@
 
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace animator {
 
@@ -47,6 +50,8 @@ class Panels {
     void close_help() { help_open_ = false; }
     // A modal dialog is open: the editor's shortcuts wait until it is answered.
     bool dialog_open() const { return dialog_open_; }
+    // The Outliner's name field for model `model` (a double-click on its row, or F2).
+    void start_rename(int model);
 
     // Set by the window when the user asks to quit with unsaved changes; the panel asks.
     void ask_to_quit() { quit_asked_ = true; }
@@ -54,12 +59,20 @@ class Panels {
     bool quit_confirmed() const { return quit_confirmed_; }
     // A dialog with an error the user must see (a file that failed to open).
     void show_error(const std::string &title, const std::string &message);
+    // At a start with an autosave to recover (recovery.hpp): "Recover unsaved work from
+    // `when`?", Recover (Enter) or Discard (Esc). The answer is taken once: true to recover.
+    void ask_to_recover(const std::string &when, const std::string &detail);
+    std::optional<bool> take_recover_answer();
 
   private:
     void animator_panel(EditorSession &session, float height, double wall);
     void model_panel(EditorSession &session, float width, float height, float bottom);
     void timeline(EditorSession &session, float width, float height);
     void say(const DopeSheet::Result &r) { say(r.message, !r.ok); }
+    void interpolation(EditorSession &session);
+    void outliner(EditorSession &session);
+    void outliner_row(EditorSession &session, int model, const std::vector<std::vector<int>> &children,
+                      const std::set<int> &hidden, const std::set<int> &reveal);
     void physics_backend(EditorSession &session);
     void overlaps(EditorSession &session);
     void dialogs(EditorSession &session);
@@ -81,9 +94,20 @@ class Panels {
     bool help_open_ = false;
     std::string error_title_, error_text_;
     bool error_pending_ = false;
+    bool recover_asked_ = false;
+    std::string recover_when_, recover_detail_;
+    std::optional<bool> recover_answer_;
     float placed_at_width_ = 0.0f; // the window width the Model Interface was placed for
     float placed_at_bottom_ = 0.0f; // and the bottom it was kept above (the Timeline's top)
     DopeSheet dope_sheet_;
+    // The Outliner: the model being renamed (-1: none), its field, and whether the field has
+    // been active yet (it takes the keyboard the frame after it appears).
+    int renaming_ = -1;
+    std::string rename_text_;
+    int rename_frames_ = 0;
+    bool rename_active_ = false;
+    int outliner_seen_ = -1; // the last selected model the Outliner has shown
+    bool outliner_clicked_ = false; // the selection changed by a click on a row
 };
 
 } // namespace animator

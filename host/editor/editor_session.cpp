@@ -36,9 +36,20 @@ fs::path EditorSession::demo_path(const AssetPaths &assets) {
     return {};
 }
 
-bool EditorSession::open(const fs::path &path, std::string &error) {
+bool EditorSession::open(const fs::path &path, std::string &error) { return load(path, path, error); }
+
+bool EditorSession::recover(const fs::path &recovery, const fs::path &original, std::string &error) {
+    // Unsaved changes to the document as it is on disk (when it was opened), else to nothing.
+    Document on_disk = path_ == original && !original.empty() ? saved_ : Document();
+    if (!load(recovery, original, error)) return false;
+    saved_ = std::move(on_disk);
+    dirty_ = true;
+    return true;
+}
+
+bool EditorSession::load(const fs::path &file, const fs::path &path, std::string &error) {
     try {
-        OpenedDocument opened = open_document(env_.plugins, path);
+        OpenedDocument opened = open_document(env_.plugins, file);
         auto timeline = std::make_unique<Timeline>(opened.document, env_.plugins);
         std::vector<std::string> ids, warnings;
         for (const Model &m : opened.document.models()) ids.push_back(m.mesh);
@@ -55,6 +66,7 @@ bool EditorSession::open(const fs::path &path, std::string &error) {
         warnings_ = std::move(warnings);
         history_.clear();
         selection_.clear();
+        hidden_.clear(); // a view of the document before
         pinned_paths_.clear();
         last_selected_ = -1;
         drag_.reset();
@@ -158,6 +170,60 @@ void EditorSession::click(int model, bool add) {
         selection_.insert(model);
         last_selected_ = model;
     }
+}
+
+bool EditorSession::shown(int model) const {
+    const auto &models = doc_.models();
+    // Parents come before their children, so the walk up ends.
+    for (int m = model; m >= 0 && m < static_cast<int>(models.size()); m = models[static_cast<size_t>(m)].parent)
+        if (hidden_.count(m)) return false;
+    return true;
+}
+
+void EditorSession::set_hidden(int model, bool hidden) {
+    if (model < 0 || model >= static_cast<int>(doc_.models().size())) return;
+    if (!hidden) {
+        hidden_.erase(model);
+        return;
+    }
+    hidden_.insert(model);
+    // What cannot be seen is not left selected (a drag would move it unseen), as in Blender.
+    for (int m : hidden_models()) selection_.erase(m);
+    if (last_selected_ >= 0 && !selection_.count(last_selected_))
+        last_selected_ = selection_.empty() ? -1 : *selection_.rbegin();
+}
+
+std::set<int> EditorSession::hidden_models() const {
+    std::set<int> out;
+    if (hidden_.empty()) return out;
+    for (int m = 0; m < static_cast<int>(doc_.models().size()); ++m)
+        if (!shown(m)) out.insert(m);
+    return out;
+}
+
+bool EditorSession::set_field(const std::set<int> &models, ModelField field, const Model &from, std::string *error) {
+    try {
+        auto edit = field_edit(doc_, models, field, from);
+        return !edit || perform(std::move(edit), error);
+    } catch (const std::exception &e) {
+        if (error) *error = e.what();
+        return false;
+    }
+}
+
+bool EditorSession::rename_model(int index, const std::string &name, std::string *error) {
+    if (index < 0 || index >= static_cast<int>(doc_.models().size())) {
+        if (error) *error = "no model " + std::to_string(index);
+        return false;
+    }
+    const std::string trimmed = trim_name(name);
+    if (const std::string problem = check_rename(doc_, index, trimmed); !problem.empty()) {
+        if (error) *error = problem;
+        return false;
+    }
+    Model m = doc_.models()[static_cast<size_t>(index)];
+    m.name = trimmed;
+    return set_model(index, m, error);
 }
 
 Frame EditorSession::frame() const {
@@ -359,8 +425,10 @@ std::vector<Sphere> EditorSession::model_spheres(bool selected_only) const {
     std::vector<glm::dmat4> world;
     world_matrices(doc_.models(), f.models, world);
     std::vector<Sphere> spheres;
+    const std::set<int> hidden = hidden_models();
     for (size_t m = 0; m < world.size() && m < meshes_.size(); ++m) {
         if (!meshes_[m] || (selected_only && !selection_.count(static_cast<int>(m)))) continue;
+        if (hidden.count(static_cast<int>(m))) continue; // not drawn: nothing to frame
         Sphere s;
         transform_bounding_sphere(world[m], meshes_[m]->bound_center, meshes_[m]->bound_radius, s.center, s.radius);
         spheres.push_back(s);

@@ -7,6 +7,7 @@
 #include "document/history.hpp"
 #include "editor/free_view.hpp"
 #include "editor/manipulation.hpp"
+#include "editor/model_fields.hpp"
 #include "editor/motion_paths.hpp"
 #include "io/environment.hpp"
 #include "timeline/timeline.hpp"
@@ -28,6 +29,10 @@ class EditorSession {
     // Opens a .lua scene or an .ani animation. On failure the current document stays, and the
     // message (naming the file, and the line where the format knows it) goes to `error`.
     bool open(const std::filesystem::path &path, std::string &error);
+    // Autosave's recovery (recovery.hpp): opens the .ani `recovery` as unsaved changes to the
+    // document at `original` (empty: untitled), which keeps its path for the next export (and
+    // finds its meshes from there). On failure as open().
+    bool recover(const std::filesystem::path &recovery, const std::filesystem::path &original, std::string &error);
     // The demo scene shipped with the program (assets/scenes/simple.lua).
     static std::filesystem::path demo_path(const AssetPaths &assets);
 
@@ -68,11 +73,29 @@ class EditorSession {
     void tick(double wall);
 
     // Selection: a click on model `model` (-1: empty space); with `add` (CTRL) it toggles the
-    // model in the selection, else selects it alone. The last one selected is the one the
-    // Model Interface shows.
+    // model in the selection, else selects it alone. The Model Interface edits every selected
+    // model and shows the last one selected's values (set_field()).
     void click(int model, bool add);
     const std::set<int> &selection() const { return selection_; }
     int last_selected() const { return last_selected_; }
+
+    // Visibility, the Outliner's toggle: a view of the session like the free view, not an edit
+    // (not saved, no undo, no " *"). A hidden model, and every model under it in the scene tree,
+    // is neither drawn nor picked nor framed (Home, F), but still simulated: the bake and the
+    // export are those of the document. Hiding a model deselects what it hides.
+    bool hidden(int model) const { return hidden_.count(model) > 0; }
+    bool shown(int model) const;
+    void set_hidden(int model, bool hidden);
+    // Every model not shown (hidden, or under a hidden model), for the view to leave out.
+    std::set<int> hidden_models() const;
+
+    // The Model Interface's change of one field (model_fields.hpp) to every model in `models`
+    // (the selection): one undoable edit, each model keeping its other properties. True when
+    // nothing needed changing; false (with why in `error`) and no change when it cannot.
+    bool set_field(const std::set<int> &models, ModelField field, const Model &from, std::string *error = nullptr);
+    // The Outliner's rename, one undoable edit. Surrounding spaces are dropped; an empty name or
+    // another model's is refused with a message that says so, and nothing changes.
+    bool rename_model(int index, const std::string &name, std::string *error = nullptr);
 
     EditMode mode() const { return mode_; }
     void set_mode(EditMode mode) { mode_ = mode; }
@@ -103,7 +126,7 @@ class EditorSession {
     // Home (every model) and F (the selected ones; false when none is): the free view turns
     // on and fits their bounding spheres in a viewport of this aspect (width / height).
     bool frame_models(bool selected_only, double aspect);
-    // Every model's bounding sphere in the world at the current time (empties have none).
+    // Every shown model's bounding sphere in the world at the current time (empties have none).
     std::vector<Sphere> model_spheres(bool selected_only) const;
     // What the window draws and picks in: frame(), seen through the free view when it is on.
     Frame shown_frame() const;
@@ -172,6 +195,8 @@ class EditorSession {
         double metres_per_pixel;
     };
     std::int64_t history_key() const;
+    // open(): reads `file` as the document at `path`.
+    bool load(const std::filesystem::path &file, const std::filesystem::path &path, std::string &error);
     void changed();
     // After undo or redo: the timeline takes the document back.
     void follow_document();
@@ -199,6 +224,7 @@ class EditorSession {
 
     std::set<int> selection_;
     int last_selected_ = -1;
+    std::set<int> hidden_; // models whose own visibility is off
     EditMode mode_ = EditMode::Camera;
     std::optional<Drag> drag_;
     bool free_view_on_ = false, view_started_ = false;

@@ -22,6 +22,7 @@ const std::vector<HelpSection> &help_sections() {
              {"DELETE", "delete the keys selected in the Timeline (not those at t = 0)"},
              {"CTRL+C, CTRL+V", "copy the keys selected in the Timeline; paste them at the playhead"},
              {"F1", "this overlay (F1 or ESC closes it)"},
+             {"F2", "rename the last selected model in the Outliner"},
              {"`q`", "quit; with unsaved changes it asks first"},
              {"ESC", "cancel a drag (also a look-around drag: the view goes back)"},
          }},

@@ -132,6 +132,7 @@ void Renderer::prepare_frame(const Frame &frame, int width, int height) {
 }
 
 bool Renderer::visible(int model) const {
+    if (hidden_.count(model)) return false;
     const Mesh &mesh = *meshes_[static_cast<size_t>(model)];
     glm::dvec3 center;
     double radius = 0.0;
@@ -246,7 +247,7 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     transparent_.clear();
     const int count = static_cast<int>(std::min(models_.size(), frame.models.size()));
     for (int m = 0; m < count; ++m) {
-        if (!gpu_meshes_[static_cast<size_t>(m)]) continue;
+        if (!gpu_meshes_[static_cast<size_t>(m)] || hidden_.count(m)) continue;
         if (!visible(m)) {
             ++stats_.models_culled;
             continue;

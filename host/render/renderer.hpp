@@ -95,6 +95,10 @@ class Renderer {
     // The model drawn at pixel (x, y), from the top left of a target of this size, or -1.
     int pick(const Frame &frame, int width, int height, int x, int y);
 
+    // Models that draw() and pick() leave out until said otherwise (the editor's hidden ones):
+    // not drawn, outlined, ringed nor picked.
+    void set_hidden(std::set<int> hidden) { hidden_ = std::move(hidden); }
+
     const RenderStats &stats() const { return stats_; }
     ShadingPrograms &programs() { return *programs_; }
     const RenderOptions &options() const { return options_; }
@@ -128,6 +132,7 @@ class Renderer {
     std::unique_ptr<PickingPass> picking_;
     std::unique_ptr<SelectionOutline> outline_;
     std::unique_ptr<MotionPathOverlay> paths_;
+    std::set<int> hidden_;
     void draw_outlines(const std::set<int> &selected, const std::set<int> &flagged, int width, int height);
 
     // Per frame, kept to reuse their storage.

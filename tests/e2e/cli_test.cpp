@@ -11,7 +11,13 @@ using namespace animator;
 
 namespace {
 const std::string drop = (test::source_dir() / "assets/animations/drop.ani").string();
+
+size_t count_in(const std::string &text, const std::string &needle) {
+    size_t n = 0;
+    for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+    return n;
 }
+} // namespace
 
 TEST_CASE("animator --help names the subcommands and each subcommand has --help") {
     auto r = test::run_animator("--help");
@@ -82,7 +88,10 @@ TEST_CASE("animator info prints every example with its models, keyframes and res
                 for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
                 return n;
             };
-            const size_t models = file.extension() == ".ani" ? count("\nmodel \"") : count("gr.mesh(");
+            // A scene's models: its meshes and its empties (joints, and nodes but the root).
+            const bool lua = file.extension() == ".lua";
+            const size_t meshed = lua ? count("gr.mesh(") : count("\nmodel \"");
+            const size_t models = lua ? meshed + count("gr.joint(") + count("gr.node(") - 1 : meshed;
             const size_t keyframes = file.extension() == ".ani" ? count("\nkeyframe ") : 1;
             const auto r = test::run_animator("info " + file.string());
             CHECK(r.exit_code == 0);
@@ -91,11 +100,12 @@ TEST_CASE("animator info prints every example with its models, keyframes and res
             CHECK_THAT(r.out, !Catch::Contains("not found"));
             CHECK(std::count(r.out.begin(), r.out.end(), '\n') > 10);
             // Each model's mesh was found and loaded (empties say so).
+            CHECK(count_in(r.out, "(none: an empty)") == models - meshed);
             size_t meshes = 0;
             for (size_t at = r.out.find(" triangles, bounding sphere"); at != std::string::npos;
                  at = r.out.find(" triangles, bounding sphere", at + 1))
                 ++meshes;
-            CHECK(meshes == models);
+            CHECK(meshes == meshed);
             ++examples;
         }
     }

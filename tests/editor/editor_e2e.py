@@ -313,6 +313,9 @@ class Editor:
         self.err = open(self.err_path, 'wb')
         env = dict(os.environ)
         env['ANIMATOR_EDITOR_SIGNALS'] = '1'
+        # Autosave's recovery files (docs/manual.md) go to the case's own folder, never the
+        # user's ~/.local/state, where one left by a killed run would greet another case.
+        env['XDG_STATE_HOME'] = case.state
         # Keys, clicks and scroll notches sent so far (each press and each release is one), and
         # the cursor moves the editor had seen at its last idle signal: settle() waits for the
         # editor to have handled at least these and gone to sleep.
@@ -582,6 +585,7 @@ class Case:
         self.dir = tempfile.mkdtemp(prefix='editor-e2e-%s-' % name)
         self.work = os.path.join(self.dir, 'work')
         os.makedirs(self.work)
+        self.state = os.path.join(self.dir, 'state')  # XDG_STATE_HOME: recovery files
         self.editors = []
         self.shots = 0
         self.log_file = open(os.path.join(self.dir, 'case.log'), 'w')
