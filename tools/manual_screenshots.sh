@@ -28,23 +28,32 @@ export DISPLAY=":$n"
 # Ready when it answers (a fixed second was seen too short on a busy machine).
 for _ in $(seq 100); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
 # The editor says "animator: idle ..." once it has drawn everything and sleeps.
-(cd "$work" && ANIMATOR_EDITOR_SIGNALS=1 exec "$bin") >"$work/log" 2>&1 &
-editor=$!
-win=""
-for _ in $(seq 50); do
-  win=$(xdotool search --name '^animator' 2>/dev/null | head -1 || true)
-  [ -n "$win" ] && break
-  sleep 0.2
-done
-[ -n "$win" ] || { echo "the editor did not open a window:" >&2; cat "$work/log" >&2; exit 1; }
-for _ in $(seq 600); do grep -q '^animator: idle' "$work/log" && break; sleep 0.1; done
+# Starts the editor on FILE (a name in $work; "" for the demo scene) with any extra VAR=value
+# settings, waits for its window, for it to draw and sleep, and focuses it.
+start_editor() {
+  local file=$1
+  shift
+  if [ -n "$editor" ]; then kill "$editor" 2>/dev/null || true; wait "$editor" 2>/dev/null || true; fi
+  : > "$work/log"
+  (cd "$work" && exec env "$@" ANIMATOR_EDITOR_SIGNALS=1 "$bin" ${file:+"$file"}) >"$work/log" 2>&1 &
+  editor=$!
+  win=""
+  for _ in $(seq 50); do
+    win=$(xdotool search --pid "$editor" --name '^animator' 2>/dev/null | head -1 || true)
+    [ -n "$win" ] && break
+    sleep 0.2
+  done
+  [ -n "$win" ] || { echo "the editor did not open a window:" >&2; cat "$work/log" >&2; exit 1; }
+  for _ in $(seq 600); do grep -q '^animator: idle' "$work/log" && break; sleep 0.1; done
+  xdotool windowfocus --sync "$win"
+}
+start_editor ""
 
 shot() { sleep "${2:-0.6}"; import -window root "$out/$1.png"; }
 # ImGui 1.86 sees one mouse position per frame: give it a moment between actions.
 # The pointer moves first and rests: a click sent with the move may land where it was before.
 click() { xdotool mousemove --window "$win" "$1" "$2"; sleep 0.3; xdotool click 1; sleep 0.4; }
 
-xdotool windowfocus --sync "$win"
 shot 01-editor
 # The 3D view is right of the Animator Interface and above the Timeline (560 px tall at 1280x720).
 click 642 196                  # the red ball: selected, tinted yellow, its Model Interface opens beside the view
@@ -69,6 +78,9 @@ for dx in 20 40 60 80 100 120 140 160; do
 done
 xdotool mouseup 3
 shot 05-new-keyframe
+xdotool key p                  # the cube's motion path: from its place at 0 s to its new key at 4 s
+shot 09-paths
+xdotool key p
 xdotool key f                  # the free view, framing the selected cube
 sleep 0.4
 xdotool mousemove --window "$win" 700 470 keydown alt mousedown 1   # Alt + left drag: orbit
@@ -89,21 +101,9 @@ xdotool mousemove --window "$win" 1000 450
 shot 08-timeline
 
 # Models inside each other: the demo's cube as it once was, half inside the floor.
-kill "$editor"; wait "$editor" 2>/dev/null || true
 sed 's/cube:translate(-1.5, 1, 0).*/cube:translate(-1.5, 0.5, 0)/' assets/scenes/simple.lua > "$work/sunk.lua"
 grep -q 'translate(-1.5, 0.5, 0)' "$work/sunk.lua" || { echo "simple.lua changed: no cube to sink" >&2; exit 1; }
-: > "$work/log"
-(cd "$work" && ANIMATOR_EDITOR_SIGNALS=1 exec "$bin" sunk.lua) >"$work/log" 2>&1 &
-editor=$!
-win=""
-for _ in $(seq 50); do
-  win=$(xdotool search --pid "$editor" --name '^animator' 2>/dev/null | head -1 || true)
-  [ -n "$win" ] && break
-  sleep 0.2
-done
-[ -n "$win" ] || { echo "the editor did not open a window:" >&2; cat "$work/log" >&2; exit 1; }
-for _ in $(seq 600); do grep -q '^animator: idle' "$work/log" && break; sleep 0.1; done
-xdotool windowfocus --sync "$win"
+start_editor sunk.lua
 click 753 303                  # the cube, sunk half into the floor (the view spans the window right of the panel, above the Timeline)
 click 927 109                  # Model Interface > Physics > Gravity: the bake finds them overlapping
 for _ in $(seq 600); do grep -q "overlap at t = 0 s" "$work/log" && break; sleep 0.1; done
@@ -111,69 +111,32 @@ xdotool mousemove --window "$win" 700 650
 shot 07-overlap 1.5
 
 # The Outliner and the Model Interface over several models (docs/manual.md, "The Outliner").
-# Starts the editor on a copy of a shipped scene, and waits for it to draw and sleep.
-start_editor() {
-  kill "$editor" 2>/dev/null; wait "$editor" 2>/dev/null || true
-  cp "$1" "$work/"
-  : > "$work/log"
-  (cd "$work" && ANIMATOR_EDITOR_SIGNALS=1 exec "$bin" "$(basename "$1")") >"$work/log" 2>&1 &
-  editor=$!
-  win=""
-  for _ in $(seq 50); do
-    win=$(xdotool search --pid "$editor" --name '^animator' 2>/dev/null | head -1 || true)
-    [ -n "$win" ] && break
-    sleep 0.2
-  done
-  [ -n "$win" ] || { echo "the editor did not open a window:" >&2; cat "$work/log" >&2; exit 1; }
-  for _ in $(seq 600); do grep -q '^animator: idle' "$work/log" && break; sleep 0.1; done
-  xdotool windowfocus --sync "$win"
-}
 ctrl_click() { xdotool mousemove --window "$win" "$1" "$2"; sleep 0.3; xdotool keydown ctrl; sleep 0.1; xdotool click 1; sleep 0.1; xdotool keyup ctrl; sleep 0.4; }
 # Outliner rows (1280x720) start at y 584, 17 px apart; a row's box is at x 33 + 21 per level.
-start_editor assets/scenes/puppet.lua
+cp assets/scenes/puppet.lua "$work/"
+start_editor puppet.lua
 click 110 652                  # the left arm's row (under left_shoulder)
 ctrl_click 110 686             # and the right arm's: both selected, outlined in the view
 click 54 618                   # the head's box: hidden from the view
 xdotool mousemove --window "$win" 700 650
 shot outliner
-start_editor assets/scenes/simple.lua
+cp assets/scenes/simple.lua "$work/"
+start_editor simple.lua
 click 110 601                  # the ball's row
 ctrl_click 110 618             # and the cube's: the Model Interface edits both, mixed fields say so
 xdotool mousemove --window "$win" 700 650
 shot multi-edit
 # Autosave and recovery: an edit autosaved (every second here), the editor killed, started again.
-kill "$editor"; wait "$editor" 2>/dev/null || true
 cp assets/animations/drop.ani "$work/drop.ani"
 touch -d '1 minute ago' "$work/drop.ani"   # the autosave is newer: offered
-: > "$work/log"
 # A home of its own, so the dialog names the folder a user's shows: ~/.local/state/animator/recovery.
 mkdir -p "$work/home"
-(cd "$work" && HOME="$work/home" XDG_STATE_HOME= ANIMATOR_EDITOR_SIGNALS=1 ANIMATOR_AUTOSAVE_SECONDS=1 exec "$bin" drop.ani) >"$work/log" 2>&1 &
-editor=$!
-win=""
-for _ in $(seq 50); do
-  win=$(xdotool search --pid "$editor" --name '^animator' 2>/dev/null | head -1 || true)
-  [ -n "$win" ] && break
-  sleep 0.2
-done
-[ -n "$win" ] || { echo "the editor did not open a window:" >&2; cat "$work/log" >&2; exit 1; }
-for _ in $(seq 600); do grep -q '^animator: idle' "$work/log" && break; sleep 0.1; done
-xdotool windowfocus --sync "$win"
+start_editor drop.ani HOME="$work/home" XDG_STATE_HOME= ANIMATOR_AUTOSAVE_SECONDS=1
 click 27 370                   # Cel Shading: an unsaved change
 for _ in $(seq 600); do grep -q '^animator: autosaved' "$work/log" && break; sleep 0.1; done
 grep -q '^animator: autosaved' "$work/log" || { echo "no autosave:" >&2; cat "$work/log" >&2; exit 1; }
 kill -KILL "$editor"; wait "$editor" 2>/dev/null || true
-: > "$work/log"
-(cd "$work" && HOME="$work/home" XDG_STATE_HOME= ANIMATOR_EDITOR_SIGNALS=1 exec "$bin" drop.ani) >"$work/log" 2>&1 &
-editor=$!
-win=""
-for _ in $(seq 50); do
-  win=$(xdotool search --pid "$editor" --name '^animator' 2>/dev/null | head -1 || true)
-  [ -n "$win" ] && break
-  sleep 0.2
-done
-[ -n "$win" ] || { echo "the editor did not open a window:" >&2; cat "$work/log" >&2; exit 1; }
-for _ in $(seq 600); do grep -q '^animator: idle' "$work/log" && break; sleep 0.1; done
+start_editor drop.ani HOME="$work/home" XDG_STATE_HOME=
 grep -q '^animator: Recover unsaved work' "$work/log" || { echo "no recovery offered:" >&2; cat "$work/log" >&2; exit 1; }
 xdotool mousemove --window "$win" 700 650
 shot recovery-dialog 1.0
