@@ -129,6 +129,7 @@ PanelPlace DopeSheet::draw(EditorSession &session, const ScreenRect &rect) {
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
     handle_mouse(session, DopeSheetLayout(content, rows, view_, scroll_));
     const DopeSheetLayout layout(content, rows, view_, scroll_);
+    tooltip(session, layout);
     const DopeSheetMetrics &m = layout.metrics();
 
     ImDrawList *dl = ImGui::GetWindowDrawList();
@@ -240,6 +241,40 @@ PanelPlace DopeSheet::draw(EditorSession &session, const ScreenRect &rect) {
     dl->PopClipRect();
     ImGui::End();
     return place;
+}
+
+// What the part under the mouse does, while no gesture is under way: a key (whose, when, and
+// how to move it), the ruler (scrub), a row's name (select its keys), the tracks (box-select).
+void DopeSheet::tooltip(const EditorSession &session, const DopeSheetLayout &layout) const {
+    if (!ImGui::IsItemHovered() || ImGui::IsItemActive()) return;
+    const ImGuiIO &io = ImGui::GetIO();
+    const double mx = io.MousePos.x, my = io.MousePos.y;
+    const ScreenRect ruler = layout.ruler();
+    const auto name_of = [&](int model) {
+        return model == KeyRef::kCamera ? std::string("the camera")
+                                        : "'" + session.document().models()[static_cast<size_t>(model)].name + "'";
+    };
+    if (my < ruler.y + ruler.height) {
+        if (mx >= ruler.x)
+            ImGui::SetTooltip("The ruler, in seconds and frames: click or drag to move the playhead (scrub).");
+        else
+            ImGui::SetTooltip("The Timeline: a row per model (the camera's first), a diamond per key.\n"
+                              "Wheel zooms, SHIFT+wheel or a middle drag pans; over the names the wheel scrolls the rows.");
+    } else if (auto key = layout.key_at(keys_, mx, my)) {
+        ImGui::SetTooltip("%s's key at %.3f s: click selects it (SHIFT adds, CTRL toggles), a drag retimes the\n"
+                          "selected keys (one edit), DELETE removes them, CTRL+C / CTRL+V copy them to the playhead.",
+                          name_of(key->model).c_str(), static_cast<double>(key->time_ms) / 1000.0);
+    } else if (mx < ruler.x) {
+        const int row = layout.row_at(my);
+        if (row >= 0 && row < layout.rows())
+            ImGui::SetTooltip("%s: click selects all its keys (SHIFT adds, CTRL toggles).",
+                              name_of(DopeSheetLayout::model_of(row)).c_str());
+        else
+            ImGui::SetTooltip("The Timeline's rows: the wheel scrolls them.");
+    } else {
+        ImGui::SetTooltip("Drag a box to select keys (SHIFT adds); wheel zooms, SHIFT+wheel or a middle drag pans.\n"
+                          "Shaded: where a model is free of its keys (physics). Ticks: its collisions.");
+    }
 }
 
 void DopeSheet::handle_mouse(EditorSession &session, const DopeSheetLayout &layout) {

@@ -50,6 +50,7 @@ class DopeSheet {
     enum class Gesture { None, Scrub, PressKey, MoveKeys, Box, Pan };
 
     void handle_mouse(EditorSession &session, const DopeSheetLayout &layout);
+    void tooltip(const EditorSession &session, const DopeSheetLayout &layout) const;
     void retime(EditorSession &session);
     // The selected keys a drag moves: all but those at t = 0.
     std::vector<KeyRef> moving() const;

@@ -14,6 +14,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cstdarg>
 #include <cstdio>
 #include <iostream>
 
@@ -92,6 +93,18 @@ bool enter_pressed() {
            ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter), false);
 }
 bool escape_pressed() { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false); }
+
+// What the control just drawn does, and its key, shown while the mouse rests on it (also when
+// it is disabled, so it can say why). Every control has one: tests/session/tooltips_test.cpp
+// sweeps the panels for a control without.
+void tip(const char *format, ...) IM_FMTARGS(1);
+void tip(const char *format, ...) {
+    if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
+    va_list args;
+    va_start(args, format);
+    ImGui::SetTooltipV(format, args);
+    va_end(args);
+}
 
 // The window being drawn: where it is, and whether only its title bar shows.
 PanelPlace current_place() {
@@ -201,12 +214,20 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
     int mode = static_cast<int>(session.mode());
     ImGui::TextUnformatted("Mode");
     ImGui::RadioButton("Camera", &mode, 0);
+    tip("Mouse drags in the view move the animated camera and key it at the current time:\n"
+        "left pans, middle turns it about its view axis, right turns it; the wheel moves it along its view.");
     ImGui::SameLine();
     ImGui::RadioButton("Rotate", &mode, 1);
+    tip("Drags turn the selected models and key them at the current time: middle drag turns about y,\n"
+        "right drag about x (up and down) and z (sideways). A left click selects.");
     ImGui::SameLine();
     ImGui::RadioButton("Translate", &mode, 2);
+    tip("Drags move the selected models and key them at the current time: right drag moves them in x and y\n"
+        "with the cursor, middle drag in z. A left click selects.");
     ImGui::SameLine();
     ImGui::RadioButton("Scale", &mode, 3);
+    tip("Drags scale the selected models and key them at the current time: right drag scales x and y,\n"
+        "middle drag z (right and up grow). A left click selects.");
     session.set_mode(static_cast<EditMode>(mode));
 
     // The Time slider scrubs: it moves the scene, it is not an edit.
@@ -216,20 +237,23 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
         session.pause();
         session.set_time_ms(t);
     }
+    tip("The current time: drag to scrub (it pauses playback), CTRL+click to type a time.\n"
+        "Left/Right step a frame, Up/Down jump to the previous/next keyframe. Not an edit.");
     if (ImGui::Button(session.playing() ? "Pause" : "Play")) session.toggle_play(wall);
+    tip(session.playing() ? "Pause playback here (SPACE)" : "Play from the current time in real time, with sound (SPACE)");
     ImGui::SameLine();
     if (ImGui::Button("Stop")) {
         session.pause();
         session.set_time_ms(0);
     }
+    tip("Stop playback and go back to 0 s");
     ImGui::SameLine();
     ImGui::TextDisabled("(SPACE)");
     // Which camera the view shows: the animated one, or the free view to look around with.
     ImGui::SameLine();
     bool free_view = session.free_view();
     if (ImGui::Checkbox("Free view (c)", &free_view)) session.set_free_view(free_view);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Look around without editing the animation: Alt+left drag orbits, Alt+middle pans,\n"
+    tip("Look around without editing the animation: Alt+left drag orbits, Alt+middle pans,\n"
                           "Alt+right or the wheel zooms, Home frames everything, F the selection.\n"
                           "Off: the view shows the animated camera (Camera mode keys it).");
 
@@ -238,6 +262,8 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
     if (slider("Max Time (s)", max_s, 1.0, 300000.0, "%.3f", ImGuiSliderFlags_Logarithmic))
         s.max_time_ms = std::clamp<std::int64_t>(static_cast<std::int64_t>(max_s * 1000.0 + 0.5),
                                                  Settings::kMinMaxTimeMs, Settings::kMaxMaxTimeMs);
+    tip("The animation's length, 1 s to 300000 s (CTRL+click to type). Shortening it asks before\n"
+        "deleting the keyframes past the new end. One undoable change.");
     if (ImGui::IsItemDeactivatedAfterEdit()) {
         const auto &keys = doc.keyframes();
         const bool loses = std::any_of(keys.begin(), keys.end(), [&](const Keyframe &k) { return k.time_ms > s.max_time_ms; });
@@ -253,7 +279,9 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
         int later = 0;
         for (const Keyframe &k : doc.keyframes()) later += confirm_settings_ && k.time_ms > confirm_settings_->max_time_ms;
         ImGui::Text("Shortening the animation deletes %d keyframe%s past the new max time.", later, later == 1 ? "" : "s");
-        if (ImGui::Button("Delete them")) {
+        const bool delete_them = ImGui::Button("Delete them");
+        tip("Shorten the animation and delete those keyframes (u undoes both)");
+        if (delete_them) {
             std::string error;
             if (confirm_settings_) commit(session.set_settings(*confirm_settings_, &error), error);
             confirm_settings_.reset();
@@ -261,7 +289,9 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
         }
         ImGui::SameLine();
         // Esc cancels; Enter does nothing here: deleting keyframes is not a default.
-        if (ImGui::Button("Cancel") || escape_pressed()) {
+        const bool cancel = ImGui::Button("Cancel");
+        tip("Keep the max time and the keyframes (Esc)");
+        if (cancel || escape_pressed()) {
             confirm_settings_.reset();
             settings_draft_ = doc.settings();
             ImGui::CloseCurrentPopup();
@@ -281,9 +311,16 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
             session.pause();
             session.set_time_ms(k.time_ms);
         }
+        tip("Go to the keyframe at %.3f s (Up/Down jump between keyframes). A drag there edits it;\n"
+            "it keys %d model%s%s.", static_cast<double>(k.time_ms) / 1000.0,
+            static_cast<int>(std::count_if(k.states.begin(), k.states.end(), [](const auto &st) { return st.has_value(); })),
+            std::count_if(k.states.begin(), k.states.end(), [](const auto &st) { return st.has_value(); }) == 1 ? "" : "s",
+            k.camera ? " and the camera" : "");
         if (k.time_ms != 0) {
             ImGui::SameLine();
             if (ImGui::SmallButton("Delete")) to_delete = k.time_ms;
+            tip("Delete the keyframe at %.3f s (u undoes it). The Timeline deletes single keys.",
+                static_cast<double>(k.time_ms) / 1000.0);
         }
         ImGui::PopID();
     }
@@ -298,14 +335,19 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
         std::string error;
         commit(session.set_settings(s, &error), error);
     }
+    tip("The acceleration of gravity for models with Gravity on, after their last key (9.81 on Earth).\n"
+        "CTRL+click to type. One undoable change; the physics bakes again.");
     int axis = static_cast<int>(s.down_axis);
     ImGui::TextUnformatted("Down axis");
     ImGui::SameLine();
     bool axis_changed = ImGui::RadioButton("X", &axis, 0);
+    tip("Models fall along -x");
     ImGui::SameLine();
     axis_changed |= ImGui::RadioButton("Y", &axis, 1);
+    tip("Models fall along -y (the default: y is up)");
     ImGui::SameLine();
     axis_changed |= ImGui::RadioButton("Z", &axis, 2);
+    tip("Models fall along -z");
     if (axis_changed) {
         s.down_axis = static_cast<Axis>(axis);
         std::string error;
@@ -315,32 +357,39 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
         std::string error;
         commit(session.set_settings(s, &error), error);
     }
+    tip("Toon shading: a few bands of light instead of smooth Phong shading. Saved in the animation.");
     ImGui::SameLine();
     cel_outline(s, session);
     ImGui::SameLine();
     bool paths = session.paths_on(); // a view setting, not an edit
     if (ImGui::Checkbox("Paths (p)", &paths)) session.set_paths_on(paths);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Motion paths of the selected models: a dot per frame, white at keys, magenta at\n"
+    tip("Motion paths of the selected models: a dot per frame, white at keys, magenta at\n"
                           "collisions. They follow a drag as it happens. A model's own Path box keeps its\n"
                           "path shown when it is not selected.");
     if (asset_combo("Skybox", s.skybox, env_.assets.list(ANI_ASSET_SKYBOX))) {
         std::string error;
         commit(session.set_settings(s, &error), error);
     }
+    tip("The environment drawn behind the scene, which reflective and transparent models reflect\n"
+        "and refract (the skyboxes/ folders on the asset path). Saved in the animation.");
 
     ImGui::Separator();
     physics_backend(session);
 
     ImGui::Separator();
     if (ImGui::Button("Undo (u)")) undo(session);
+    tip("Undo the last change made at the current keyframe, else the last change of the whole\n"
+        "animation (u, CTRL+Z). Each keyframe keeps its own undo history, as in the seed.");
     ImGui::SameLine();
     if (ImGui::Button("Redo (r)")) redo(session);
+    tip("Redo what was undone here (r, CTRL+Y, CTRL+SHIFT+Z)");
     ImGui::SameLine();
     if (ImGui::Button("Export (x)")) {
         const auto r = session.export_animation();
         say(r.message, !r.ok);
     }
+    tip("Save the animation (x): to the .ani that was opened, else to animations/new.ani under the\n"
+        "working folder (a fresh name, never over a file you did not open). A failed save keeps the old file.");
     // The status line: how fast the editor draws and how far the physics is baked.
     // The frame rate beside the bake status where the panel is wide enough, else under it.
     const std::string bake = bake_status(session), beside = "|  " + frame_rate_;
@@ -416,7 +465,10 @@ void Panels::start_rename(int model) {
 void Panels::outliner(EditorSession &session) {
     constexpr float kTop = 540.0f; // in the window, below a one-line status message
     if (ImGui::GetCursorPosY() < kTop) ImGui::SetCursorPosY(kTop);
-    if (!ImGui::CollapsingHeader("Outliner", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const bool shown = ImGui::CollapsingHeader("Outliner", ImGuiTreeNodeFlags_DefaultOpen);
+    tip("The scene's tree, joints and parents included: click a row to select, CTRL+click to add,\n"
+        "double-click or F2 to rename, the box to hide a model from the view. Click here to fold it.");
+    if (!shown) {
         renaming_ = -1;
         return;
     }
@@ -541,7 +593,10 @@ void Panels::cel_outline(Settings &s, EditorSession &session) {
     if (auto p = s.params.find(plugin); p != s.params.end())
         if (auto v = p->second.find("cel_outline"); v != p->second.end()) on = v->second[0] != 0.0;
     ImGui::BeginDisabled(!s.cel_shading);
-    if (ImGui::Checkbox("Outlines", &on)) {
+    const bool clicked = ImGui::Checkbox("Outlines", &on);
+    tip(s.cel_shading ? "A line along the models' silhouettes (the shading plugin's cel_outline). Saved in the animation."
+                      : "A line along the models' silhouettes: drawn with Cel Shading only, so tick Cel Shading first.");
+    if (clicked) {
         if (on) s.params[plugin]["cel_outline"] = ParamValue{1.0, 0.0, 0.0, 0.0};
         else {
             // Off is the default: dropping the entry lets turning it on and off again leave
@@ -605,6 +660,8 @@ void Panels::physics_backend(EditorSession &session) {
         }
         ImGui::EndCombo();
     }
+    tip("The physics backend that bakes the motion after each model's last key. Switching bakes again\n"
+        "with the other one (to compare them); it is not an edit: the file keeps its own choice.");
     if (session.baking()) {
         char text[64];
         std::snprintf(text, sizeof text, "baking %.0f%%", 100.0 * session.bake_progress());
@@ -621,7 +678,10 @@ void Panels::physics_backend(EditorSession &session) {
     // The backend's parameters, saved in the document (settings.params[backend]).
     const PluginInfo *info = env_.plugins.find(current);
     if (!info || !info->descriptor || info->descriptor->param_count == 0) return;
-    if (!ImGui::TreeNode("Backend parameters")) return;
+    const bool params_open = ImGui::TreeNode("Backend parameters");
+    tip("%s's own settings, saved in the animation; each change is one undoable edit and bakes again.",
+        current.c_str());
+    if (!params_open) return;
     Settings &s = *settings_draft_;
     for (uint32_t i = 0; i < info->descriptor->param_count; ++i) {
         const ani_param_descriptor &d = info->descriptor->params[i];
@@ -672,7 +732,8 @@ void Panels::physics_backend(EditorSession &session) {
             break;
         }
         }
-        if (d.description && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", d.description);
+        if (d.description) tip("%s", d.description);
+        else tip("%s: a parameter of %s", d.name, current.c_str());
         if (changed) s.params[current][d.id] = value;
         if (let_go(changed)) {
             std::string error;
@@ -724,42 +785,77 @@ void Panels::model_panel(EditorSession &session, float width, float height, floa
     } else {
         ImGui::TextUnformatted(m.name.c_str());
     }
+    // The model's own motion path, shown also when it is not selected (a view, not an edit).
+    // Drawn no taller than the name, so the fields below stay where they were.
+    ImGui::SameLine();
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 0.0f));
+    const bool pinned = std::all_of(selected.begin(), selected.end(), [&](int i) { return session.path_pinned(i); });
+    const bool some_pinned = std::any_of(selected.begin(), selected.end(), [&](int i) { return session.path_pinned(i); });
+    bool pin = pinned;
+    if (mixed_checkbox("Path", pin, some_pinned && !pinned))
+        for (int i : selected) session.pin_path(i, pin);
+    ImGui::PopStyleVar();
+    tip("Keep the motion path of %s shown, selected or not (p shows the selected models' paths).\n"
+        "A view: not saved, not an edit.", selected.size() > 1 ? "these models" : "this model");
 
     // The fields every physics backend reads of a model (the SDK's ani_model_desc): the SDK
     // has no per-model parameters of a backend's own, only the backend's document-wide ones
     // (the Animator Interface's "Backend parameters").
     const std::string physics = "Physics (" + session.backend() + ")###Physics";
-    if (ImGui::CollapsingHeader(physics.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+    const bool physics_open = ImGui::CollapsingHeader(physics.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
+    tip("What the physics backend (%s) reads of the model. Click to fold.", session.backend().c_str());
+    if (physics_open) {
         if (mixed_checkbox("Dynamics", m.dynamics, mixed(ModelField::Dynamics))) done = ModelField::Dynamics;
+        tip("Between keys the center follows the kinematic equations instead of straight lines, it bounces\n"
+            "in a collision instead of stopping, and it keeps moving after its last key.");
         if (mixed_checkbox("Gravity", m.gravity, mixed(ModelField::Gravity))) done = ModelField::Gravity;
+        tip("After its last key the model falls along the down axis (the Animator Interface's Gravity).");
         if (let_go(slider("Mass (kg)", m.mass, 0.01, 1000.0, "%.3f", ImGuiSliderFlags_Logarithmic, mixed(ModelField::Mass))))
             done = ModelField::Mass;
+        tip("How a collision shares momentum between the two models (CTRL+click to type).");
         if (let_go(vector3("Velocity (m/s)", m.initial_velocity, mixed(ModelField::Velocity)))) done = ModelField::Velocity;
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("The velocity of the model's center at t = 0.");
+        tip("The velocity of the model's center at t = 0, m/s (drag a number, or CTRL+click to type).");
     }
-    if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const bool material_open = ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen);
+    tip("How the model is shaded. Click to fold.");
+    if (material_open) {
         if (let_go(colour("kd", m.material.kd, mixed(ModelField::Kd)))) done = ModelField::Kd;
+        tip("The diffuse colour (drag a number, or click the swatch for a picker)");
         if (let_go(colour("ks", m.material.ks, mixed(ModelField::Ks)))) done = ModelField::Ks;
+        tip("The specular colour: of the highlights (drag a number, or click the swatch for a picker)");
         if (asset_combo("Texture", m.texture, env_.assets.list(ANI_ASSET_TEXTURE), mixed(ModelField::Texture)))
             done = ModelField::Texture;
+        tip("An image wrapped on the model by its UVs (the textures/ folders on the asset path)");
         const bool textured = std::any_of(selected.begin(), selected.end(), [&](int i) {
             return !doc.models()[static_cast<size_t>(i)].texture.empty();
         });
-        if (textured && let_go(slider("Tint", m.tint, 0.0, 1.0, "%.3f", 0, mixed(ModelField::Tint)))) done = ModelField::Tint;
+        if (textured) {
+            if (let_go(slider("Tint", m.tint, 0.0, 1.0, "%.3f", 0, mixed(ModelField::Tint)))) done = ModelField::Tint;
+            tip("How much kd colours the texture: 0 the texture alone, 1 fully tinted");
+        }
         if (let_go(slider("Shininess", m.material.shininess, 0.0, ANI_SHININESS_MAX, "%.1f", 0, mixed(ModelField::Shininess))))
             done = ModelField::Shininess;
+        tip("The Phong exponent: higher is a smaller, sharper highlight; at the maximum (%.0f) specular light is off",
+            static_cast<double>(ANI_SHININESS_MAX));
         if (let_go(slider("Reflectivity", m.reflectivity, 0.0, 1.0, "%.3f", 0, mixed(ModelField::Reflectivity))))
             done = ModelField::Reflectivity;
+        tip("How much of the skybox the model reflects, 0 to 1");
         if (let_go(slider("Transparency", m.transparency, 0.0, 1.0, "%.3f", 0, mixed(ModelField::Transparency))))
             done = ModelField::Transparency;
+        tip("How much of the skybox shows through the model, refracted by its refractive index, 0 to 1");
         if (let_go(slider("Refractive index", m.refractive_index, 1.0, 3.0, "%.3f", 0, mixed(ModelField::RefractiveIndex))))
             done = ModelField::RefractiveIndex;
+        tip("How much a transparent model bends light: 1 air, 1.33 water, 1.5 glass");
     }
-    if (ImGui::CollapsingHeader("Sound", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const bool sound_open = ImGui::CollapsingHeader("Sound", ImGuiTreeNodeFlags_DefaultOpen);
+    tip("The model's sounds; their volume follows its kinetic energy and its distance to the camera. Click to fold.");
+    if (sound_open) {
         const auto sounds = env_.assets.list(ANI_ASSET_SOUND);
         if (asset_combo("Collision", m.collision_sound, sounds, mixed(ModelField::CollisionSound)))
             done = ModelField::CollisionSound;
+        tip("Played once by the model in each of its collisions (the sounds/ folders on the asset path)");
         if (asset_combo("Moving", m.moving_sound, sounds, mixed(ModelField::MovingSound))) done = ModelField::MovingSound;
+        tip("Looped while the model moves");
     }
     ImGui::PopItemWidth();
     ImGui::End();
@@ -781,7 +877,9 @@ void Panels::dialogs(EditorSession &session) {
         ImGui::TextUnformatted(error_text_.c_str());
         ImGui::PopTextWrapPos();
         // Enter and Esc both close it: there is nothing to decide, only to read.
-        if (ImGui::Button("OK") || enter_pressed() || escape_pressed()) ImGui::CloseCurrentPopup();
+        const bool ok = ImGui::Button("OK");
+        tip("Close this message (Enter or Esc)");
+        if (ok || enter_pressed() || escape_pressed()) ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
     // After any other dialog (an error opening the file): one modal at a time, and not in the
@@ -796,12 +894,16 @@ void Panels::dialogs(EditorSession &session) {
         ImGui::TextDisabled("%s", recover_detail_.c_str()); // its lines as they are: a path stays whole
         // Enter recovers: it loses nothing (the work opens as unsaved changes, the file on disk
         // is untouched until exported). Esc discards, setting the autosave aside (discarded.ani).
-        if (ImGui::Button("Recover") || enter_pressed()) {
+        const bool recover = ImGui::Button("Recover");
+        tip("Open the autosaved work as unsaved changes (Enter); the file on disk stays as it is until saved");
+        if (recover || enter_pressed()) {
             recover_answer_ = true;
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();
-        if (ImGui::Button("Discard") || escape_pressed()) {
+        const bool discard = ImGui::Button("Discard");
+        tip("Set the autosave aside (kept as discarded.ani in the recovery folder) and go on (Esc)");
+        if (discard || escape_pressed()) {
             recover_answer_ = false;
             ImGui::CloseCurrentPopup();
         }
@@ -813,20 +915,26 @@ void Panels::dialogs(EditorSession &session) {
     }
     if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::TextUnformatted("The animation has changes that were not exported.");
-        if (ImGui::Button("Export and quit")) {
+        const bool export_quit = ImGui::Button("Export and quit");
+        tip("Save the animation as x does, then quit (stays open if saving fails)");
+        if (export_quit) {
             const auto r = session.export_animation();
             say(r.message, !r.ok);
             quit_confirmed_ = r.ok;
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();
-        if (ImGui::Button("Quit without exporting")) {
+        const bool quit = ImGui::Button("Quit without exporting");
+        tip("Quit and lose the changes since the last save");
+        if (quit) {
             quit_confirmed_ = true;
             ImGui::CloseCurrentPopup();
         }
         ImGui::SameLine();
         // Esc cancels; Enter does nothing here: both other answers lose or overwrite work.
-        if (ImGui::Button("Cancel") || escape_pressed()) ImGui::CloseCurrentPopup();
+        const bool cancel = ImGui::Button("Cancel");
+        tip("Go back to the editor (Esc)");
+        if (cancel || escape_pressed()) ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
 }
