@@ -3,6 +3,7 @@
 #include "audio/live_player.hpp"
 #include "editor/editor_panels.hpp"
 #include "editor/editor_session.hpp"
+#include "editor/help.hpp"
 #include "editor/recovery.hpp"
 #include "editor/screen_state.hpp"
 #include "editor/status_line.hpp"
@@ -437,6 +438,7 @@ int run_editor(const EditorOptions &options) {
                     // is answered first), `q` must not quit and SPACE not play behind it.
                     if (io.WantCaptureKeyboard || io.WantTextInput || panels.dialog_open()) break;
                     const bool ctrl = (e.mods & GLFW_MOD_CONTROL) != 0, shift = (e.mods & GLFW_MOD_SHIFT) != 0;
+                    const bool alt = (e.mods & GLFW_MOD_ALT) != 0;
                     if (e.code == GLFW_KEY_SPACE) session.toggle_play(glfwGetTime());
                     else if ((e.code == GLFW_KEY_U && !ctrl) || (e.code == GLFW_KEY_Z && ctrl && !shift)) {
                         panels.undo(session);
@@ -448,6 +450,27 @@ int run_editor(const EditorOptions &options) {
                         panels.say(r.message, !r.ok);
                     } else if (e.code == GLFW_KEY_Q && !ctrl) {
                         window_state.close_requested = true;
+                    } else if (e.code == GLFW_KEY_I && !ctrl) {
+                        // Blender's Insert Keyframe (ALT+I: Delete Keyframe), Maya's Set Key.
+                        bool ok = false;
+                        const std::string said = alt ? session.delete_keys_here(&ok) : session.insert_keys(&ok);
+                        panels.say(said, !ok);
+                    } else if (e.code == GLFW_KEY_A && !ctrl && !shift) {
+                        if (alt) session.select_none();
+                        else session.select_all();
+                        const std::size_t n = session.selection().size();
+                        panels.say(alt ? "selected none" : "selected " + std::to_string(n) + (n == 1 ? " model" : " models"));
+                    } else if (e.code == GLFW_KEY_H && !ctrl && !shift) {
+                        const int n = alt ? session.show_all() : session.hide_selected();
+                        panels.say(alt ? (n > 0 ? "every model shown" : "no model was hidden")
+                                       : (n > 0 ? "hid " + std::to_string(n) + " model" + (n == 1 ? "" : "s") + " (ALT+H shows them)"
+                                                : "nothing selected to hide"));
+                    } else if (!ctrl && !alt && !shift &&
+                               (e.code == GLFW_KEY_G || e.code == GLFW_KEY_S || e.code == GLFW_KEY_K ||
+                                e.code == GLFW_KEY_N || e.code == GLFW_KEY_TAB)) {
+                        // Keys other programs bind: where to look here instead (help.cpp).
+                        const std::string key = e.code == GLFW_KEY_TAB ? "TAB" : std::string(1, static_cast<char>('a' + (e.code - GLFW_KEY_A)));
+                        if (const auto hint = familiar_key_hint(key)) panels.say(*hint);
                     } else if (e.code == GLFW_KEY_F1) {
                         panels.toggle_help();
                     } else if (e.code == GLFW_KEY_ESCAPE && panels.help_open()) {
@@ -466,13 +489,17 @@ int run_editor(const EditorOptions &options) {
                         session.set_paths_on(!session.paths_on());
                     } else if ((e.code == GLFW_KEY_C && !ctrl) || e.code == GLFW_KEY_KP_0) {
                         session.set_free_view(!session.free_view());
-                    } else if (e.code == GLFW_KEY_HOME || (e.code == GLFW_KEY_F && !ctrl)) {
-                        const bool selected = e.code == GLFW_KEY_F;
+                    } else if (e.code == GLFW_KEY_HOME || (e.code == GLFW_KEY_F && !ctrl) || e.code == GLFW_KEY_KP_DECIMAL) {
+                        const bool selected = e.code != GLFW_KEY_HOME;
                         const double aspect = view.height > 0 ? view.width / view.height : 1.0;
                         if (!session.frame_models(selected, aspect))
                             panels.say(selected ? "nothing selected to frame" : "no model to frame");
                     } else if (e.code == GLFW_KEY_F2) {
                         if (session.last_selected() >= 0) panels.start_rename(session.last_selected());
+                    } else if ((e.code == GLFW_KEY_LEFT || e.code == GLFW_KEY_RIGHT) && shift) {
+                        // Blender's jump to the start or the end.
+                        session.pause();
+                        session.set_time_ms(e.code == GLFW_KEY_LEFT ? 0 : session.document().settings().max_time_ms);
                     } else if (e.code == GLFW_KEY_LEFT || e.code == GLFW_KEY_RIGHT) {
                         session.step_frames(e.code == GLFW_KEY_RIGHT ? 1 : -1);
                     } else if (e.code == GLFW_KEY_UP || e.code == GLFW_KEY_DOWN) {

@@ -185,6 +185,20 @@ class EditorSession {
     // "animator - drop.ani *": the file, and a mark for unsaved changes.
     std::string title() const;
 
+    // Keys familiar from Blender and Maya (docs/manual.md, Keys), each returning what the status
+    // line says. I (Blender's Insert Keyframe, Maya's S): keys the selected models at the
+    // current time where they are now (keyed, interpolated or simulated; the bake goes on to
+    // that time first), or the camera when nothing is selected: one undoable
+    // edit. ALT+I: deletes the selected models' (or the camera's) keys at the current time.
+    std::string insert_keys(bool *ok = nullptr);
+    std::string delete_keys_here(bool *ok = nullptr);
+    // A (select all shown models), ALT+A (select none); H (hide the selected), ALT+H (show all).
+    // Views, not edits.
+    void select_all();
+    void select_none() { click(-1, false); }
+    int hide_selected();
+    int show_all();
+
   private:
     struct Drag {
         DragButton button;

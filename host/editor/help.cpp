@@ -14,13 +14,18 @@ const std::vector<HelpSection> &help_sections() {
              {"Left, Right", "one frame back or on (30 frames a second); pauses playback"},
              {"Up, Down", "the previous or next keyframe; pauses playback"},
              {"`c`, Numpad 0", "free view on or off"},
-             {"Home, F", "frame all, frame the selection (in the free view)"},
+             {"Home, F, Numpad .", "frame all, frame the selection (in the free view)"},
              {"`p`", "motion paths of the selected models on or off"},
              {"`u`, CTRL+Z", "undo the last transformation or change at this keyframe"},
              {"`r`, CTRL+SHIFT+Z, CTRL+Y", "redo"},
              {"`x`", "export to the open .ani (or animations/new.ani)"},
              {"DELETE", "delete the keys selected in the Timeline (not those at t = 0)"},
              {"CTRL+C, CTRL+V", "copy the keys selected in the Timeline; paste them at the playhead"},
+             {"`i`", "key the selected models where they are now, at the current time (nothing selected: the camera)"},
+             {"ALT+I", "delete the selected models' keys (or the camera's) at the current time"},
+             {"`a`, ALT+A", "select every shown model; select none"},
+             {"`h`, ALT+H", "hide the selected models from the view; show every model"},
+             {"SHIFT+Left, SHIFT+Right", "jump to the start or the end; pauses playback"},
              {"F1", "this overlay (F1 or ESC closes it)"},
              {"F2", "rename the last selected model in the Outliner"},
              {"`q`", "quit; with unsaved changes it asks first"},
@@ -45,6 +50,14 @@ const std::vector<HelpSection> &help_sections() {
              {"F", "frame the selected models"},
              {"`c`, Numpad 0, the *Free view* checkbox", "switch between the free view and the animated camera"},
          }},
+        {"Coming from Blender or Maya (these keys say where to look)",
+         {
+             {"`g`", "Blender's grab: choose Translate and drag with the right button"},
+             {"`s`", "Blender scales, Maya sets a key: Scale mode scales here, and `i` keys"},
+             {"`k`", "Blender's keying sets: `i` keys the selected models"},
+             {"TAB", "Blender's Edit Mode: meshes are not edited here; a scene file or a mesh file defines them"},
+             {"`n`", "Blender's sidebar: the Model Interface (right) shows the selected model"},
+         }},
         {"Timeline (the dope sheet along the bottom)",
          {
              {"click or drag on the ruler", "move the playhead there, to the nearest frame (pauses playback; not an edit)"},
@@ -62,6 +75,24 @@ const std::vector<HelpSection> &help_sections() {
          }},
     };
     return sections;
+}
+
+std::optional<std::string> familiar_key_hint(const std::string &key) {
+    for (const HelpSection &section : help_sections()) {
+        if (section.title.rfind("Coming from Blender or Maya", 0) != 0) continue;
+        for (const HelpRow &row : section.rows) {
+            std::string keys;
+            for (char c : row.keys)
+                if (c != '`') keys += c;
+            if (keys == key) {
+                std::string action;
+                for (char c : row.action)
+                    if (c != '`') action += c;
+                return keys + ": " + action;
+            }
+        }
+    }
+    return std::nullopt;
 }
 
 namespace {

@@ -498,7 +498,9 @@ class Editor:
             self.xdo('keydown', k)
             time.sleep(0.08)
             self.xdo('keyup', k)
-            self.sent += 2
+            # A press and a release of each key, modifiers included ('ctrl+z' is four events),
+            # so settle() waits for all of them.
+            self.sent += 2 * len(k.split('+'))
             time.sleep(0.1)
         if settle:
             self.settle()

@@ -72,3 +72,20 @@ TEST_CASE("the F1 overlay lists exactly the manual's Timeline controls", "[help]
     CHECK(manual.size() >= 10);
     CHECK(overlay_keys("Timeline") == manual);
 }
+
+TEST_CASE("the keys other programs bind say what the manual says they do here", "[help]") {
+    const auto manual = first_cells("Coming from Blender or Maya");
+    CHECK(manual.size() >= 5);
+    CHECK(overlay_keys("Coming from Blender or Maya") == manual);
+    // Each of them has a hint for the status line, starting with the key; other keys have none.
+    for (const std::string &cell : manual) {
+        std::string key;
+        for (char c : cell)
+            if (c != '`') key += c;
+        const auto hint = familiar_key_hint(key);
+        REQUIRE(hint);
+        CHECK(hint->rfind(key + ": ", 0) == 0);
+    }
+    CHECK_FALSE(familiar_key_hint("i"));
+    CHECK_FALSE(familiar_key_hint("q"));
+}
