@@ -1,5 +1,7 @@
 #include "editor/file_menu.hpp"
 
+#include "editor/recovery.hpp" // home_path
+
 #include <imgui.h>
 
 namespace fs = std::filesystem;
@@ -119,7 +121,7 @@ void FileMenu::load(EditorSession &session, const Load &l) {
         say_("new animation from " + l.path.string() + " (Save asks where to write it)", false);
         return;
     }
-    say_("opened " + l.path.string(), false);
+    say_("opened " + l.path.filename().string(), false); // its folder is in Open Recent
     recent_.add(l.path);
     store_recent();
     opened_ = l.path;
@@ -151,7 +153,10 @@ void FileMenu::menu(EditorSession &session) {
     tooltip("A new, untitled animation from a .lua scene (Save then asks where to write it)");
     if (ImGui::MenuItem("Open...", "CTRL+O")) open_file(session);
     tooltip("Open an .ani animation or a .lua scene");
-    if (ImGui::BeginMenu("Open Recent")) {
+    const bool recent_open = ImGui::BeginMenu("Open Recent");
+    // Not over the submenu it opens.
+    if (!recent_open) tooltip("The last 10 files opened or saved, newest first");
+    if (recent_open) {
         const auto paths = recent_.paths(); // a copy: choosing one changes the list
         if (paths.empty()) ImGui::TextDisabled("(none yet)");
         for (size_t i = 0; i < paths.size(); ++i) {
@@ -159,7 +164,9 @@ void FileMenu::menu(EditorSession &session) {
             const bool there = fs::is_regular_file(paths[i], ec);
             ImGui::PushID(static_cast<int>(i));
             // A file that is gone stays listed, greyed out, until Clear Recent.
-            if (ImGui::MenuItem(paths[i].filename().string().c_str(), nullptr, false, there))
+            // The name, and its folder dimmed at the right (two ball.ani in two folders differ).
+            const std::string folder = home_path(paths[i].parent_path());
+            if (ImGui::MenuItem(paths[i].filename().string().c_str(), folder.c_str(), false, there))
                 open_path(session, paths[i]);
             if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
                 ImGui::SetTooltip(there ? "%s" : "%s\nno longer exists", paths[i].string().c_str());
@@ -174,7 +181,6 @@ void FileMenu::menu(EditorSession &session) {
         tooltip("Forget the files listed here (the files themselves stay)");
         ImGui::EndMenu();
     }
-    tooltip("The last 10 files opened or saved, newest first");
     ImGui::Separator();
     if (ImGui::MenuItem("Save", "CTRL+S")) save(session);
     tooltip(session.saves_to_path() ? "Write the animation to the open .ani (as x does)"
