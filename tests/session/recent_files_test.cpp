@@ -5,6 +5,7 @@
 #include "editor/recent_files.hpp"
 
 #include "editor/editor_session.hpp"
+#include "editor/recovery.hpp"
 #include "io/document_io.hpp"
 #include "support.hpp"
 
@@ -165,4 +166,35 @@ TEST_CASE("Save As writes the .ani and makes it the session's file; New opens a 
     CHECK(error.find("broken.lua") != std::string::npos);
     CHECK(s.path() == dir / "mine.ani");
     CHECK(s.document().settings().gravity == 4.0);
+}
+
+TEST_CASE("autosave follows Save As: the untitled recovery file goes, the next one is the new file's", "[recent][recovery]") {
+    const fs::path dir = fresh_dir("session_save_as_autosave");
+    const fs::path folder = dir / "recovery";
+    Environment env;
+    EditorSession s(env);
+    Autosaver autosaver(env.plugins, folder, 1.0);
+    std::string error;
+    REQUIRE(s.new_from_scene(source_dir() / "assets" / "scenes" / "simple.lua", error));
+    Settings settings = s.document().settings();
+    settings.gravity = 5.0;
+    REQUIRE(s.set_settings(settings, &error));
+    CHECK(autosaver.tick(s, 0.0).empty());
+    CHECK(autosaver.tick(s, 1.5) == "autosaved");
+    const fs::path untitled = recovery_file(folder, {});
+    CHECK(untitled.filename() == "untitled.ani");
+    REQUIRE(fs::exists(untitled));
+
+    REQUIRE(s.save_as(dir / "mine.ani").ok);
+    autosaver.tick(s, 2.0);
+    CHECK_FALSE(fs::exists(untitled)); // the work is in mine.ani now
+
+    settings.gravity = 6.0;
+    REQUIRE(s.set_settings(settings, &error));
+    CHECK(autosaver.tick(s, 3.0).empty());
+    CHECK(autosaver.tick(s, 4.5) == "autosaved");
+    const fs::path mine = recovery_file(folder, dir / "mine.ani");
+    REQUIRE(fs::exists(mine));
+    CHECK(open_document(env.plugins, mine).document.settings().gravity == 6.0);
+    CHECK(open_document(env.plugins, dir / "mine.ani").document.settings().gravity == 5.0);
 }
