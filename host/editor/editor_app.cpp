@@ -339,6 +339,7 @@ int run_editor(const EditorOptions &options) {
         } else {
             for (const std::string &w : session.warnings()) panels.say("warning: " + w, true);
             panels.say("opened " + file.string());
+            if (!options.file.empty()) panels.files().remember(file); // Open Recent (not the demo)
         }
         // Autosave (recovery.hpp): work left unsaved by a crash or a kill is offered back.
         std::string autosave_warning;
@@ -439,7 +440,14 @@ int run_editor(const EditorOptions &options) {
                     if (io.WantCaptureKeyboard || io.WantTextInput || panels.dialog_open()) break;
                     const bool ctrl = (e.mods & GLFW_MOD_CONTROL) != 0, shift = (e.mods & GLFW_MOD_SHIFT) != 0;
                     const bool alt = (e.mods & GLFW_MOD_ALT) != 0;
-                    if (e.code == GLFW_KEY_SPACE) session.toggle_play(glfwGetTime());
+                    if (ctrl && (e.code == GLFW_KEY_N || e.code == GLFW_KEY_O || e.code == GLFW_KEY_S || e.code == GLFW_KEY_Q)) {
+                        // The File menu's keys (file_menu.hpp).
+                        if (e.code == GLFW_KEY_N) panels.files().new_file(session);
+                        else if (e.code == GLFW_KEY_O) panels.files().open_file(session);
+                        else if (e.code == GLFW_KEY_S && shift) panels.files().save_as(session);
+                        else if (e.code == GLFW_KEY_S) panels.files().save(session);
+                        else window_state.close_requested = true;
+                    } else if (e.code == GLFW_KEY_SPACE) session.toggle_play(glfwGetTime());
                     else if ((e.code == GLFW_KEY_U && !ctrl) || (e.code == GLFW_KEY_Z && ctrl && !shift)) {
                         panels.undo(session);
                     } else if ((e.code == GLFW_KEY_R && !ctrl) || (e.code == GLFW_KEY_Z && ctrl && shift) ||
@@ -514,6 +522,7 @@ int run_editor(const EditorOptions &options) {
             glfwGetCursorPos(window, &cx, &cy);
             pointer.move(session, glm::dvec2(cx, cy));
 
+            if (panels.files().take_quit_request()) window_state.close_requested = true;
             if (window_state.close_requested) {
                 window_state.close_requested = false;
                 if (session.dirty()) panels.ask_to_quit();
@@ -525,6 +534,12 @@ int run_editor(const EditorOptions &options) {
             view = view_rect(win_w, win_h, panels.places());
             // What this frame's panels show; the work below (playback, the bake) may change it.
             const ScreenState shown = screen_state(session, panels.message());
+            // A document opened from the File menu: its autosave, if any, is offered as at a start.
+            if (const auto opened = panels.files().take_opened())
+                if (const auto offer = autosaver.offer(*opened))
+                    panels.ask_to_recover(local_time_label(offer->written),
+                                          "Recover opens it as unsaved changes to " + opened->filename().string() +
+                                              "; Discard sets it aside.\nAutosaved in " + home_path(offer->file));
             if (const auto recover = panels.take_recover_answer()) {
                 std::string said;
                 const bool ok = *recover ? autosaver.recover(session, said) : autosaver.discard(said);

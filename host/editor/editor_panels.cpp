@@ -202,11 +202,23 @@ void Panels::paste_keys(EditorSession &session) { say(dope_sheet_.paste(session)
 void Panels::animator_panel(EditorSession &session, float height, double wall) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(340, std::min(height - 20.0f, 760.0f)), ImGuiCond_FirstUseEver);
-    const bool open = ImGui::Begin("Animator Interface");
+    // A menu bar where the title bar was: both are a line of text and the frame padding tall,
+    // so every widget below stays where it was. The panel's name goes to the bar's right end.
+    const bool open = ImGui::Begin("Animator Interface", nullptr, ImGuiWindowFlags_MenuBar | ImGuiWindowFlags_NoTitleBar);
     places_.push_back(current_place());
     if (!open) {
         ImGui::End();
         return;
+    }
+    if (ImGui::BeginMenuBar()) {
+        files_.menu(session);
+        const char *name = "Animator Interface";
+        const float right = ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize(name).x;
+        if (right > ImGui::GetCursorPosX() + 8.0f) {
+            ImGui::SetCursorPosX(right);
+            ImGui::TextDisabled("%s", name);
+        }
+        ImGui::EndMenuBar();
     }
     const Document &doc = session.document();
     Settings &s = *settings_draft_;
@@ -937,6 +949,7 @@ void Panels::dialogs(EditorSession &session) {
         if (cancel || escape_pressed()) ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
+    files_.dialogs(session);
 }
 
 } // namespace animator

@@ -7,6 +7,7 @@
 
 #include "editor/dope_sheet.hpp"
 #include "editor/editor_session.hpp"
+#include "editor/file_menu.hpp"
 #include "editor/view_layout.hpp"
 
 #include <functional>
@@ -19,7 +20,9 @@ namespace animator {
 
 class Panels {
   public:
-    explicit Panels(Environment &env) : env_(env) {}
+    explicit Panels(Environment &env)
+        : env_(env), files_([this](const std::string &m, bool error) { say(m, error); },
+                            [this](const std::string &title, const std::string &m) { show_error(title, m); }) {}
 
     // Draws the Animator Interface (left), the Timeline (along the bottom, dope_sheet.hpp)
     // and, with a model selected, the Model Interface (right), in a window `width` x `height`
@@ -53,6 +56,8 @@ class Panels {
     // The Outliner's name field for model `model` (a double-click on its row, or F2).
     void start_rename(int model);
 
+    // The File menu (the Animator Interface's menu bar) and its keys.
+    FileMenu &files() { return files_; }
     // Set by the window when the user asks to quit with unsaved changes; the panel asks.
     void ask_to_quit() { quit_asked_ = true; }
     // True once the user has confirmed quitting (or exported first).
@@ -100,6 +105,7 @@ class Panels {
     float placed_at_width_ = 0.0f; // the window width the Model Interface was placed for
     float placed_at_bottom_ = 0.0f; // and the bottom it was kept above (the Timeline's top)
     DopeSheet dope_sheet_;
+    FileMenu files_;
     // The Outliner: the model being renamed (-1: none), its field, and whether the field has
     // been active yet (it takes the keyboard the frame after it appears).
     int renaming_ = -1;

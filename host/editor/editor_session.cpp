@@ -571,6 +571,32 @@ EditorSession::ExportResult EditorSession::export_animation() {
     return r;
 }
 
+EditorSession::ExportResult EditorSession::save_as(const fs::path &target) {
+    ExportResult r;
+    r.path = target;
+    try {
+        save_document(env_.plugins, doc_, target); // a temporary file beside it, renamed over it
+    } catch (const std::exception &e) {
+        r.message = std::string("save failed (a file there is left as it was): ") + e.what();
+        return r;
+    }
+    r.ok = true;
+    r.message = "saved as " + target.string();
+    path_ = target;
+    export_to_path_ = true;
+    saved_ = doc_;
+    dirty_ = false;
+    return r;
+}
+
+bool EditorSession::new_from_scene(const fs::path &scene, std::string &error) {
+    // Read as the scene (its meshes found beside it), then a document with no file of its own.
+    if (!load(scene, scene, error)) return false;
+    path_.clear();
+    export_to_path_ = false;
+    return true;
+}
+
 std::string EditorSession::title() const {
     const std::string name = path_.empty() ? "untitled" : path_.filename().string();
     return "animator - " + name + (dirty_ ? " *" : "");

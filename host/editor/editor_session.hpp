@@ -181,6 +181,15 @@ class EditorSession {
     // over a file the user did not open (a fresh name is chosen and said). A failed save leaves
     // the old file and says why.
     ExportResult export_animation();
+    // The File menu (file_menu.hpp). An .ani this session writes to (opened or saved as): Save
+    // (CTRL+S) exports there; without one (a .lua scene, New) Save asks where, as Save As.
+    bool saves_to_path() const { return export_to_path_; }
+    // Save As: writes the animation to the .ani `target` (atomically, as export does); from
+    // then on the document is that file (title, Save, autosave). A failure changes nothing.
+    ExportResult save_as(const std::filesystem::path &target);
+    // New: the .lua scene `scene` as a new, untitled animation (Save asks where). On failure
+    // the current document stays, as open().
+    bool new_from_scene(const std::filesystem::path &scene, std::string &error);
     bool dirty() const { return dirty_; }
     // "animator - drop.ani *": the file, and a mark for unsaved changes.
     std::string title() const;
