@@ -116,7 +116,8 @@ def case_recovery(c):
         e.xdo('mousemove', '--window', e.window, start[0] - 20 * i, start[1] + 10 * i)
         time.sleep(0.05)
     time.sleep(0.5)
-    _, _, x, y, _ = ball_on_screen(e, 'mid-drag')  # the drag under way: the ball follows it
+    # The drag under way: the ball follows it (the pointer stays where the drag has it).
+    _, _, x, y, _ = ball_on_screen(e, 'mid-drag', img=e.screenshot('mid-drag'))
     check(x < x_keyed - 30 and y > y_keyed + 15, 'the second drag does not show under way: the ball is at '
           '(%.0f, %.0f), as before it (%.0f, %.0f)' % (x, y, x_keyed, y_keyed))
     sigkill(e)

@@ -675,7 +675,10 @@ MESSAGE_BOX = (18, 518, 342, 540)      # the status message, under the status li
 
 def ball_on_screen(e, name, img=None):
     """Screenshot (or img, one taken earlier); the test ball's pixels (whatever is not
-    background in the 3D view)."""
+    background in the 3D view). The pointer is parked first: resting on a control, it would
+    show that control's tooltip, which may reach over the view."""
+    if img is None:
+        e.mouse_away()
     img = img or e.screenshot(name)
     n, x, y, mean = img.blob(lambda px: not is_background(px), view_box(img))
     SHOWN_CX[0] = view_centre(img)
