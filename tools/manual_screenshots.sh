@@ -140,4 +140,20 @@ start_editor drop.ani HOME="$work/home" XDG_STATE_HOME=
 grep -q '^animator: Recover unsaved work' "$work/log" || { echo "no recovery offered:" >&2; cat "$work/log" >&2; exit 1; }
 xdotool mousemove --window "$win" 700 650
 shot recovery-dialog 1.0
+# The File menu with Open Recent, and the file browser (docs/manual.md, "Files").
+kill "$editor" 2>/dev/null || true; wait "$editor" 2>/dev/null || true; editor=""
+rm -rf "$work/state"
+mkdir -p "$work/files/animations"
+cp assets/scenes/simple.lua assets/scenes/puppet.lua "$work/files/"
+cp assets/animations/drop.ani "$work/files/animations/"
+start_editor files/puppet.lua
+start_editor files/animations/drop.ani   # Open Recent: drop.ani, then puppet.lua
+click 24 19                    # File
+xdotool mousemove --window "$win" 60 78   # Open Recent: its submenu opens
+shot files-menu 1.0
+click 800 300                  # closes the menu
+xdotool key ctrl+o; sleep 0.5  # Open: the browser, in drop.ani's folder
+xdotool key BackSpace; sleep 0.3   # up to the folder of scenes
+xdotool key Down; sleep 0.3; xdotool key Down; sleep 0.3
+shot files-browser
 echo "wrote the screenshots to $out"

@@ -9,6 +9,7 @@ BROWSER_TITLE = (640, 159)          # a point of the browser's title bar (right 
 FILE_MENU = (24, 19)                # "File" in the Animator Interface's menu bar
 FILE_MENU_ITEM_STEP = 17            # items in the open menu, from the first one's middle
 FILE_MENU_OPEN_RECENT = (60, 78)    # the third item: New... (44), Open... (61), Open Recent
+FILE_MENU_QUIT = (40, 137)          # the last item, under Save (99) and Save As... (116)
 RECENT_ITEM0 = (250, 78)            # the submenu's first file, opened right of the menu
 # The questions' buttons, from the dialog's left edge and the top of its title bar.
 REPLACE_BUTTON = (35, 69)
@@ -114,7 +115,10 @@ def case_files_save(c):
     check(parse_ani(c.path('ball.ani'))['settings']['cel_shading'] == ['true'], 'CTRL+S did not write the change')
     check(sorted(os.listdir(c.work)) == ['ball.ani'], 'other files written: %s' % os.listdir(c.work))
     check_browser(e, 'saved', shown=False)
-    e.quit()
+    # File > Quit, with nothing unsaved: quits at once.
+    e.click(*FILE_MENU)
+    e.click(*FILE_MENU_QUIT, settle=False)
+    e.wait_exit()
 
 
 def case_files_save_lua(c):
@@ -187,7 +191,8 @@ def case_files_save_as_replace(c):
 
 def case_files_recent(c):
     """Open Recent lists the files opened, newest first: after opening red.ani, its second
-    item is ball.ani, and clicking it opens ball.ani again. Kept across runs."""
+    item is ball.ani, and clicking it opens ball.ani again; over unsaved changes it asks, and
+    Save writes them first. Kept across runs."""
     c.write('ball.ani', BALL_ANI)
     c.write('red.ani', RED_ANI)
     e = c.start('ball.ani')
@@ -203,6 +208,15 @@ def case_files_recent(c):
     _, _, _, _, mean = ball_on_screen(e, 'reopened')
     check(mean[2] > mean[0] + 40, 'the reopened ball is not blue: %s' % (mean,))
     check(recent_list(c) == [c.path('ball.ani'), c.path('red.ani')], 'the recent list is %s' % recent_list(c))
+    # Over unsaved changes, Open Recent asks; Save writes ball.ani, then red.ani opens.
+    e.click(*CEL_CHECKBOX)
+    e.click(*FILE_MENU)
+    e.click(*FILE_MENU_OPEN_RECENT)
+    e.click(RECENT_ITEM0[0], RECENT_ITEM0[1] + FILE_MENU_ITEM_STEP)  # red.ani, second now
+    img = e.screenshot('save-changes')
+    click_in_question(e, img, SAVE_CHANGES_SAVE)
+    e.wait_for(lambda: e.title() == 'animator - red.ani', 'red.ani to open after Save')
+    check(parse_ani(c.path('ball.ani'))['settings']['cel_shading'] == ['true'], 'Save did not write ball.ani first')
     e.quit()
     # The next run lists them too: its first item (ball.ani, opened at the start) then red.ani.
     e = c.start('ball.ani', name='next-run')
