@@ -38,6 +38,7 @@ struct RenderCommandOptions {
     std::vector<std::string> params;
     double from = 0.0, to = -1.0, fps = 30.0;
     int compression = 5;
+    bool progress = false;
 };
 
 // "WxH" into width and height; "" when valid, else what is wrong (CLI11's check convention).
@@ -194,6 +195,9 @@ int run_render(const RenderCommandOptions &o) {
             framebuffer.read_rgb(writer.next_buffer());
             writer.write(k);
             bar(static_cast<double>(k + 1) / count);
+            // For a program that runs this one (the editor's Render): one line a frame handed to
+            // the writer, flushed at once so the reader sees it then.
+            if (o.progress) std::cout << "frame " << k + 1 << " of " << count << std::endl;
         }
         writer.finish();
         std::cout << "wrote " << count << " frame" << (count == 1 ? "" : "s") << " of " << width
@@ -235,6 +239,9 @@ void add_render_command(CLI::App &app, std::function<int()> &run) {
     cmd->add_option("--video", o->video,
                     "also put the frames and the soundtrack together into this video file "
                     "(PATH.mp4) with ffmpeg, which must be installed");
+    cmd->add_flag("--progress", o->progress,
+                  "print a line \"frame K of N\" on stdout as each frame is drawn, for a program "
+                  "that shows the progress (the editor's Render)");
     cmd->callback([&run, o] { run = [o] { return run_render(*o); }; });
 }
 
