@@ -370,6 +370,7 @@ int run_editor(const EditorOptions &options) {
         while (!quitting) {
             const bool busy = session.playing() || session.baking() || pointer.down() || frames_to_draw > 0;
             if (busy || !window_state.imgui_keys.empty()) glfwPollEvents();
+            else if (panels.output_busy()) glfwWaitEventsTimeout(1.0 / 30.0); // a render's progress
             else if (glfwGetTime() < settle_until) glfwWaitEventsTimeout(1.0 / 60.0);
             else if (frame_rate.text() != "idle") {
                 // One last frame, so the status line says "idle" rather than the rate of the
@@ -448,6 +449,10 @@ int run_editor(const EditorOptions &options) {
                         panels.say(r.message, !r.ok);
                     } else if (e.code == GLFW_KEY_Q && !ctrl) {
                         window_state.close_requested = true;
+                    } else if (e.code == GLFW_KEY_F12 && ctrl) {
+                        panels.open_render();
+                    } else if (e.code == GLFW_KEY_E && ctrl && shift) {
+                        panels.open_export();
                     } else if (e.code == GLFW_KEY_F1) {
                         panels.toggle_help();
                     } else if (e.code == GLFW_KEY_ESCAPE && panels.help_open()) {

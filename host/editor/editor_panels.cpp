@@ -165,6 +165,7 @@ void Panels::draw(EditorSession &session, float width, float height, double wall
     const float above = bottom.collapsed ? height : static_cast<float>(bottom.rect.y);
     if (session.last_selected() >= 0) model_panel(session, width, height, above);
     dialogs(session);
+    output_.draw(session);
     draw_help_overlay(&help_open_, width, height);
     // After the dialogs, so the frame a dialog opens in already counts.
     dialog_open_ = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);

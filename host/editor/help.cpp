@@ -19,6 +19,8 @@ const std::vector<HelpSection> &help_sections() {
              {"`u`, CTRL+Z", "undo the last transformation or change at this keyframe"},
              {"`r`, CTRL+SHIFT+Z, CTRL+Y", "redo"},
              {"`x`", "export to the open .ani (or animations/new.ani)"},
+             {"CTRL+F12", "render the animation to PNG frames or a video"},
+             {"CTRL+SHIFT+E", "export the trace (CSV) and the soundtrack (WAV)"},
              {"DELETE", "delete the keys selected in the Timeline (not those at t = 0)"},
              {"CTRL+C, CTRL+V", "copy the keys selected in the Timeline; paste them at the playhead"},
              {"F1", "this overlay (F1 or ESC closes it)"},
