@@ -148,3 +148,36 @@ def case_export_trace(c):
     check(head[:4] == b'RIFF' and head[8:12] == b'WAVE', 'the soundtrack is not a WAV file')
     e.settle()
     e.quit()
+
+
+VIDEO_RADIO = (507, 300)          # the Render dialog's "Video (.mp4)"
+RENDER_BUTTON_VIDEO = (406, 478)  # its Render button once Video adds the Video file row
+
+
+def case_render_video(c):
+    """With ffmpeg installed, Video (.mp4) renders the frames and puts them together with the
+    soundtrack into drop.mp4 beside the animation: ffprobe counts as many frames as the PNGs.
+    After it the editor sleeps again: no CPU used while nothing happens."""
+    check(shutil.which('ffmpeg') and shutil.which('ffprobe'), 'this case needs ffmpeg and ffprobe (apt-get install ffmpeg)')
+    short_drop(c, 'drop.ani', 1000)
+    e = c.start('drop.ani')
+    open_render(e)
+    e.click(*VIDEO_RADIO)
+    e.screenshot('render-video-dialog')
+    e.click(*RENDER_BUTTON_VIDEO, settle=False)
+    e.wait_log(RENDER_STARTED, 'the render to start')
+    done = e.wait_log(RENDER_FINISHED, 'the render to finish')
+    check(done.group(2) == 'drop_render/, and the video drop.mp4', 'the editor says %r' % done.group(2))
+    check(len(pngs(c.path('drop_render'))) == 31, 'not 31 frames beside the video')
+    r = subprocess.run(['ffprobe', '-v', 'error', '-count_frames', '-select_streams', 'v:0', '-show_entries',
+                        'stream=nb_read_frames,width,height', '-of', 'csv=p=0', c.path('drop.mp4')],
+                       capture_output=True, text=True, timeout=120)
+    check(r.returncode == 0, 'ffprobe cannot read drop.mp4: %s' % r.stderr)
+    check(r.stdout.strip() == '1280,720,31', 'drop.mp4 is (width, height, frames) %r, not 1280,720,31' % r.stdout.strip())
+    e.settle()
+    a = e.cpu_seconds()
+    time.sleep(2.0)
+    used = e.cpu_seconds() - a
+    c.log('after the render: %.3f s of CPU in 2 s' % used)
+    check(used < 0.05, 'after the render the editor used %.3f s of CPU in 2 s of doing nothing' % used)
+    e.quit()

@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <chrono>
 #include <thread>
 
@@ -223,4 +224,36 @@ TEST_CASE("a program that cannot start is said at once") {
     CHECK_FALSE(job.start("/nonexistent/animator", {"render"}, &error));
     CHECK(error.find("/nonexistent/animator") != std::string::npos);
     CHECK(job.state() == OutputJob::State::Idle);
+}
+
+TEST_CASE("a render job with a video has ffmpeg put the frames together") {
+    if (!find_ffmpeg()) {
+        WARN("ffmpeg is not installed: the video render is not tested (the editor greys Video out)");
+        return;
+    }
+    Environment env;
+    const fs::path dir = fresh_dir("output_job_video");
+    const fs::path file = write_ball(dir, 2000);
+    const Document doc = open_document(env.plugins, file).document;
+    JobSnapshot snapshot(env.plugins, env.assets, doc, file);
+    RenderRequest r;
+    r.out = dir / "frames";
+    r.video = dir / "ball.mp4";
+    r.width = 64;
+    r.height = 48;
+    r.fps = 10.0;
+    r.to = 1.0;
+    OutputJob job;
+    REQUIRE(job.start(animator_exe(), render_arguments(r, snapshot.file())));
+    run_to_end(job);
+    INFO(job.error_text());
+    REQUIRE(job.state() == OutputJob::State::Succeeded);
+    CHECK(count_pngs(r.out) == 11);
+    REQUIRE(fs::exists(r.video));
+    // ffprobe (installed with ffmpeg) decodes it: 11 frames, as many as the PNGs.
+    const fs::path frames = dir / "frames.txt";
+    const std::string probe = "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
+                              "-of csv=p=0 " + r.video.string() + " > " + frames.string();
+    REQUIRE(std::system(probe.c_str()) == 0);
+    CHECK(read_file(frames).substr(0, 3) == "11\n");
 }
