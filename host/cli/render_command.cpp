@@ -15,7 +15,9 @@
 #include "timeline/timeline.hpp"
 
 #include <malloc.h>
+#include <signal.h>
 #include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -130,6 +132,13 @@ int write_video(const RenderCommandOptions &o, const Timeline &timeline, audio::
 }
 
 int run_render(const RenderCommandOptions &o) {
+    // Run by a program that follows it (the editor's Render), the render ends with that program:
+    // an editor killed or crashed must not leave it writing frames for minutes. (The editor
+    // cancels it itself when it closes.)
+    if (o.progress) {
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        if (getppid() == 1) return kBadInput; // it ended before the line above
+    }
     // stb allocates a few megabytes for every frame it encodes; without this glibc gives them
     // back to the kernel each time and faults them in again (docs/rendering.md).
     mallopt(M_MMAP_THRESHOLD, 64 << 20);
@@ -241,7 +250,8 @@ void add_render_command(CLI::App &app, std::function<int()> &run) {
                     "(PATH.mp4) with ffmpeg, which must be installed");
     cmd->add_flag("--progress", o->progress,
                   "print a line \"frame K of N\" on stdout as each frame is drawn, for a program "
-                  "that shows the progress (the editor's Render)");
+                  "that shows the progress (the editor's Render); the render then also stops when "
+                  "that program ends");
     cmd->callback([&run, o] { run = [o] { return run_render(*o); }; });
 }
 

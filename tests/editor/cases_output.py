@@ -181,3 +181,38 @@ def case_render_video(c):
     c.log('after the render: %.3f s of CPU in 2 s' % used)
     check(used < 0.05, 'after the render the editor used %.3f s of CPU in 2 s of doing nothing' % used)
     e.quit()
+
+
+def process_state(pid):
+    """'R', 'S', 'Z'... of a process, or None once it is gone."""
+    try:
+        with open('/proc/%d/stat' % pid) as f:
+            return f.read().rsplit(')', 1)[1].split()[0]
+    except OSError:
+        return None
+
+
+def case_render_editor_killed(c):
+    """An editor killed (SIGKILL) in the middle of a render leaves no render running behind it:
+    `animator render --progress` ends with the program that started it, and writes no more
+    frames."""
+    c.copy('assets/animations/drop.ani', 'drop.ani')
+    e = c.start('drop.ani')
+    open_render(e)
+    e.click(*RENDER_BUTTON, settle=False)
+    e.wait_log(RENDER_STARTED, 'the render to start')
+    folder = c.path('drop_render')
+    e.wait_for(lambda: len(pngs(folder)) >= 3, 'the first frames to be written')
+    children = children_of(e.proc.pid)
+    check(len(children) == 1, 'the editor has not one child while rendering: %s' % children)
+    render = children[0][0]
+    os.kill(e.proc.pid, signal.SIGKILL)
+    e.proc.wait(30)
+    deadline = time.time() + HANG_TIMEOUT
+    while process_state(render) not in (None, 'Z') and time.time() < deadline:
+        time.sleep(0.1)
+    check(process_state(render) in (None, 'Z'), 'the render (pid %d) still runs after the editor was killed' % render)
+    written = len(pngs(folder))
+    time.sleep(1.0)
+    check(len(pngs(folder)) == written, 'frames were still written after the editor was killed')
+    check(written < 301, 'the render wrote all its frames before the editor was killed: nothing was tested')

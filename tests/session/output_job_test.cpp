@@ -257,3 +257,33 @@ TEST_CASE("a render job with a video has ffmpeg put the frames together") {
     REQUIRE(std::system(probe.c_str()) == 0);
     CHECK(read_file(frames).substr(0, 3) == "11\n");
 }
+
+TEST_CASE("a job that goes away while its render runs stops it (the editor closing)") {
+    Environment env;
+    const fs::path dir = fresh_dir("output_job_closed");
+    const fs::path file = write_ball(dir, 20000);
+    const Document doc = open_document(env.plugins, file).document;
+    JobSnapshot snapshot(env.plugins, env.assets, doc, file);
+    RenderRequest r;
+    r.out = dir / "frames";
+    r.width = 320;
+    r.height = 240;
+    r.to = 20.0;
+    pid_t pid = -1;
+    {
+        OutputJob job;
+        REQUIRE(job.start(animator_exe(), render_arguments(r, snapshot.file())));
+        const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(300);
+        while (job.poll() && job.frames_done() < 2 && std::chrono::steady_clock::now() < limit)
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        REQUIRE(job.running());
+        pid = job.pid();
+    }
+    errno = 0;
+    CHECK(waitpid(pid, nullptr, WNOHANG) == -1);
+    CHECK(errno == ECHILD);
+    const int written = count_pngs(r.out);
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    CHECK(count_pngs(r.out) == written);
+    CHECK(written < 601);
+}
