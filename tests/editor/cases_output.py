@@ -216,3 +216,35 @@ def case_render_editor_killed(c):
     time.sleep(1.0)
     check(len(pngs(folder)) == written, 'frames were still written after the editor was killed')
     check(written < 301, 'the render wrote all its frames before the editor was killed: nothing was tested')
+
+
+FRAMES_FOLDER_FIELD = (590, 415)  # the Render dialog's Frames folder text field
+
+
+def case_render_error(c):
+    """A render into a folder that cannot be made (the name of the animation file itself) fails
+    with the command line's own message, naming the user's file, never the private snapshot the
+    child read; the status line shows it as an error and the dialog closes."""
+    short_drop(c, 'drop.ani', 1000)
+    e = c.start('drop.ani')
+    open_render(e)
+    e.click(*FRAMES_FOLDER_FIELD)
+    e.xdo('keydown', 'ctrl')
+    e.key('a', settle=False)
+    e.xdo('keyup', 'ctrl')
+    e.sent += 2
+    e.type('drop.ani')
+    img = e.screenshot('folder-typed')
+    check(render_dialog_open(img), 'the Render dialog closed while typing its folder')
+    e.click(*RENDER_BUTTON, settle=False)
+    m = e.wait_log(r'^animator: render failed: (.*)$', 'the render to fail')
+    said = m.group(1)
+    c.log('said: %s' % said)
+    check('drop.ani' in said and 'animator-job-' not in said, 'the message does not name drop.ani, or names the snapshot: %r' % said)
+    check('directories' in said or 'exists' in said, 'the message does not say what went wrong: %r' % said)
+    e.settle()
+    img = e.screenshot('failed')
+    check(not render_dialog_open(img), 'the Render dialog is still open after the failure')
+    check(not children_of(e.proc.pid), 'the editor still has children: %s' % children_of(e.proc.pid))
+    check(os.path.isfile(c.path('drop.ani')), 'drop.ani is no longer a file')
+    e.quit()
