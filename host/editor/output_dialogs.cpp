@@ -34,6 +34,13 @@ std::string document_stem(const fs::path &document) {
     return document.empty() ? "untitled" : document.stem().string();
 }
 
+// A path typed in a dialog: a relative one is taken from the animation's folder (where the
+// defaults are), not from the folder the editor was started in.
+fs::path typed_path(const std::string &text, const fs::path &document) {
+    const fs::path p(text);
+    return p.is_absolute() ? p : document_folder(document) / p;
+}
+
 std::string seconds_text(double s) {
     char text[32];
     std::snprintf(text, sizeof text, "%.1f s", s);
@@ -155,11 +162,13 @@ void OutputDialogs::render_form(EditorSession &session) {
     tip("The last frame's time in seconds (at most the animation's max time).");
     ImGui::SetNextItemWidth(420.0f);
     ImGui::InputText("Frames folder", &out_);
-    tip("The folder the PNG frames go into (made when missing; frames already there are replaced).");
+    tip("The folder the PNG frames go into (made when missing; frames already there are replaced).\n"
+        "A relative path is taken from the animation's folder.");
     if (video_) {
         ImGui::SetNextItemWidth(420.0f);
         ImGui::InputText("Video file", &video_path_);
-        tip("The .mp4 file to write (replaced only when complete).");
+        tip("The .mp4 file to write (replaced only when complete). A relative path is taken from the\n"
+            "animation's folder.");
     }
 
     std::string problem;
@@ -186,8 +195,8 @@ void OutputDialogs::render_form(EditorSession &session) {
     }
     if (!go || !problem.empty()) return;
     request_ = {};
-    request_.out = out_;
-    if (video_) request_.video = video_path_;
+    request_.out = typed_path(out_, session.path());
+    if (video_) request_.video = typed_path(video_path_, session.path());
     request_.width = size_[0];
     request_.height = size_[1];
     request_.fps = fps_;
@@ -205,14 +214,14 @@ void OutputDialogs::export_form(EditorSession &session) {
     ImGui::SameLine(160.0f);
     ImGui::SetNextItemWidth(420.0f);
     ImGui::InputText("##trace path", &trace_path_);
-    tip("The CSV file to write the trace to.");
+    tip("The CSV file to write the trace to (a relative path is taken from the animation's folder).");
     ImGui::Checkbox("Soundtrack (WAV)", &soundtrack_);
     tip("Every collision and moving sound mixed at its time into a 16-bit stereo WAV file\n"
         "(the same file as `animator soundtrack`).");
     ImGui::SameLine(160.0f);
     ImGui::SetNextItemWidth(420.0f);
     ImGui::InputText("##soundtrack path", &soundtrack_path_);
-    tip("The WAV file to write the soundtrack to.");
+    tip("The WAV file to write the soundtrack to (a relative path is taken from the animation's folder).");
     ImGui::TextDisabled("The animation itself (.ani) is saved with Export (x).");
 
     std::string problem;
@@ -232,8 +241,8 @@ void OutputDialogs::export_form(EditorSession &session) {
     }
     if (!go || !problem.empty()) return;
     std::vector<Step> steps;
-    if (trace_) steps.push_back({"the trace", trace_path_, {}});
-    if (soundtrack_) steps.push_back({"the soundtrack", soundtrack_path_, {}});
+    if (trace_) steps.push_back({"the trace", typed_path(trace_path_, session.path()), {}});
+    if (soundtrack_) steps.push_back({"the soundtrack", typed_path(soundtrack_path_, session.path()), {}});
     start(session, Kind::Export, steps);
 }
 
