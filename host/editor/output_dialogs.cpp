@@ -16,7 +16,9 @@ namespace {
 constexpr const char *kRenderPopup = "Render";
 constexpr const char *kExportPopup = "Export";
 
-bool escape_pressed() { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false); }
+bool escape_pressed() {
+    return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+}
 
 // Every control says what it does (and its key) when the pointer rests on it, disabled or not.
 void tip(const char *text) {
@@ -71,8 +73,11 @@ OutputDialogs::~OutputDialogs() {
     const int done = job_.frames_done(), total = job_.frames_total();
     job_.cancel();
     // Panels, which says things on the status line, is going away with this: straight to stdout.
-    std::cout << "animator: " << (running_ == Kind::Render ? "render" : "export") << " cancelled (the editor closed";
-    if (running_ == Kind::Render) std::cout << "; " << done << " of " << total << " frames drawn, left in " << request_.out.string();
+    std::cout << "animator: " << (running_ == Kind::Render ? "render" : "export")
+              << " cancelled (the editor closed";
+    if (running_ == Kind::Render)
+        std::cout << "; " << done << " of " << total << " frames drawn, left in "
+                  << request_.out.string();
     std::cout << ")" << std::endl;
 }
 
@@ -99,31 +104,39 @@ void OutputDialogs::draw(EditorSession &session) {
         open_ = Kind::None;
         close_popup_ = false;
     } else if (open_ != Kind::None && running_ != Kind::None) {
-        say_(std::string("a ") + (running_ == Kind::Render ? "render" : "export") + " is running: wait for it or cancel it",
+        say_(std::string("a ") + (running_ == Kind::Render ? "render" : "export") +
+                 " is running: wait for it or cancel it",
              true);
         open_ = Kind::None;
     }
     // A running job's dialog comes back if another dialog (the quit question) took its place.
     const char *running_popup = running_ == Kind::Render ? kRenderPopup : kExportPopup;
-    if (running_ != Kind::None && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel))
+    if (running_ != Kind::None &&
+        !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel))
         ImGui::OpenPopup(running_popup);
 
     if (ImGui::BeginPopupModal(kRenderPopup, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         if (close_popup_) {
             ImGui::CloseCurrentPopup();
             close_popup_ = false;
-        } else if (running_ == Kind::Render) progress();
-        else if (running_ == Kind::None) render_form(session);
-        else ImGui::CloseCurrentPopup();
+        } else if (running_ == Kind::Render)
+            progress();
+        else if (running_ == Kind::None)
+            render_form(session);
+        else
+            ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
     if (ImGui::BeginPopupModal(kExportPopup, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         if (close_popup_) {
             ImGui::CloseCurrentPopup();
             close_popup_ = false;
-        } else if (running_ == Kind::Export) progress();
-        else if (running_ == Kind::None) export_form(session);
-        else ImGui::CloseCurrentPopup();
+        } else if (running_ == Kind::Export)
+            progress();
+        else if (running_ == Kind::None)
+            export_form(session);
+        else
+            ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
 }
@@ -131,7 +144,8 @@ void OutputDialogs::draw(EditorSession &session) {
 void OutputDialogs::render_form(EditorSession &session) {
     const double max_time = session.max_time();
     const std::optional<fs::path> ffmpeg = find_ffmpeg();
-    ImGui::Text("Render %s as it is now (unsaved changes included)", document_stem(session.path()).c_str());
+    ImGui::Text("Render %s as it is now (unsaved changes included)",
+                document_stem(session.path()).c_str());
     int kind = video_ ? 1 : 0;
     ImGui::RadioButton("Frames (PNG)", &kind, 0);
     tip("Write one PNG file a frame, frame_00000.png, ... into the folder below.");
@@ -162,25 +176,35 @@ void OutputDialogs::render_form(EditorSession &session) {
     tip("The last frame's time in seconds (at most the animation's max time).");
     ImGui::SetNextItemWidth(420.0f);
     ImGui::InputText("Frames folder", &out_);
-    tip("The folder the PNG frames go into (made when missing; frames already there are replaced).\n"
+    tip("The folder the PNG frames go into (made when missing; frames already there are "
+        "replaced).\n"
         "A relative path is taken from the animation's folder.");
     if (video_) {
         ImGui::SetNextItemWidth(420.0f);
         ImGui::InputText("Video file", &video_path_);
-        tip("The .mp4 file to write (replaced only when complete). A relative path is taken from the\n"
+        tip("The .mp4 file to write (replaced only when complete). A relative path is taken from "
+            "the\n"
             "animation's folder.");
     }
 
     std::string problem;
-    if (size_[0] < 1 || size_[1] < 1 || size_[0] > 16384 || size_[1] > 16384) problem = "the size must be 1 to 16384 pixels each way";
-    else if (!(fps_ >= 0.001 && fps_ <= 1000.0)) problem = "frames per second must be 0.001 to 1000";
-    else if (!(from_ >= 0.0 && from_ <= to_)) problem = "From must be at least 0 and at most To";
-    else if (to_ > max_time) problem = "To must be at most the max time, " + seconds_text(max_time);
-    else if (out_.empty()) problem = "name the folder for the frames";
-    else if (video_ && video_path_.empty()) problem = "name the video file";
+    if (size_[0] < 1 || size_[1] < 1 || size_[0] > 16384 || size_[1] > 16384)
+        problem = "the size must be 1 to 16384 pixels each way";
+    else if (!(fps_ >= 0.001 && fps_ <= 1000.0))
+        problem = "frames per second must be 0.001 to 1000";
+    else if (!(from_ >= 0.0 && from_ <= to_))
+        problem = "From must be at least 0 and at most To";
+    else if (to_ > max_time)
+        problem = "To must be at most the max time, " + seconds_text(max_time);
+    else if (out_.empty())
+        problem = "name the folder for the frames";
+    else if (video_ && video_path_.empty())
+        problem = "name the video file";
     const int count = problem.empty() ? render_frame_count(from_, to_, fps_) : 0;
-    if (!problem.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", problem.c_str());
-    else ImGui::Text("%d frame%s of %dx%d", count, count == 1 ? "" : "s", size_[0], size_[1]);
+    if (!problem.empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", problem.c_str());
+    else
+        ImGui::Text("%d frame%s of %dx%d", count, count == 1 ? "" : "s", size_[0], size_[1]);
 
     ImGui::BeginDisabled(!problem.empty());
     const bool go = ImGui::Button("Render");
@@ -207,27 +231,33 @@ void OutputDialogs::render_form(EditorSession &session) {
 }
 
 void OutputDialogs::export_form(EditorSession &session) {
-    ImGui::Text("Export what %s computes, as it is now (unsaved changes included)", document_stem(session.path()).c_str());
+    ImGui::Text("Export what %s computes, as it is now (unsaved changes included)",
+                document_stem(session.path()).c_str());
     ImGui::Checkbox("Trace (CSV)", &trace_);
     tip("Every model's position, angles, scale and velocity, every 1/60 s and at every keyframe:\n"
         "t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz (the same file as `animator bake --trace`).");
     ImGui::SameLine(160.0f);
     ImGui::SetNextItemWidth(420.0f);
     ImGui::InputText("##trace path", &trace_path_);
-    tip("The CSV file to write the trace to (a relative path is taken from the animation's folder).");
+    tip("The CSV file to write the trace to (a relative path is taken from the animation's "
+        "folder).");
     ImGui::Checkbox("Soundtrack (WAV)", &soundtrack_);
     tip("Every collision and moving sound mixed at its time into a 16-bit stereo WAV file\n"
         "(the same file as `animator soundtrack`).");
     ImGui::SameLine(160.0f);
     ImGui::SetNextItemWidth(420.0f);
     ImGui::InputText("##soundtrack path", &soundtrack_path_);
-    tip("The WAV file to write the soundtrack to (a relative path is taken from the animation's folder).");
+    tip("The WAV file to write the soundtrack to (a relative path is taken from the animation's "
+        "folder).");
     ImGui::TextDisabled("The animation itself (.ani) is saved with Export (x).");
 
     std::string problem;
-    if (!trace_ && !soundtrack_) problem = "tick what to export";
-    else if ((trace_ && trace_path_.empty()) || (soundtrack_ && soundtrack_path_.empty())) problem = "name the file to write";
-    if (!problem.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", problem.c_str());
+    if (!trace_ && !soundtrack_)
+        problem = "tick what to export";
+    else if ((trace_ && trace_path_.empty()) || (soundtrack_ && soundtrack_path_.empty()))
+        problem = "name the file to write";
+    if (!problem.empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", problem.c_str());
     ImGui::BeginDisabled(!problem.empty());
     const bool go = ImGui::Button("Export");
     ImGui::EndDisabled();
@@ -242,28 +272,36 @@ void OutputDialogs::export_form(EditorSession &session) {
     if (!go || !problem.empty()) return;
     std::vector<Step> steps;
     if (trace_) steps.push_back({"the trace", typed_path(trace_path_, session.path()), {}});
-    if (soundtrack_) steps.push_back({"the soundtrack", typed_path(soundtrack_path_, session.path()), {}});
+    if (soundtrack_)
+        steps.push_back({"the soundtrack", typed_path(soundtrack_path_, session.path()), {}});
     start(session, Kind::Export, steps);
 }
 
 bool OutputDialogs::start(EditorSession &session, Kind kind, std::vector<Step> steps) {
     try {
-        snapshot_ = std::make_unique<JobSnapshot>(env_.plugins, env_.assets, session.document(), session.path());
+        snapshot_ = std::make_unique<JobSnapshot>(env_.plugins, env_.assets, session.document(),
+                                                  session.path());
     } catch (const std::exception &e) {
-        say_(std::string(kind == Kind::Render ? "render" : "export") + " could not start: " + e.what(), true);
+        say_(std::string(kind == Kind::Render ? "render" : "export") +
+                 " could not start: " + e.what(),
+             true);
         return false;
     }
     snapshot_for_ = session.path();
     for (Step &s : steps) {
-        if (kind == Kind::Render) s.arguments = render_arguments(request_, snapshot_->file());
-        else if (s.what == "the trace") s.arguments = trace_arguments(s.path, snapshot_->file());
-        else s.arguments = soundtrack_arguments(s.path, snapshot_->file());
+        if (kind == Kind::Render)
+            s.arguments = render_arguments(request_, snapshot_->file());
+        else if (s.what == "the trace")
+            s.arguments = trace_arguments(s.path, snapshot_->file());
+        else
+            s.arguments = soundtrack_arguments(s.path, snapshot_->file());
     }
     running_ = kind;
     written_.clear();
     steps_ = std::move(steps);
     if (!start_next_step()) return false;
-    std::cout << "animator: " << (kind == Kind::Render ? "render" : "export") << " started" << std::endl;
+    std::cout << "animator: " << (kind == Kind::Render ? "render" : "export") << " started"
+              << std::endl;
     return true;
 }
 
@@ -272,7 +310,9 @@ bool OutputDialogs::start_next_step() {
     steps_.erase(steps_.begin());
     std::string error;
     if (!job_.start(OutputJob::self_executable(), step_.arguments, &error)) {
-        end(std::string(running_ == Kind::Render ? "render" : "export") + " could not start: " + error, true);
+        end(std::string(running_ == Kind::Render ? "render" : "export") +
+                " could not start: " + error,
+            true);
         return false;
     }
     return true;
@@ -294,9 +334,11 @@ void OutputDialogs::follow_job() {
     }
     if (render) {
         const int n = job_.frames_total();
-        std::string message = "render finished (" + std::to_string(n) + " frame" + (n == 1 ? "" : "s") + ") in " +
+        std::string message = "render finished (" + std::to_string(n) + " frame" +
+                              (n == 1 ? "" : "s") + ") in " +
                               shown_path(request_.out, snapshot_for_);
-        if (!request_.video.empty()) message += ", and the video " + shown_path(request_.video, snapshot_for_);
+        if (!request_.video.empty())
+            message += ", and the video " + shown_path(request_.video, snapshot_for_);
         end(message, false);
     } else {
         std::string message = "exported";
@@ -312,20 +354,25 @@ void OutputDialogs::progress() {
     if (render) {
         ImGui::Text("Rendering into %s", request_.out.string().c_str());
         std::string overlay;
-        if (total == 0) overlay = "baking the physics ...";
-        else if (done == total && !request_.video.empty()) overlay = "making the video with ffmpeg ...";
-        else overlay = "frame " + std::to_string(done) + " of " + std::to_string(total);
-        ImGui::ProgressBar(total > 0 ? static_cast<float>(done) / static_cast<float>(total) : 0.0f, ImVec2(420.0f, 0.0f),
-                           overlay.c_str());
+        if (total == 0)
+            overlay = "baking the physics ...";
+        else if (done == total && !request_.video.empty())
+            overlay = "making the video with ffmpeg ...";
+        else
+            overlay = "frame " + std::to_string(done) + " of " + std::to_string(total);
+        ImGui::ProgressBar(total > 0 ? static_cast<float>(done) / static_cast<float>(total) : 0.0f,
+                           ImVec2(420.0f, 0.0f), overlay.c_str());
     } else {
         const std::size_t count = written_.size() + 1 + steps_.size();
         ImGui::Text("Writing %s: %s", step_.what.c_str(), step_.path.string().c_str());
-        const std::string overlay = "file " + std::to_string(written_.size() + 1) + " of " + std::to_string(count) +
-                                    (step_.what == "the trace" ? " (baking)" : " (baking and mixing)");
-        ImGui::ProgressBar(static_cast<float>(written_.size()) / static_cast<float>(count), ImVec2(420.0f, 0.0f),
-                           overlay.c_str());
+        const std::string overlay =
+            "file " + std::to_string(written_.size() + 1) + " of " + std::to_string(count) +
+            (step_.what == "the trace" ? " (baking)" : " (baking and mixing)");
+        ImGui::ProgressBar(static_cast<float>(written_.size()) / static_cast<float>(count),
+                           ImVec2(420.0f, 0.0f), overlay.c_str());
     }
-    tip("How far the job has come. It runs apart from the editor, on the animation as it was when it started.");
+    tip("How far the job has come. It runs apart from the editor, on the animation as it was when "
+        "it started.");
     ImGui::Text("elapsed %s", seconds_text(job_.elapsed_seconds()).c_str());
     if (ImGui::Button("Cancel") || escape_pressed()) cancel();
     tip("Stop now (ESC); what was written so far stays as it is.");
@@ -337,7 +384,8 @@ void OutputDialogs::cancel() {
     job_.cancel();
     if (running_ == Kind::Render) {
         end("render cancelled (" + std::to_string(done) + " of " + std::to_string(total) +
-                " frames); the frames written are left in " + shown_path(request_.out, snapshot_for_),
+                " frames); the frames written are left in " +
+                shown_path(request_.out, snapshot_for_),
             false);
     } else {
         std::string message = "export cancelled while writing " + step_.what + " (not written)";
@@ -357,8 +405,12 @@ void OutputDialogs::end(const std::string &message, bool error) {
 
 std::string OutputDialogs::child_error() const {
     std::string text = job_.error_text();
-    if (text.empty()) text = "it stopped with exit status " + std::to_string(job_.exit_code()) + " and said nothing";
-    if (snapshot_) replace_all(text, snapshot_->file().string(), snapshot_for_.empty() ? "the untitled animation" : snapshot_for_.string());
+    if (text.empty())
+        text =
+            "it stopped with exit status " + std::to_string(job_.exit_code()) + " and said nothing";
+    if (snapshot_)
+        replace_all(text, snapshot_->file().string(),
+                    snapshot_for_.empty() ? "the untitled animation" : snapshot_for_.string());
     // Its lines start "animator: " (the command line's voice): the status line says it once.
     replace_all(text, "\nanimator: ", "\n");
     if (text.rfind("animator: ", 0) == 0) text.erase(0, 10);

@@ -38,7 +38,8 @@ std::string decimal(double x) {
 
 // [SECTION] the snapshot
 
-Document snapshot_document(const Document &document, const AssetPaths &assets, const fs::path &document_path) {
+Document snapshot_document(const Document &document, const AssetPaths &assets,
+                           const fs::path &document_path) {
     Document copy = document;
     const auto &models = copy.models();
     for (int i = 0; i < static_cast<int>(models.size()); ++i) {
@@ -47,7 +48,8 @@ Document snapshot_document(const Document &document, const AssetPaths &assets, c
         const auto found = assets.resolve(ANI_ASSET_MESH, m.mesh, document_path);
         // Only a file found beside the document (the first place resolve() looks) moves: a mesh
         // from the asset folders is found there by the child too, and keeps its short id.
-        const fs::path beside = document_path.empty() ? fs::path(m.mesh) : document_path.parent_path() / m.mesh;
+        const fs::path beside =
+            document_path.empty() ? fs::path(m.mesh) : document_path.parent_path() / m.mesh;
         if (!found || *found != beside) continue;
         std::error_code ec;
         m.mesh = fs::absolute(beside, ec).lexically_normal().string();
@@ -57,13 +59,14 @@ Document snapshot_document(const Document &document, const AssetPaths &assets, c
     return copy;
 }
 
-JobSnapshot::JobSnapshot(PluginRegistry &plugins, const AssetPaths &assets, const Document &document,
-                         const fs::path &document_path) {
+JobSnapshot::JobSnapshot(PluginRegistry &plugins, const AssetPaths &assets,
+                         const Document &document, const fs::path &document_path) {
     const char *tmp = std::getenv("TMPDIR");
     std::string pattern = (fs::path(tmp && *tmp ? tmp : "/tmp") / "animator-job-XXXXXX").string();
     if (!mkdtemp(pattern.data()))
-        throw std::runtime_error(pattern.substr(0, pattern.size() - 6) + "...: cannot make a folder for the job (" +
-                                 std::strerror(errno) + ")");
+        throw std::runtime_error(pattern.substr(0, pattern.size() - 6) +
+                                 "...: cannot make a folder for the job (" + std::strerror(errno) +
+                                 ")");
     folder_ = pattern;
     // The document's own name, so what the child says ("drop.ani: ...") reads as the user's file.
     const std::string stem = document_path.empty() ? "untitled" : document_path.stem().string();
@@ -95,7 +98,8 @@ OutputJob::~OutputJob() {
     close_pipes();
 }
 
-bool OutputJob::start(const fs::path &program, const std::vector<std::string> &args, std::string *error) {
+bool OutputJob::start(const fs::path &program, const std::vector<std::string> &args,
+                      std::string *error) {
     if (running()) {
         if (error) *error = "a job is already running";
         return false;
@@ -120,7 +124,8 @@ bool OutputJob::start(const fs::path &program, const std::vector<std::string> &a
     posix_spawn_file_actions_adddup2(&actions, err[1], STDERR_FILENO);
     posix_spawnattr_t attributes;
     posix_spawnattr_init(&attributes);
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK |
+                                              POSIX_SPAWN_SETSIGDEF);
     posix_spawnattr_setpgroup(&attributes, 0); // a group of its own, led by the child
     // The signals a cancel or a pipe uses act as they should in the child, whatever the
     // editor does with them.
@@ -136,7 +141,8 @@ bool OutputJob::start(const fs::path &program, const std::vector<std::string> &a
     std::vector<char *> argv;
     for (std::string &a : storage) argv.push_back(a.data());
     argv.push_back(nullptr);
-    const int spawned = posix_spawn(&pid_, program.c_str(), &actions, &attributes, argv.data(), environ);
+    const int spawned =
+        posix_spawn(&pid_, program.c_str(), &actions, &attributes, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     posix_spawnattr_destroy(&attributes);
     ::close(out[1]);
@@ -179,7 +185,8 @@ void OutputJob::cancel() {
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     if (r == 0) {
         kill(-pid_, SIGKILL);
-        while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {}
+        while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+        }
     }
     read_pipes();
     finished(status);
@@ -204,7 +211,8 @@ void OutputJob::read_pipes() {
         if (fd < 0) continue;
         std::string &buffer = fd == out_fd_ ? out_buffer_ : err_buffer_;
         ssize_t n = 0;
-        while ((n = ::read(fd, chunk, sizeof chunk)) > 0) buffer.append(chunk, static_cast<std::size_t>(n));
+        while ((n = ::read(fd, chunk, sizeof chunk)) > 0)
+            buffer.append(chunk, static_cast<std::size_t>(n));
         take_lines(buffer, fd == out_fd_, false);
     }
 }
@@ -262,7 +270,8 @@ void OutputJob::close_pipes() {
 bool parse_frame_progress(const std::string &line, int &done, int &total) {
     int k = 0, n = 0;
     char rest = 0;
-    if (std::sscanf(line.c_str(), "frame %d of %d%c", &k, &n, &rest) != 2 || k < 0 || n < k) return false;
+    if (std::sscanf(line.c_str(), "frame %d of %d%c", &k, &n, &rest) != 2 || k < 0 || n < k)
+        return false;
     done = k;
     total = n;
     return true;
@@ -273,13 +282,14 @@ int render_frame_count(double from, double to, double fps) {
 }
 
 std::vector<std::string> render_arguments(const RenderRequest &r, const fs::path &snapshot) {
-    std::vector<std::string> args = {"render",  snapshot.string(),
-                                     "--out",   r.out.string(),
-                                     "--size",  std::to_string(r.width) + "x" + std::to_string(r.height),
-                                     "--fps",   decimal(r.fps),
-                                     "--from",  decimal(r.from),
-                                     "--to",    decimal(r.to),
-                                     "--progress"};
+    std::vector<std::string> args = {
+        "render",    snapshot.string(),
+        "--out",     r.out.string(),
+        "--size",    std::to_string(r.width) + "x" + std::to_string(r.height),
+        "--fps",     decimal(r.fps),
+        "--from",    decimal(r.from),
+        "--to",      decimal(r.to),
+        "--progress"};
     if (!r.video.empty()) {
         args.emplace_back("--video");
         args.push_back(r.video.string());
@@ -302,7 +312,8 @@ std::optional<fs::path> find_ffmpeg() {
     while (std::getline(folders, folder, ':')) {
         const fs::path candidate = fs::path(folder.empty() ? "." : folder) / "ffmpeg";
         std::error_code ec;
-        if (::access(candidate.c_str(), X_OK) == 0 && !fs::is_directory(candidate, ec)) return candidate;
+        if (::access(candidate.c_str(), X_OK) == 0 && !fs::is_directory(candidate, ec))
+            return candidate;
     }
     return std::nullopt;
 }

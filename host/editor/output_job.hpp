@@ -60,7 +60,8 @@ class OutputJob {
     static std::filesystem::path self_executable();
 
     // Starts `program args...`. False (with why in `error`) when it could not start.
-    bool start(const std::filesystem::path &program, const std::vector<std::string> &args, std::string *error = nullptr);
+    bool start(const std::filesystem::path &program, const std::vector<std::string> &args,
+               std::string *error = nullptr);
     // Reads what the child wrote since the last call and, when it has ended, reaps it. Never
     // blocks. Returns true while it runs.
     bool poll();
@@ -110,10 +111,13 @@ struct RenderRequest {
 // every 1/fps up to `to` (render_command.cpp's count).
 int render_frame_count(double from, double to, double fps);
 // `render SNAPSHOT --out ... --progress ...`: the arguments for OutputJob::start.
-std::vector<std::string> render_arguments(const RenderRequest &request, const std::filesystem::path &snapshot);
+std::vector<std::string> render_arguments(const RenderRequest &request,
+                                          const std::filesystem::path &snapshot);
 // `bake SNAPSHOT --trace CSV` and `soundtrack SNAPSHOT --out WAV`.
-std::vector<std::string> trace_arguments(const std::filesystem::path &csv, const std::filesystem::path &snapshot);
-std::vector<std::string> soundtrack_arguments(const std::filesystem::path &wav, const std::filesystem::path &snapshot);
+std::vector<std::string> trace_arguments(const std::filesystem::path &csv,
+                                         const std::filesystem::path &snapshot);
+std::vector<std::string> soundtrack_arguments(const std::filesystem::path &wav,
+                                              const std::filesystem::path &snapshot);
 
 // ffmpeg on PATH (what `animator render --video` needs), or nothing.
 std::optional<std::filesystem::path> find_ffmpeg();

@@ -14,8 +14,8 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdlib>
 #include <chrono>
+#include <cstdlib>
 #include <thread>
 
 using namespace animator;
@@ -29,15 +29,18 @@ namespace {
 // `seconds`.
 std::string ball_ani(int max_ms) {
     return "animator-ani 1\nsettings\n  max_time_ms " + std::to_string(max_ms) +
-           "\n  gravity 9.81\n  down y\n  cel_shading false\n  skybox \"\"\n  physics_backend \"physics.custom\"\nend\n\n"
-           "model \"ball\"\n  mesh \"my_ball.obj\"\n  kd 0.9 0.2 0.1\n  ks 0.5 0.5 0.5\n  shininess 40\n"
+           "\n  gravity 9.81\n  down y\n  cel_shading false\n  skybox \"\"\n  physics_backend "
+           "\"physics.custom\"\nend\n\n"
+           "model \"ball\"\n  mesh \"my_ball.obj\"\n  kd 0.9 0.2 0.1\n  ks 0.5 0.5 0.5\n  "
+           "shininess 40\n"
            "  dynamics true\n  gravity true\n  mass 1\nend\n\n"
            "keyframe 0\n  camera position 0 0 12 rotation 1 0 0 0 fov 50\n"
            "  state \"ball\" center 0 2 0 angles 0 0 0 scale 1 1 1 turn 0 0 0\nend\n";
 }
 
 fs::path write_ball(const fs::path &dir, int max_ms) {
-    fs::copy_file(source_dir() / "tests" / "data" / "assets" / "meshes" / "ball.obj", dir / "my_ball.obj");
+    fs::copy_file(source_dir() / "tests" / "data" / "assets" / "meshes" / "ball.obj",
+                  dir / "my_ball.obj");
     write_file(dir / "ball.ani", ball_ani(max_ms));
     return dir / "ball.ani";
 }
@@ -52,13 +55,16 @@ int count_pngs(const fs::path &dir) {
 
 // Polls as the editor does each frame, until the job ends (or a hang's outer limit).
 void run_to_end(OutputJob &job, double limit_seconds = 300.0) {
-    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(limit_seconds);
+    const auto until =
+        std::chrono::steady_clock::now() + std::chrono::duration<double>(limit_seconds);
     while (job.poll() && std::chrono::steady_clock::now() < until)
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     REQUIRE_FALSE(job.running());
 }
 
-fs::path animator_exe() { return bin_dir() / "animator"; }
+fs::path animator_exe() {
+    return bin_dir() / "animator";
+}
 
 } // namespace
 
@@ -210,7 +216,8 @@ TEST_CASE("an export's trace has the unsaved edits, as `animator bake --trace` o
     run_to_end(job);
     INFO(job.error_text());
     REQUIRE(job.state() == OutputJob::State::Succeeded);
-    const auto cli = run_animator("bake " + (dir / "edited.ani").string() + " --trace " + (dir / "cli.csv").string());
+    const auto cli = run_animator("bake " + (dir / "edited.ani").string() + " --trace " +
+                                  (dir / "cli.csv").string());
     REQUIRE(cli.exit_code == 0);
     const std::string ours = read_file(dir / "editor.csv"), theirs = read_file(dir / "cli.csv");
     CHECK(ours.rfind("t,model,x,y,z", 0) == 0);
@@ -228,7 +235,8 @@ TEST_CASE("a program that cannot start is said at once") {
 
 TEST_CASE("a render job with a video has ffmpeg put the frames together") {
     if (!find_ffmpeg()) {
-        WARN("ffmpeg is not installed: the video render is not tested (the editor greys Video out)");
+        WARN(
+            "ffmpeg is not installed: the video render is not tested (the editor greys Video out)");
         return;
     }
     Environment env;
@@ -252,8 +260,10 @@ TEST_CASE("a render job with a video has ffmpeg put the frames together") {
     REQUIRE(fs::exists(r.video));
     // ffprobe (installed with ffmpeg) decodes it: 11 frames, as many as the PNGs.
     const fs::path frames = dir / "frames.txt";
-    const std::string probe = "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
-                              "-of csv=p=0 " + r.video.string() + " > " + frames.string();
+    const std::string probe =
+        "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
+        "-of csv=p=0 " +
+        r.video.string() + " > " + frames.string();
     REQUIRE(std::system(probe.c_str()) == 0);
     CHECK(read_file(frames).substr(0, 3) == "11\n");
 }
