@@ -209,7 +209,7 @@ void OutputDialogs::render_form(EditorSession &session) {
     ImGui::BeginDisabled(!problem.empty());
     const bool go = ImGui::Button("Render");
     ImGui::EndDisabled();
-    tip("Start rendering; the editor stays usable to watch it, Cancel (ESC) stops it.");
+    tip("Start rendering: the dialog shows how far it is, Cancel (ESC) stops it.");
     ImGui::SameLine();
     const bool close = ImGui::Button("Close") || escape_pressed();
     tip("Close this dialog without rendering (ESC).");
