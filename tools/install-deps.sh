@@ -10,6 +10,7 @@ packages=(
   libgl-dev xvfb xauth xdotool imagemagick mesa-utils libgl1-mesa-dri
   libegl-dev libegl-mesa0
   clang libclang-rt-14-dev llvm-14
+  ffmpeg  # `animator render --video` and the editor's Render > Video (tests: render_video)
 )
 
 missing=()

@@ -156,4 +156,17 @@ xdotool key ctrl+o; sleep 0.5  # Open: the browser, in drop.ani's folder
 xdotool key BackSpace; sleep 0.3   # up to the folder of scenes
 xdotool key Down; sleep 0.3; xdotool key Down; sleep 0.3
 shot files-browser
+
+# Rendering from the editor (docs/manual.md, "Rendering and exporting from the editor"): CTRL+F12
+# opens Render, its Render button starts, and the progress bar shows once frames are written;
+# ESC cancels it.
+cp assets/animations/drop.ani "$work/drop.ani"
+start_editor drop.ani
+xdotool keydown ctrl; sleep 0.1; xdotool keydown F12; sleep 0.1; xdotool keyup F12; sleep 0.1; xdotool keyup ctrl
+sleep 0.6
+click 406 455                  # Render (frames, 1280x720, 0 to 10 s at 30 fps)
+for _ in $(seq 600); do [ "$(ls "$work/drop_render" 2>/dev/null | wc -l)" -ge 20 ] && break; sleep 0.1; done
+shot render-progress 0.1
+xdotool keydown Escape; sleep 0.1; xdotool keyup Escape   # cancel
+for _ in $(seq 600); do grep -q '^animator: render cancelled' "$work/log" && break; sleep 0.1; done
 echo "wrote the screenshots to $out"

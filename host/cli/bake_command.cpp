@@ -28,6 +28,22 @@ struct BakeOptions {
     bool stats = false;
 };
 
+// Where a CSV is written before it is renamed to `path`: beside it, so the rename is atomic and a
+// run stopped part way (a cancel in the editor, a full disk) leaves any previous file whole.
+std::filesystem::path partial_of(const std::string &path) {
+    const std::filesystem::path p(path);
+    return p.parent_path() / ("." + p.filename().string() + ".partial");
+}
+
+void replace_with(const std::filesystem::path &partial, const std::string &path) {
+    std::error_code ec;
+    std::filesystem::rename(partial, path, ec);
+    if (ec) {
+        std::filesystem::remove(partial, ec);
+        throw std::runtime_error(path + ": cannot be written (" + ec.message() + ")");
+    }
+}
+
 void write_trace(const std::string &path, const Timeline &timeline, double until, double step) {
     std::set<double> times;
     const auto samples = static_cast<long long>(std::floor(until / step + 1e-9));
@@ -36,7 +52,8 @@ void write_trace(const std::string &path, const Timeline &timeline, double until
         const double t = static_cast<double>(k.time_ms) / 1000.0;
         if (t <= until) times.insert(t);
     }
-    std::ofstream out(path);
+    const std::filesystem::path partial = partial_of(path);
+    std::ofstream out(partial);
     if (!out) throw std::runtime_error(path + ": cannot be written");
     out << "t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz\n";
     const auto &models = timeline.document().models();
@@ -50,7 +67,13 @@ void write_trace(const std::string &path, const Timeline &timeline, double until
             out << "\n";
         }
     }
-    if (!out) throw std::runtime_error(path + ": writing failed");
+    out.close();
+    if (!out) {
+        std::error_code ignored;
+        std::filesystem::remove(partial, ignored);
+        throw std::runtime_error(path + ": writing failed");
+    }
+    replace_with(partial, path);
 }
 
 void write_events(const std::string &path, const Timeline &timeline) {

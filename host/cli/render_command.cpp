@@ -15,7 +15,9 @@
 #include "timeline/timeline.hpp"
 
 #include <malloc.h>
+#include <signal.h>
 #include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -38,6 +40,7 @@ struct RenderCommandOptions {
     std::vector<std::string> params;
     double from = 0.0, to = -1.0, fps = 30.0;
     int compression = 5;
+    bool progress = false;
 };
 
 // "WxH" into width and height; "" when valid, else what is wrong (CLI11's check convention).
@@ -129,6 +132,13 @@ int write_video(const RenderCommandOptions &o, const Timeline &timeline, audio::
 }
 
 int run_render(const RenderCommandOptions &o) {
+    // Run by a program that follows it (the editor's Render), the render ends with that program:
+    // an editor killed or crashed must not leave it writing frames for minutes. (The editor
+    // cancels it itself when it closes.)
+    if (o.progress) {
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        if (getppid() == 1) return kBadInput; // it ended before the line above
+    }
     // stb allocates a few megabytes for every frame it encodes; without this glibc gives them
     // back to the kernel each time and faults them in again (docs/rendering.md).
     mallopt(M_MMAP_THRESHOLD, 64 << 20);
@@ -194,6 +204,9 @@ int run_render(const RenderCommandOptions &o) {
             framebuffer.read_rgb(writer.next_buffer());
             writer.write(k);
             bar(static_cast<double>(k + 1) / count);
+            // For a program that runs this one (the editor's Render): one line a frame handed to
+            // the writer, flushed at once so the reader sees it then.
+            if (o.progress) std::cout << "frame " << k + 1 << " of " << count << std::endl;
         }
         writer.finish();
         std::cout << "wrote " << count << " frame" << (count == 1 ? "" : "s") << " of " << width
@@ -235,6 +248,10 @@ void add_render_command(CLI::App &app, std::function<int()> &run) {
     cmd->add_option("--video", o->video,
                     "also put the frames and the soundtrack together into this video file "
                     "(PATH.mp4) with ffmpeg, which must be installed");
+    cmd->add_flag("--progress", o->progress,
+                  "print a line \"frame K of N\" on stdout as each frame is drawn, for a program "
+                  "that shows the progress (the editor's Render); the render then also stops when "
+                  "that program ends");
     cmd->callback([&run, o] { run = [o] { return run_render(*o); }; });
 }
 

@@ -376,6 +376,7 @@ int run_editor(const EditorOptions &options) {
         while (!quitting) {
             const bool busy = session.playing() || session.baking() || pointer.down() || frames_to_draw > 0;
             if (busy || !window_state.imgui_keys.empty()) glfwPollEvents();
+            else if (panels.output_busy()) glfwWaitEventsTimeout(1.0 / 30.0); // a render's progress
             else if (glfwGetTime() < settle_until) glfwWaitEventsTimeout(1.0 / 60.0);
             else if (frame_rate.text() != "idle") {
                 // One last frame, so the status line says "idle" rather than the rate of the
@@ -483,6 +484,10 @@ int run_editor(const EditorOptions &options) {
                         // Keys other programs bind: where to look here instead (help.cpp).
                         const std::string key = e.code == GLFW_KEY_TAB ? "TAB" : std::string(1, static_cast<char>('a' + (e.code - GLFW_KEY_A)));
                         if (const auto hint = familiar_key_hint(key)) panels.say(*hint);
+                    } else if (e.code == GLFW_KEY_F12 && ctrl) {
+                        panels.open_render();
+                    } else if (e.code == GLFW_KEY_E && ctrl && shift) {
+                        panels.open_export();
                     } else if (e.code == GLFW_KEY_F1) {
                         panels.toggle_help();
                     } else if (e.code == GLFW_KEY_ESCAPE && panels.help_open()) {

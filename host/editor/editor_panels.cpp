@@ -178,6 +178,7 @@ void Panels::draw(EditorSession &session, float width, float height, double wall
     const float above = bottom.collapsed ? height : static_cast<float>(bottom.rect.y);
     if (session.last_selected() >= 0) model_panel(session, width, height, above);
     dialogs(session);
+    output_.draw(session);
     draw_help_overlay(&help_open_, width, height);
     // After the dialogs, so the frame a dialog opens in already counts.
     dialog_open_ = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
@@ -211,7 +212,13 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
         return;
     }
     if (ImGui::BeginMenuBar()) {
-        files_.menu(session);
+        files_.menu(session, [&] {
+            if (ImGui::MenuItem("Render...", "CTRL+F12")) open_render();
+            tip("Render the animation as it is now (unsaved changes too) to PNG frames or a video, with a\n"
+                "progress bar and Cancel");
+            if (ImGui::MenuItem("Export...", "CTRL+SHIFT+E")) open_export();
+            tip("Export the motion trace (CSV) and the soundtrack (WAV) of the animation as it is now");
+        });
         const char *name = "Animator Interface";
         const float right = ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize(name).x;
         if (right > ImGui::GetCursorPosX() + 8.0f) {

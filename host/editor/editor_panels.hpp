@@ -8,6 +8,7 @@
 #include "editor/dope_sheet.hpp"
 #include "editor/editor_session.hpp"
 #include "editor/file_menu.hpp"
+#include "editor/output_dialogs.hpp"
 #include "editor/view_layout.hpp"
 
 #include <functional>
@@ -22,7 +23,8 @@ class Panels {
   public:
     explicit Panels(Environment &env)
         : env_(env), files_([this](const std::string &m, bool error) { say(m, error); },
-                            [this](const std::string &title, const std::string &m) { show_error(title, m); }) {}
+                            [this](const std::string &title, const std::string &m) { show_error(title, m); }),
+          output_(env, [this](const std::string &m, bool error) { say(m, error); }) {}
 
     // Draws the Animator Interface (left), the Timeline (along the bottom, dope_sheet.hpp)
     // and, with a model selected, the Model Interface (right), in a window `width` x `height`
@@ -53,6 +55,11 @@ class Panels {
     void close_help() { help_open_ = false; }
     // A modal dialog is open: the editor's shortcuts wait until it is answered.
     bool dialog_open() const { return dialog_open_; }
+    // Render (CTRL+F12) and Export (CTRL+SHIFT+E), output_dialogs.hpp; while one runs the
+    // editor keeps drawing frames (output_busy()).
+    void open_render() { output_.open_render(); }
+    void open_export() { output_.open_export(); }
+    bool output_busy() const { return output_.busy(); }
     // The Outliner's name field for model `model` (a double-click on its row, or F2).
     void start_rename(int model);
 
@@ -114,6 +121,7 @@ class Panels {
     bool rename_active_ = false;
     int outliner_seen_ = -1; // the last selected model the Outliner has shown
     bool outliner_clicked_ = false; // the selection changed by a click on a row
+    OutputDialogs output_; // last: it may still say something as the panels go
 };
 
 } // namespace animator

@@ -143,7 +143,7 @@ void FileMenu::write_as(EditorSession &session, const fs::path &target) {
     }
 }
 
-void FileMenu::menu(EditorSession &session) {
+void FileMenu::menu(EditorSession &session, const std::function<void()> &more) {
     if (!recent_error_.empty()) {
         say_(recent_error_, true);
         recent_error_.clear();
@@ -187,6 +187,10 @@ void FileMenu::menu(EditorSession &session) {
                                     : "No .ani to write to yet: asks where (Save As)");
     if (ImGui::MenuItem("Save As...", "CTRL+SHIFT+S")) save_as(session);
     tooltip("Write the animation to a new .ani, which becomes the open file");
+    if (more) {
+        ImGui::Separator();
+        more();
+    }
     ImGui::Separator();
     if (ImGui::MenuItem("Quit", "q, CTRL+Q")) quit_requested_ = true;
     tooltip("Quit; with unsaved changes it asks first");

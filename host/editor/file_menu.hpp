@@ -22,8 +22,9 @@ class FileMenu {
     FileMenu(std::function<void(const std::string &, bool)> say,
              std::function<void(const std::string &, const std::string &)> show_error);
 
-    // The menu, inside the menu bar being drawn.
-    void menu(EditorSession &session);
+    // The menu, inside the menu bar being drawn; `more` draws the items of other stages
+    // (Render, Export) between Save As and Quit.
+    void menu(EditorSession &session, const std::function<void()> &more = {});
     // Its dialogs, at the top level, once a frame.
     void dialogs(EditorSession &session);
 

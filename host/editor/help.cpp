@@ -22,6 +22,8 @@ const std::vector<HelpSection> &help_sections() {
              {"CTRL+S", "save to the open .ani (as `x`); with none (a .lua scene, New) it asks where, as Save As"},
              {"CTRL+SHIFT+S", "save as: a new .ani, which becomes the open file"},
              {"CTRL+O, CTRL+N", "open an .ani or .lua; a new untitled animation from a .lua scene (File menu)"},
+             {"CTRL+F12", "render the animation to PNG frames or a video"},
+             {"CTRL+SHIFT+E", "export the trace (CSV) and the soundtrack (WAV)"},
              {"DELETE", "delete the keys selected in the Timeline (not those at t = 0)"},
              {"CTRL+C, CTRL+V", "copy the keys selected in the Timeline; paste them at the playhead"},
              {"`i`", "key the selected models where they are now, at the current time (nothing selected: the camera)"},
