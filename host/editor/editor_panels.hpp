@@ -7,6 +7,7 @@
 
 #include "editor/dope_sheet.hpp"
 #include "editor/editor_session.hpp"
+#include "editor/transform_panel.hpp"
 #include "editor/view_layout.hpp"
 
 #include <functional>
@@ -82,6 +83,7 @@ class Panels {
     Environment &env_;
     std::optional<Settings> settings_draft_;
     std::optional<Model> model_draft_;
+    TransformPanel transform_panel_; // the Model Interface's last section
     int model_draft_index_ = -1;
     std::uint64_t draft_version_ = 0;
     std::optional<Settings> confirm_settings_; // a shorter max time, waiting for confirmation
