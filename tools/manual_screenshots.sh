@@ -126,6 +126,14 @@ click 110 601                  # the ball's row
 ctrl_click 110 618             # and the cube's: the Model Interface edits both, mixed fields say so
 xdotool mousemove --window "$win" 700 650
 shot multi-edit
+# The transform gizmo (docs/manual.md, "Transforming the camera and models"): the cube selected,
+# `w` (Translate), the pointer over its X arrow, which turns yellow.
+cp assets/scenes/simple.lua "$work/"
+start_editor simple.lua
+click 752 280                  # the cube (the view right of the Animator Interface, above the Timeline)
+xdotool key w
+xdotool mousemove --window "$win" 617 280
+shot 10-gizmo
 # Autosave and recovery: an edit autosaved (every second here), the editor killed, started again.
 cp assets/animations/drop.ani "$work/drop.ani"
 touch -d '1 minute ago' "$work/drop.ani"   # the autosave is newer: offered

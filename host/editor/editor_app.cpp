@@ -3,6 +3,7 @@
 #include "audio/live_player.hpp"
 #include "editor/editor_panels.hpp"
 #include "editor/editor_session.hpp"
+#include "editor/gizmo_drawing.hpp"
 #include "editor/help.hpp"
 #include "editor/recovery.hpp"
 #include "editor/screen_state.hpp"
@@ -27,6 +28,7 @@
 #include <cstring>
 #include <deque>
 #include <iostream>
+#include <memory>
 #include <vector>
 
 namespace animator {
@@ -106,11 +108,13 @@ void install_callbacks(GLFWwindow *window) {
 
 // The mouse in the 3D view: a press starts a drag (Camera mode: any button; other modes: the
 // middle and right buttons), a left press and release without moving is a click that selects.
+// In those modes a left press on a handle of the transform gizmo drags the handle instead.
 // With Alt held (Blender's "emulate 3 button mouse" and Maya's navigation), a drag looks
 // around in the free view instead: left orbits, middle pans, right zooms; no mode uses Alt.
 class Pointer {
   public:
-    void press(EditorSession &session, const InputEvent &e, int viewport_height) {
+    void press(EditorSession &session, const InputEvent &e, const ScreenRect &view) {
+        const int viewport_height = static_cast<int>(std::lround(view.height));
         if (button_ >= 0) return;
         button_ = e.code;
         start_ = glm::dvec2(e.x, e.y);
@@ -123,6 +127,11 @@ class Pointer {
             return;
         }
         const auto b = static_cast<DragButton>(e.code);
+        if (b == DragButton::Left && session.mode() != EditMode::Camera) {
+            const GizmoView gizmo_view = session.gizmo_view(static_cast<int>(std::lround(view.width)), viewport_height);
+            gizmo_ = session.begin_gizmo_drag(start_ - glm::dvec2(view.x, view.y), gizmo_view);
+            if (gizmo_) return;
+        }
         if (session.mode() == EditMode::Camera || b != DragButton::Left) session.begin_drag(b, viewport_height);
     }
     // Returns the click's position when the release is a click of the left button.
@@ -137,8 +146,11 @@ class Pointer {
             return std::nullopt;
         }
         const bool click = std::abs(delta.x) < 4 && std::abs(delta.y) < 4;
+        const bool on_gizmo = gizmo_;
+        gizmo_ = false;
         if (click) {
             session.cancel_drag();
+            if (on_gizmo) return std::nullopt; // a click on a handle selects nothing
             return e.code == GLFW_MOUSE_BUTTON_LEFT ? std::optional<glm::dvec2>(glm::dvec2(e.x, e.y)) : std::nullopt;
         }
         session.update_drag(delta);
@@ -170,6 +182,7 @@ class Pointer {
     int button_ = -1, last_button_ = -1;
     glm::dvec2 start_{0.0};
     bool looking_ = false;
+    bool gizmo_ = false; // the left button drags a gizmo handle
     FreeView view_start_;
     int viewport_height_ = 1;
 };
@@ -370,6 +383,7 @@ int run_editor(const EditorOptions &options) {
         const bool signals = signals_wanted();
         FrameRate frame_rate;
         PathCache path_lines;
+        std::unique_ptr<ScreenOverlay> gizmo_overlay; // made with the first gizmo drawn
         long play_frames = 0;      // frames drawn since playback started
         double play_started = -1.0; // when it started (wall seconds), -1 while not playing
         std::uint64_t previewed = 0; // the drag's document last said baked (signals)
@@ -415,8 +429,7 @@ int run_editor(const EditorOptions &options) {
                     // Drags are in window coordinates, so the viewport height is too (on a
                     // HiDPI screen the framebuffer has more pixels than the window): the 3D
                     // view's, which ends above the Timeline.
-                    if (!io.WantCaptureMouse && !pointer.down())
-                        pointer.press(session, e, static_cast<int>(std::lround(view.height)));
+                    if (!io.WantCaptureMouse && !pointer.down()) pointer.press(session, e, view);
                     break;
                 case InputEvent::Release:
                     if (auto click = pointer.release(session, e)) {
@@ -479,7 +492,7 @@ int run_editor(const EditorOptions &options) {
                                        : (n > 0 ? "hid " + std::to_string(n) + " model" + (n == 1 ? "" : "s") + " (ALT+H shows them)"
                                                 : "nothing selected to hide"));
                     } else if (!ctrl && !alt && !shift &&
-                               (e.code == GLFW_KEY_G || e.code == GLFW_KEY_S || e.code == GLFW_KEY_K ||
+                               (e.code == GLFW_KEY_G || e.code == GLFW_KEY_K ||
                                 e.code == GLFW_KEY_N || e.code == GLFW_KEY_TAB)) {
                         // Keys other programs bind: where to look here instead (help.cpp).
                         const std::string key = e.code == GLFW_KEY_TAB ? "TAB" : std::string(1, static_cast<char>('a' + (e.code - GLFW_KEY_A)));
@@ -502,6 +515,12 @@ int run_editor(const EditorOptions &options) {
                         panels.copy_keys(session); // never `c`'s free view
                     } else if (e.code == GLFW_KEY_V && ctrl) {
                         panels.paste_keys(session);
+                    } else if ((e.code == GLFW_KEY_W || e.code == GLFW_KEY_E || e.code == GLFW_KEY_S) && !ctrl) {
+                        // Maya's W and E, Blender's S; not during a drag (it would change what it does).
+                        if (!pointer.down())
+                            session.set_mode(e.code == GLFW_KEY_W   ? EditMode::Translate
+                                             : e.code == GLFW_KEY_E ? EditMode::Rotate
+                                                                    : EditMode::Scale);
                     } else if (e.code == GLFW_KEY_P && !ctrl) {
                         session.set_paths_on(!session.paths_on());
                     } else if ((e.code == GLFW_KEY_C && !ctrl) || e.code == GLFW_KEY_KP_0) {
@@ -529,6 +548,9 @@ int run_editor(const EditorOptions &options) {
             }
             double cx = 0, cy = 0;
             glfwGetCursorPos(window, &cx, &cy);
+            // CTRL snaps a gizmo drag (gizmo.hpp), pressed or let go at any time during it.
+            session.set_snap(glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS ||
+                             glfwGetKey(window, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS);
             pointer.move(session, glm::dvec2(cx, cy));
 
             if (panels.files().take_quit_request()) window_state.close_requested = true;
@@ -624,6 +646,19 @@ int run_editor(const EditorOptions &options) {
             if (target.width > 0 && target.height > 0) {
                 renderer.draw(session.shown_frame(), target, session.selection(), session.overlapping_models());
                 renderer.draw_paths(path_lines.get(session), target);
+                // The gizmo over everything, its handle under the cursor (or dragged) highlighted.
+                const GizmoView gizmo_view = session.gizmo_view(static_cast<int>(std::lround(view.width)),
+                                                                static_cast<int>(std::lround(view.height)));
+                if (const auto gizmo = session.gizmo(gizmo_view)) {
+                    GizmoHandle lit = session.gizmo_handle();
+                    if (!pointer.down() && !io.WantCaptureMouse)
+                        lit = gizmo_hit(*gizmo, gizmo_view, glm::dvec2(cx - view.x, cy - view.y));
+                    if (!gizmo_overlay) gizmo_overlay = std::make_unique<ScreenOverlay>();
+                    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                    glViewport(target.x, target.y, target.width, target.height);
+                    gizmo_overlay->draw(gizmo_triangles(gizmo_shapes(*gizmo, gizmo_view), lit),
+                                        static_cast<float>(view.width), static_cast<float>(view.height));
+                }
             }
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, fb_w, fb_h);

@@ -876,6 +876,9 @@ void Panels::model_panel(EditorSession &session, float width, float height, floa
         if (asset_combo("Moving", m.moving_sound, sounds, mixed(ModelField::MovingSound))) done = ModelField::MovingSound;
         tip("Looped while the model moves");
     }
+    std::string transform_error;
+    if (transform_panel_.draw(session, transform_error) || !transform_error.empty())
+        commit(transform_error.empty(), transform_error);
     ImGui::PopItemWidth();
     ImGui::End();
     if (done) {

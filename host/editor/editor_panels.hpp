@@ -9,6 +9,7 @@
 #include "editor/editor_session.hpp"
 #include "editor/file_menu.hpp"
 #include "editor/output_dialogs.hpp"
+#include "editor/transform_panel.hpp"
 #include "editor/view_layout.hpp"
 
 #include <functional>
@@ -94,6 +95,7 @@ class Panels {
     Environment &env_;
     std::optional<Settings> settings_draft_;
     std::optional<Model> model_draft_;
+    TransformPanel transform_panel_; // the Model Interface's last section
     int model_draft_index_ = -1;
     std::uint64_t draft_version_ = 0;
     std::optional<Settings> confirm_settings_; // a shorter max time, waiting for confirmation

@@ -233,8 +233,9 @@ Frame EditorSession::frame() const {
         f.camera = drag_camera(drag_->camera, drag_->button, drag_->delta, drag_->metres_per_pixel);
         return f;
     }
-    for (const auto &[m, start] : drag_->models) {
-        const ModelState s = drag_model(start, mode_, drag_->button, drag_->delta, drag_->metres_per_pixel);
+    for (size_t i = 0; i < drag_->models.size(); ++i) {
+        const int m = drag_->models[i].first;
+        const ModelState s = dragged_state(*drag_, i);
         ModelPose &pose = f.models[static_cast<size_t>(m)];
         pose.center = s.center;
         pose.angles = s.angles;
@@ -276,7 +277,7 @@ void EditorSession::begin_drag(DragButton button, int viewport_height) {
     if (playing_ || (mode_ != EditMode::Camera && selection_.empty())) return;
     const Frame f = timeline_->evaluate(std::min(time(), timeline_->baked_until()));
     Drag d{button, viewport_height, glm::dvec2(0.0), {}, f.camera,
-           metres_per_pixel(view_depth(f), f.camera.fov_degrees, viewport_height)};
+           metres_per_pixel(view_depth(f), f.camera.fov_degrees, viewport_height), std::nullopt};
     if (mode_ != EditMode::Camera)
         for (int m : selection_) d.models.emplace_back(m, state_now(m, f));
     drag_ = d;
@@ -285,15 +286,69 @@ void EditorSession::begin_drag(DragButton button, int viewport_height) {
 void EditorSession::update_drag(glm::dvec2 delta) {
     if (!drag_ || drag_->delta == delta) return;
     drag_->delta = delta;
+    update_gizmo_change();
     preview_stale_ = true;
+}
+
+ModelState EditorSession::dragged_state(const Drag &d, size_t i) const {
+    const ModelState &start = d.models[i].second;
+    if (d.gizmo) return apply_gizmo_change(start, d.gizmo->parents[i], d.gizmo->change);
+    return drag_model(start, mode_, d.button, d.delta, d.metres_per_pixel);
+}
+
+void EditorSession::update_gizmo_change() {
+    if (!drag_ || !drag_->gizmo) return;
+    auto &g = *drag_->gizmo;
+    // A ring's turn goes on from the last one, so it counts past half a turn.
+    g.change = gizmo_drag(g.gizmo, g.view, g.handle, g.start, g.start + drag_->delta, g.snap, g.change.degrees);
+}
+
+void EditorSession::set_snap(bool on) {
+    if (!drag_ || !drag_->gizmo || drag_->gizmo->snap == on) return;
+    drag_->gizmo->snap = on;
+    update_gizmo_change();
+    preview_stale_ = true;
+}
+
+GizmoView EditorSession::gizmo_view(int width, int height) const {
+    GizmoView v;
+    v.camera = shown_frame().camera;
+    v.width = std::max(width, 1);
+    v.height = std::max(height, 1);
+    return v;
+}
+
+std::optional<Gizmo> EditorSession::gizmo(const GizmoView &view) const {
+    if (mode_ == EditMode::Camera || playing_ || last_selected_ < 0 || !selection_.count(last_selected_))
+        return std::nullopt;
+    const Frame f = frame();
+    return place_gizmo(view, mode_, gizmo_target(doc_.models(), f.models, last_selected_));
+}
+
+bool EditorSession::begin_gizmo_drag(glm::dvec2 cursor, const GizmoView &view) {
+    if (drag_) return false;
+    const auto g = gizmo(view);
+    if (!g) return false;
+    const GizmoHandle handle = gizmo_hit(*g, view, cursor);
+    if (handle == GizmoHandle::None) return false;
+    begin_drag(DragButton::Left, view.height);
+    if (!drag_) return false;
+    const Frame f = frame();
+    const std::vector<glm::dmat3> parents = parent_matrices(doc_.models(), f.models);
+    Drag::OnGizmo on{*g, view, handle, cursor, false, {}, {}};
+    on.change.mode = mode_;
+    for (const auto &[m, start] : drag_->models) on.parents.push_back(parents[static_cast<size_t>(m)]);
+    drag_->gizmo = std::move(on);
+    update_gizmo_change();
+    return true;
 }
 
 std::optional<Document> EditorSession::dragged_document() const {
     if (!drag_ || mode_ == EditMode::Camera) return std::nullopt;
     std::vector<std::pair<int, ModelState>> after;
-    for (const auto &[m, start] : drag_->models) {
-        const ModelState s = drag_model(start, mode_, drag_->button, drag_->delta, drag_->metres_per_pixel);
-        if (!(s == start)) after.emplace_back(m, s);
+    for (size_t i = 0; i < drag_->models.size(); ++i) {
+        const ModelState s = dragged_state(*drag_, i);
+        if (!(s == drag_->models[i].second)) after.emplace_back(drag_->models[i].first, s);
     }
     if (after.empty()) return std::nullopt;
     Document doc = doc_;
@@ -383,6 +438,23 @@ std::unique_ptr<Edit> EditorSession::transform_edit(const std::vector<std::pair<
     return std::make_unique<CompositeEdit>("transform models", std::move(edits));
 }
 
+ModelState EditorSession::state_at_time(int model) const {
+    if (drag_)
+        for (size_t i = 0; i < drag_->models.size(); ++i)
+            if (drag_->models[i].first == model) return dragged_state(*drag_, i);
+    return state_now(model, frame());
+}
+
+bool EditorSession::key_states(const std::vector<std::pair<int, ModelState>> &states, std::string *error) {
+    if (drag_ || states.empty()) return false;
+    for (const auto &[m, s] : states)
+        if (m < 0 || m >= static_cast<int>(doc_.models().size())) {
+            if (error) *error = "no model " + std::to_string(m);
+            return false;
+        }
+    return perform(transform_edit(states, std::nullopt), error);
+}
+
 void EditorSession::end_drag() {
     if (!drag_) return;
     const Drag d = *drag_;
@@ -393,9 +465,9 @@ void EditorSession::end_drag() {
         return;
     }
     std::vector<std::pair<int, ModelState>> after;
-    for (const auto &[m, start] : d.models) {
-        const ModelState s = drag_model(start, mode_, d.button, d.delta, d.metres_per_pixel);
-        if (!(s == start)) after.emplace_back(m, s);
+    for (size_t i = 0; i < d.models.size(); ++i) {
+        const ModelState s = dragged_state(d, i);
+        if (!(s == d.models[i].second)) after.emplace_back(d.models[i].first, s);
     }
     if (!after.empty()) perform(transform_edit(after, std::nullopt));
 }

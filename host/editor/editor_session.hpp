@@ -6,6 +6,7 @@
 
 #include "document/history.hpp"
 #include "editor/free_view.hpp"
+#include "editor/gizmo.hpp"
 #include "editor/manipulation.hpp"
 #include "editor/model_fields.hpp"
 #include "editor/motion_paths.hpp"
@@ -109,6 +110,23 @@ class EditorSession {
     void cancel_drag() { drag_.reset(); }
     bool dragging() const { return drag_.has_value(); }
     glm::dvec2 drag_delta() const { return drag_ ? drag_->delta : glm::dvec2(0.0); } // pixels
+    // The transform gizmo (gizmo.hpp) in a view of the shown frame `width` x `height` pixels:
+    // at the last selected model as the frame shows it (following a drag), none in Camera mode,
+    // with nothing selected, or while playing.
+    GizmoView gizmo_view(int width, int height) const;
+    std::optional<Gizmo> gizmo(const GizmoView &view) const;
+    // A left press at `cursor` (the view's pixels): on a handle, a drag of it begins and this is
+    // true; update_drag() takes the cursor's offset from `cursor`, and the drag previews, cancels
+    // and ends (one undoable edit) as the other drags do. CTRL (set_snap) snaps it.
+    bool begin_gizmo_drag(glm::dvec2 cursor, const GizmoView &view);
+    GizmoHandle gizmo_handle() const { return drag_ && drag_->gizmo ? drag_->gizmo->handle : GizmoHandle::None; }
+    void set_snap(bool on);
+    // A model's state at the current time as a transformation starts from it: its key here,
+    // else its interpolated or simulated state (with a drag in progress applied).
+    ModelState state_at_time(int model) const;
+    // Keys these models' states at the current time (a new keyframe if there is none), one
+    // undoable edit: the Transform fields' change. False (why in `error`) and no change if refused.
+    bool key_states(const std::vector<std::pair<int, ModelState>> &states, std::string *error = nullptr);
     // The scroll wheel in Camera mode: moves the camera along its view, one undoable edit.
     void scroll(double notches);
 
@@ -216,7 +234,20 @@ class EditorSession {
         std::vector<std::pair<int, ModelState>> models; // at the start
         CameraState camera;                              // at the start
         double metres_per_pixel;
+        struct OnGizmo {
+            Gizmo gizmo;
+            GizmoView view;
+            GizmoHandle handle = GizmoHandle::None;
+            glm::dvec2 start{0.0};
+            bool snap = false;
+            GizmoChange change;               // for the drag so far
+            std::vector<glm::dmat3> parents; // each dragged model's parent (world, linear)
+        };
+        std::optional<OnGizmo> gizmo; // a gizmo handle's drag, else a button's (drag_model)
     };
+    // Model `i` of the drag, as the drag so far leaves it.
+    ModelState dragged_state(const Drag &d, size_t i) const;
+    void update_gizmo_change();
     std::int64_t history_key() const;
     // open(): reads `file` as the document at `path`.
     bool load(const std::filesystem::path &file, const std::filesystem::path &path, std::string &error);

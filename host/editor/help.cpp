@@ -35,6 +35,7 @@ const std::vector<HelpSection> &help_sections() {
              {"F2", "rename the last selected model in the Outliner"},
              {"`q`, CTRL+Q", "quit; with unsaved changes it asks first"},
              {"ESC", "cancel a drag (also a look-around drag: the view goes back)"},
+             {"`w`, `e`, `s`", "Translate, Rotate, Scale mode (the gizmo's handles)"},
          }},
         {"Mouse in the 3D view (choose a mode in the Animator Interface)",
          {
@@ -44,6 +45,10 @@ const std::vector<HelpSection> &help_sections() {
              {"Rotate: middle / right drag", "turn the selected models about y / about x and z"},
              {"Translate: middle / right drag", "move them along z / on x and y with the cursor"},
              {"Scale: middle / right drag", "scale z / scale x and y (right and up grow)"},
+             {"Translate: left drag an arrow / square / centre", "move along that axis / in that plane / in the view's plane"},
+             {"Rotate: left drag a ring", "turn that one Euler angle, following the cursor round"},
+             {"Scale: left drag a box / the centre box", "scale that axis / all three"},
+             {"CTRL during a gizmo drag", "snap: 0.1 m, 15 degrees, scale factors 0.1"},
              {"any drag at a time with no keyframe", "makes a keyframe there, keying what moved"},
          }},
         {"Free view (looking around: never an edit)",
@@ -58,7 +63,6 @@ const std::vector<HelpSection> &help_sections() {
         {"Coming from Blender or Maya (these keys say where to look)",
          {
              {"`g`", "Blender's grab: choose Translate and drag with the right button"},
-             {"`s`", "Blender scales, Maya sets a key: Scale mode scales here, and `i` keys"},
              {"`k`", "Blender's keying sets: `i` keys the selected models"},
              {"TAB", "Blender's Edit Mode: meshes are not edited here; a scene file or a mesh file defines them"},
              {"`n`", "Blender's sidebar: the Model Interface (right) shows the selected model"},
