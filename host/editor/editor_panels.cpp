@@ -184,6 +184,14 @@ bool Panels::delete_keys(EditorSession &session) {
 
 void Panels::copy_keys(EditorSession &session) { say(dope_sheet_.copy(session)); }
 
+void Panels::duplicate_models(EditorSession &session) {
+    models_.duplicate(session, [this](const std::string &m, bool error) { say(m, error); });
+}
+
+void Panels::ask_delete_models(const EditorSession &session) {
+    models_.ask_delete(session, [this](const std::string &m, bool error) { say(m, error); });
+}
+
 void Panels::paste_keys(EditorSession &session) { say(dope_sheet_.paste(session)); }
 
 void Panels::animator_panel(EditorSession &session, float height, double wall) {
@@ -442,8 +450,10 @@ void Panels::outliner(EditorSession &session) {
     const float row = ImGui::GetFontSize() + 4.0f, pad = 4.0f;
     const float rows = static_cast<float>(std::max(count, 1)) * row + 2.0f * pad;
     const float room = ImGui::GetContentRegionAvail().y;
+    // The Add model, Duplicate and Delete buttons keep a line under the list.
+    const float buttons = ImGui::GetFrameHeightWithSpacing();
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8.0f, pad));
-    ImGui::BeginChild("outliner", ImVec2(0, std::max(std::min(rows, room), 6.0f * row + 2.0f * pad)), true);
+    ImGui::BeginChild("outliner", ImVec2(0, std::max(std::min(rows, room - buttons), 6.0f * row + 2.0f * pad)), true);
     ImGui::PopStyleVar();
     ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(4.0f, 1.0f));
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(4.0f, 2.0f));
@@ -451,6 +461,7 @@ void Panels::outliner(EditorSession &session) {
     for (int m : children[static_cast<size_t>(count)]) outliner_row(session, m, children, hidden, reveal);
     ImGui::PopStyleVar(2);
     ImGui::EndChild();
+    models_.buttons(session, [this](const std::string &m, bool error) { say(m, error); });
 }
 
 void Panels::outliner_row(EditorSession &session, int model, const std::vector<std::vector<int>> &children,
@@ -771,6 +782,7 @@ void Panels::model_panel(EditorSession &session, float width, float height, floa
 }
 
 void Panels::dialogs(EditorSession &session) {
+    models_.dialogs(session, env_.assets, [this](const std::string &m, bool error) { say(m, error); });
     if (error_pending_) {
         ImGui::OpenPopup("Error");
         error_pending_ = false;

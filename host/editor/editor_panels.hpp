@@ -7,6 +7,7 @@
 
 #include "editor/dope_sheet.hpp"
 #include "editor/editor_session.hpp"
+#include "editor/model_commands.hpp"
 #include "editor/view_layout.hpp"
 
 #include <functional>
@@ -52,6 +53,10 @@ class Panels {
     bool dialog_open() const { return dialog_open_; }
     // The Outliner's name field for model `model` (a double-click on its row, or F2).
     void start_rename(int model);
+    // SHIFT+A, SHIFT+D and DELETE with no keys selected in the Timeline (model_commands.hpp).
+    void ask_add_model() { models_.ask_add(); }
+    void duplicate_models(EditorSession &session);
+    void ask_delete_models(const EditorSession &session);
 
     // Set by the window when the user asks to quit with unsaved changes; the panel asks.
     void ask_to_quit() { quit_asked_ = true; }
@@ -100,6 +105,7 @@ class Panels {
     float placed_at_width_ = 0.0f; // the window width the Model Interface was placed for
     float placed_at_bottom_ = 0.0f; // and the bottom it was kept above (the Timeline's top)
     DopeSheet dope_sheet_;
+    ModelCommands models_;
     // The Outliner: the model being renamed (-1: none), its field, and whether the field has
     // been active yet (it takes the keyboard the frame after it appears).
     int renaming_ = -1;
