@@ -424,7 +424,11 @@ void Panels::start_rename(int model) {
 void Panels::outliner(EditorSession &session) {
     constexpr float kTop = 540.0f; // in the window, below a one-line status message
     if (ImGui::GetCursorPosY() < kTop) ImGui::SetCursorPosY(kTop);
-    if (!ImGui::CollapsingHeader("Outliner", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const bool open = ImGui::CollapsingHeader("Outliner", ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_AllowItemOverlap);
+    // Add model, Duplicate and Delete on the header's line: under the list they would push
+    // the panel past the window's height at 1280x720.
+    models_.buttons(session, [this](const std::string &m, bool error) { say(m, error); });
+    if (!open) {
         renaming_ = -1;
         return;
     }
@@ -450,10 +454,8 @@ void Panels::outliner(EditorSession &session) {
     const float row = ImGui::GetFontSize() + 4.0f, pad = 4.0f;
     const float rows = static_cast<float>(std::max(count, 1)) * row + 2.0f * pad;
     const float room = ImGui::GetContentRegionAvail().y;
-    // The Add model, Duplicate and Delete buttons keep a line under the list.
-    const float buttons = ImGui::GetFrameHeightWithSpacing();
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8.0f, pad));
-    ImGui::BeginChild("outliner", ImVec2(0, std::max(std::min(rows, room - buttons), 6.0f * row + 2.0f * pad)), true);
+    ImGui::BeginChild("outliner", ImVec2(0, std::max(std::min(rows, room), 6.0f * row + 2.0f * pad)), true);
     ImGui::PopStyleVar();
     ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(4.0f, 1.0f));
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(4.0f, 2.0f));
@@ -461,7 +463,6 @@ void Panels::outliner(EditorSession &session) {
     for (int m : children[static_cast<size_t>(count)]) outliner_row(session, m, children, hidden, reveal);
     ImGui::PopStyleVar(2);
     ImGui::EndChild();
-    models_.buttons(session, [this](const std::string &m, bool error) { say(m, error); });
 }
 
 void Panels::outliner_row(EditorSession &session, int model, const std::vector<std::vector<int>> &children,

@@ -63,15 +63,20 @@ void ModelCommands::ask_delete(const EditorSession &session, const Say &say) {
 }
 
 void ModelCommands::buttons(EditorSession &session, const Say &say) {
-    if (ImGui::Button("Add model")) ask_add();
+    // Small, right-aligned on the line of the header they follow.
+    const ImGuiStyle &style = ImGui::GetStyle();
+    const float width = ImGui::CalcTextSize("Add modelDuplicateDelete").x + 6.0f * style.FramePadding.x +
+                        2.0f * style.ItemSpacing.x;
+    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - width - style.FramePadding.x);
+    if (ImGui::SmallButton("Add model")) ask_add();
     tooltip("Add a model of a mesh on the asset path or of any mesh file (OBJ, PLY, STL, glTF),\n"
             "where the view looks, keyed at t = 0 (SHIFT+A). One edit: u undoes it.");
     ImGui::SameLine();
-    if (ImGui::Button("Duplicate")) duplicate(session, say);
+    if (ImGui::SmallButton("Duplicate")) duplicate(session, say);
     tooltip("Copy the selected models (and what hangs under them) with their keys, beside them\n"
             "along +x by their size (SHIFT+D). One edit: u undoes it.");
     ImGui::SameLine();
-    if (ImGui::Button("Delete")) ask_delete(session, say);
+    if (ImGui::SmallButton("Delete")) ask_delete(session, say);
     tooltip("Delete the selected models and what hangs under them, after asking (DELETE, when no\n"
             "keys are selected in the Timeline). One edit: u undoes it.");
 }

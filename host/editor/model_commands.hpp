@@ -2,7 +2,7 @@
 // deleting models"): SHIFT+A and the Add model button open a dialog listing the meshes on the
 // asset path with a field for any mesh file; SHIFT+D duplicates the selected models; DELETE
 // (when no keys are selected in the Timeline) and the Delete button ask first, naming what goes,
-// Enter deleting and ESC keeping them. The buttons sit at the end of the Outliner. Everything
+// Enter deleting and ESC keeping them. The buttons sit on the Outliner's header line. Everything
 // goes through the session (editor_session.hpp), each one undoable edit.
 #pragma once
 
@@ -24,7 +24,7 @@ class ModelCommands {
     // Asks "Delete 'cube' and the 2 models under it?"; with nothing selected says so.
     void ask_delete(const EditorSession &session, const Say &say);
 
-    // The row of buttons at the end of the Outliner.
+    // The buttons, on the line of the item drawn last (the Outliner's header), at its right.
     void buttons(EditorSession &session, const Say &say);
     // The Add model and Delete dialogs, when asked for (modal: the editor's keys wait).
     // The asset path is listed when the Add model dialog opens.
