@@ -140,4 +140,11 @@ start_editor drop.ani HOME="$work/home" XDG_STATE_HOME=
 grep -q '^animator: Recover unsaved work' "$work/log" || { echo "no recovery offered:" >&2; cat "$work/log" >&2; exit 1; }
 xdotool mousemove --window "$win" 700 650
 shot recovery-dialog 1.0
+# Adding models (docs/manual.md, "Adding, duplicating and deleting models"): SHIFT+A's dialog
+# over the demo scene, "c" typed to narrow the meshes listed.
+start_editor simple.lua
+xdotool key shift+a; sleep 0.5
+xdotool type --delay 80 c
+xdotool mousemove --window "$win" 700 650
+shot add-model
 echo "wrote the screenshots to $out"

@@ -91,7 +91,7 @@ void ModelCommands::dialogs(EditorSession &session, const AssetPaths &assets, co
     }
     ImGui::SetNextWindowSize(ImVec2(420.0f, 0.0f));
     if (ImGui::BeginPopupModal("Add model", nullptr, ImGuiWindowFlags_NoResize)) {
-        ImGui::TextUnformatted("A mesh on the asset path, or a mesh file (OBJ, PLY, STL, .glb, .gltf):");
+        ImGui::TextUnformatted("A mesh on the asset path, or a mesh file by its path\n(OBJ, PLY, STL, .glb, or .gltf with its buffers inside):");
         if (add_frames_++ == 0) ImGui::SetKeyboardFocusHere();
         ImGui::SetNextItemWidth(-1.0f);
         const bool entered = ImGui::InputTextWithHint("##mesh", "type to search, or a path such as meshes/rock.ply",
