@@ -210,9 +210,40 @@ LoadedMesh load_mesh(const std::filesystem::path &path) {
     // compares every corner near a position with every other: quadratic in a file that puts
     // thousands at one point.
     const unsigned normals = format == MeshFormat::Obj ? aiProcess_GenSmoothNormals : 0u; // else smooth_normals()
-    const aiScene *scene = importer.ReadFile(
-        assimp_name, aiProcess_Triangulate | aiProcess_PreTransformVertices | normals | aiProcess_SortByPType |
-                         aiProcess_ValidateDataStructure);
+    const unsigned steps = aiProcess_Triangulate | aiProcess_PreTransformVertices | normals | aiProcess_SortByPType |
+                           aiProcess_ValidateDataStructure;
+    const aiScene *scene = nullptr;
+    if (format == MeshFormat::Obj) {
+        scene = importer.ReadFile(assimp_name, steps);
+    } else {
+        // Read, then the primitive types each mesh claims made those of its faces, then the
+        // steps: assimp's PLY importer can claim polygons a mesh does not have, and its
+        // triangulation then aborts the program on an assertion (the mesh fuzzer's finding).
+        scene = importer.ReadFile(assimp_name, aiProcess_ValidateDataStructure);
+        if (scene && !(scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
+            for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+                aiMesh *mesh = scene->mMeshes[m];
+                unsigned types = 0;
+                std::size_t work = 0;
+                for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+                    const unsigned n = mesh->mFaces[f].mNumIndices;
+                    // The OBJ limits of a polygon (obj_scan.hpp): triangulation is quadratic.
+                    work += std::size_t{n} * n;
+                    if (n > kMaxPolygonCorners || work > kMaxTriangulationWork)
+                        throw AssetError(name + ": face " + std::to_string(f + 1) + " has " + std::to_string(n) +
+                                         " corners; at most " + std::to_string(kMaxPolygonCorners) +
+                                         " a face, and the faces' corners squared at most " +
+                                         std::to_string(kMaxTriangulationWork) + " in all");
+                    if (n == 0) throw AssetError(name + ": face " + std::to_string(f + 1) + " has no corners");
+                    types |= n == 1 ? aiPrimitiveType_POINT : n == 2 ? aiPrimitiveType_LINE
+                                                            : n == 3 ? aiPrimitiveType_TRIANGLE
+                                                                     : aiPrimitiveType_POLYGON;
+                }
+                mesh->mPrimitiveTypes = types;
+            }
+            scene = importer.ApplyPostProcessing(steps & ~unsigned{aiProcess_ValidateDataStructure});
+        }
+    }
     if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
         const std::string reason = importer.GetErrorString();
         // assimp's validation words an empty file in terms of its own structures.

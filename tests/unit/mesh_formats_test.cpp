@@ -310,3 +310,10 @@ TEST_CASE("a file of one format named as another is refused, naming the file", "
     const fs::path glb = write("not.glb", tetra_stl_ascii());
     CHECK_THROWS_WITH(load_mesh(glb), Catch::StartsWith(glb.string() + ": "));
 }
+
+TEST_CASE("a PLY whose face has no corners is refused, not left to abort assimp's triangulation", "[mesh]") {
+    // The mesh fuzzer's finding: assimp's PLY importer made a face of no corners, which its
+    // triangulation takes for a polygon and then aborts the program on an assertion.
+    const fs::path file = test::source_dir() / "tests" / "fuzz" / "seeds" / "mesh" / "ply_face_without_corners.ply";
+    CHECK_THROWS_WITH(load_mesh(file), Catch::StartsWith(file.string() + ": "));
+}
