@@ -177,4 +177,12 @@ for _ in $(seq 600); do [ "$(ls "$work/drop_render" 2>/dev/null | wc -l)" -ge 20
 shot render-progress 0.1
 xdotool keydown Escape; sleep 0.1; xdotool keyup Escape   # cancel
 for _ in $(seq 600); do grep -q '^animator: render cancelled' "$work/log" && break; sleep 0.1; done
+
+# Adding models (docs/manual.md, "Adding, duplicating and deleting models"): SHIFT+A's dialog
+# over the demo scene, "c" typed to narrow the meshes listed.
+start_editor simple.lua
+xdotool key shift+a; sleep 0.5
+xdotool type --delay 80 c
+xdotool mousemove --window "$win" 700 650
+shot add-model
 echo "wrote the screenshots to $out"

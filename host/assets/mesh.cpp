@@ -1,8 +1,10 @@
 #include "assets/mesh.hpp"
 
 #include "assets/asset_paths.hpp"
+#include "assets/mesh_format_scan.hpp"
 #include "assets/obj_scan.hpp"
 
+#include <assimp/BaseImporter.h>
 #include <assimp/IOStream.hpp>
 #include <assimp/IOSystem.hpp>
 #include <assimp/Importer.hpp>
@@ -27,18 +29,18 @@ namespace {
 
 bool finite(const aiVector3D &v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// The only file assimp may open: the mesh's bytes, under a name of ours ending in .obj, so that
-// the OBJ importer reads them whatever the file is called (a mesh may be a path relative to its
-// document, and assimp's other forty importers are code no asset needs). Every other name is
-// refused. An OBJ names material libraries ('mtllib') by any path, and when one cannot be
+// The only file assimp may open: the mesh's bytes, under a name of ours ending in .obj, .ply,
+// .stl, .glb or .gltf (mesh_format_scan.hpp, by the file's extension), so that one of those five
+// importers reads them whatever else the file is called (a mesh may be a path relative to its
+// document, and assimp's other importers are code no asset needs). Every other name is
+// refused: a glTF's external buffers (refused before, with their names) and an OBJ's materials. An OBJ names material libraries ('mtllib') by any path, and when one cannot be
 // opened the importer tries "<mesh>.mtl" beside it: assimp's MTL parser crashes on a 16-byte
 // file (the mesh fuzzer's finding), and a FIFO blocks the reader forever. animator takes
 // materials from the document.
 class OnlyTheMesh : public Assimp::IOSystem {
   public:
-    static constexpr const char *kName = "mesh.obj";
-    explicit OnlyTheMesh(const std::string &bytes) : bytes_(bytes) {}
-    bool Exists(const char *file) const override { return file && std::strcmp(file, kName) == 0; }
+    OnlyTheMesh(const std::string &bytes, const char *name) : bytes_(bytes), name_(name) {}
+    bool Exists(const char *file) const override { return file && std::strcmp(file, name_) == 0; }
     char getOsSeparator() const override { return '/'; }
     Assimp::IOStream *Open(const char *file, const char *mode) override {
         if (!Exists(file) || !mode || mode[0] != 'r') return nullptr;
@@ -48,7 +50,28 @@ class OnlyTheMesh : public Assimp::IOSystem {
 
   private:
     const std::string &bytes_; // outlives the importer
+    const char *name_;
 };
+
+// Takes every importer out of `importer` but those of the extension of `name` ("mesh.glb":
+// glTF's). When the importers of an extension all decline a file, assimp tries every other
+// importer's signature check (a "mesh.glb" holding an ASCII STL was read as one): with only
+// those left, such a file is refused. The importer owns its importers, so those taken out are
+// deleted here.
+void keep_only_importers_of(Assimp::Importer &importer, const std::string &name) {
+    const std::string extension = name.substr(name.rfind('.') + 1);
+    std::vector<Assimp::BaseImporter *> others;
+    for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+        Assimp::BaseImporter *candidate = importer.GetImporter(i);
+        std::set<std::string> extensions;
+        candidate->GetExtensionList(extensions);
+        if (!extensions.count(extension)) others.push_back(candidate);
+    }
+    for (Assimp::BaseImporter *other : others) {
+        importer.UnregisterLoader(other);
+        delete other;
+    }
+}
 
 // The file's bytes, refusing one larger than kMaxMeshFileBytes before reading it.
 std::string read_mesh_file(const std::filesystem::path &path) {
@@ -81,6 +104,34 @@ struct VertexKeyHash {
         return h;
     }
 };
+
+// Smooth normals for a mesh that has none, as assimp gives an OBJ's: at each position the sum of
+// the unit normals of the faces with a corner there, made unit. Computed here for the other
+// formats, since assimp's step gives a vertex shared by several faces (glTF's indexed ones) the
+// normal of the last of them only; the OBJ importer makes a vertex per corner, so its normals
+// stay assimp's, as they always were.
+std::vector<aiVector3D> smooth_normals(const aiMesh &mesh) {
+    std::map<std::tuple<float, float, float>, aiVector3D> sums;
+    const auto key = [&](unsigned v) {
+        const aiVector3D &p = mesh.mVertices[v];
+        return std::make_tuple(p.x + 0.0f, p.y + 0.0f, p.z + 0.0f);
+    };
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        const aiFace &face = mesh.mFaces[f];
+        if (face.mNumIndices != 3) continue;
+        const aiVector3D &a = mesh.mVertices[face.mIndices[0]], &b = mesh.mVertices[face.mIndices[1]],
+                         &c = mesh.mVertices[face.mIndices[2]];
+        aiVector3D n = (b - a) ^ (c - a);
+        n.NormalizeSafe();
+        for (unsigned k = 0; k < 3; ++k) sums[key(face.mIndices[k])] += n;
+    }
+    std::vector<aiVector3D> normals(mesh.mNumVertices);
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+        const auto it = sums.find(key(v));
+        if (it != sums.end()) normals[v] = aiVector3D(it->second).NormalizeSafe();
+    }
+    return normals;
+}
 
 } // namespace
 
@@ -144,19 +195,55 @@ std::vector<std::shared_ptr<const Mesh>> load_meshes(const std::vector<std::stri
 LoadedMesh load_mesh(const std::filesystem::path &path) {
     const std::string name = path.string();
     const std::string text = read_mesh_file(path);
-    const std::string too_large = obj_beyond_limits(name, text);
+    const MeshFormat format = mesh_format_of(name);
+    const std::string too_large =
+        format == MeshFormat::Obj ? obj_beyond_limits(name, text) : mesh_beyond_limits(name, format, text);
     if (!too_large.empty()) throw AssetError(too_large);
 
     Assimp::Importer importer;
-    importer.SetIOHandler(new OnlyTheMesh(text)); // the importer owns it
+    const char *assimp_name = assimp_name_of(format);
+    importer.SetIOHandler(new OnlyTheMesh(text, assimp_name)); // the importer owns it
+    keep_only_importers_of(importer, assimp_name);
     // Keep degenerate triangles (we report them ourselves) and lines/points out.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     // The identical corners are joined below, not by aiProcess_JoinIdenticalVertices, which
     // compares every corner near a position with every other: quadratic in a file that puts
     // thousands at one point.
-    const aiScene *scene = importer.ReadFile(
-        OnlyTheMesh::kName, aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_GenSmoothNormals |
-                                aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+    const unsigned normals = format == MeshFormat::Obj ? aiProcess_GenSmoothNormals : 0u; // else smooth_normals()
+    const unsigned steps = aiProcess_Triangulate | aiProcess_PreTransformVertices | normals | aiProcess_SortByPType |
+                           aiProcess_ValidateDataStructure;
+    const aiScene *scene = nullptr;
+    if (format == MeshFormat::Obj) {
+        scene = importer.ReadFile(assimp_name, steps);
+    } else {
+        // Read, then the primitive types each mesh claims made those of its faces, then the
+        // steps: assimp's PLY importer can claim polygons a mesh does not have, and its
+        // triangulation then aborts the program on an assertion (the mesh fuzzer's finding).
+        scene = importer.ReadFile(assimp_name, aiProcess_ValidateDataStructure);
+        if (scene && !(scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
+            for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+                aiMesh *mesh = scene->mMeshes[m];
+                unsigned types = 0;
+                std::size_t work = 0;
+                for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+                    const unsigned n = mesh->mFaces[f].mNumIndices;
+                    // The OBJ limits of a polygon (obj_scan.hpp): triangulation is quadratic.
+                    work += std::size_t{n} * n;
+                    if (n > kMaxPolygonCorners || work > kMaxTriangulationWork)
+                        throw AssetError(name + ": face " + std::to_string(f + 1) + " has " + std::to_string(n) +
+                                         " corners; at most " + std::to_string(kMaxPolygonCorners) +
+                                         " a face, and the faces' corners squared at most " +
+                                         std::to_string(kMaxTriangulationWork) + " in all");
+                    if (n == 0) throw AssetError(name + ": face " + std::to_string(f + 1) + " has no corners");
+                    types |= n == 1 ? aiPrimitiveType_POINT : n == 2 ? aiPrimitiveType_LINE
+                                                            : n == 3 ? aiPrimitiveType_TRIANGLE
+                                                                     : aiPrimitiveType_POLYGON;
+                }
+                mesh->mPrimitiveTypes = types;
+            }
+            scene = importer.ApplyPostProcessing(steps & ~unsigned{aiProcess_ValidateDataStructure});
+        }
+    }
     if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
         const std::string reason = importer.GetErrorString();
         // assimp's validation words an empty file in terms of its own structures.
@@ -176,13 +263,15 @@ LoadedMesh load_mesh(const std::filesystem::path &path) {
         // UV become one, the first keeping its place.
         std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> joined;
         std::vector<std::uint32_t> index_of(src->mNumVertices);
+        const std::vector<aiVector3D> computed = src->mNormals ? std::vector<aiVector3D>{} : smooth_normals(*src);
+        const aiVector3D *src_normals = src->mNormals ? src->mNormals : computed.data();
         for (unsigned v = 0; v < src->mNumVertices; ++v) {
             const aiVector3D &p = src->mVertices[v];
             if (!finite(p))
                 throw AssetError(name + ": vertex " + std::to_string(v + 1) + " is not a finite number");
             const glm::dvec3 position(p.x, p.y, p.z);
             glm::dvec3 n(0.0, 0.0, 0.0);
-            if (src->mNormals && finite(src->mNormals[v])) n = {src->mNormals[v].x, src->mNormals[v].y, src->mNormals[v].z};
+            if (finite(src_normals[v])) n = {src_normals[v].x, src_normals[v].y, src_normals[v].z};
             const double len = glm::length(n);
             const glm::dvec3 normal = len > 0.0 ? n / len : glm::dvec3(0.0, 1.0, 0.0);
             glm::dvec2 uv(0.0, 0.0);

@@ -1,4 +1,5 @@
-// Triangle meshes loaded with assimp from Wavefront OBJ files, with the seed's bounding sphere
+// Triangle meshes loaded with assimp from Wavefront OBJ, PLY, STL and self-contained glTF files
+// (mesh_format_scan.hpp), with the seed's bounding sphere
 // ("Collision Detection": center = mean of the vertices, radius = the largest distance from it
 // to a vertex).
 #pragma once
@@ -37,9 +38,10 @@ struct LoadedMesh {
     std::vector<std::string> warnings; // each names the file
 };
 
-// Loads every mesh in the OBJ file as one, triangulated, its identical corners joined. Throws
-// AssetError for a file that cannot be read, passes the limits of obj_scan.hpp (the message
-// names the line), has no triangles, or has a vertex that is not finite. Degenerate
+// Loads every mesh in the file as one, triangulated, its identical corners joined, read as
+// its extension says (.ply, .stl, .glb, .gltf; anything else as OBJ). Throws AssetError for a
+// file that cannot be read, passes the limits of obj_scan.hpp (the message names the line) or
+// mesh_format_scan.hpp (a glTF naming another file), has no triangles, or has a vertex that is not finite. Degenerate
 // (zero-area) triangles are dropped with a warning. No other file is opened (no 'mtllib').
 LoadedMesh load_mesh(const std::filesystem::path &path);
 

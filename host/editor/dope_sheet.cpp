@@ -72,6 +72,9 @@ void DopeSheet::refresh(const EditorSession &session) {
     }
     if (keys_version_ != session.version()) {
         keys_version_ = session.version();
+        // Models added, copied or deleted: a key's model index may now be another model's.
+        if (session.document().models().size() != keys_models_) selection_.clear();
+        keys_models_ = session.document().models().size();
         keys_ = all_keys(session.document());
         // Keys that went (deleted, undone) leave the selection.
         for (auto it = selection_.begin(); it != selection_.end();)

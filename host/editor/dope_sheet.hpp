@@ -77,6 +77,7 @@ class DopeSheet {
     // What the document and the bake hold, found again only when they change.
     std::uint64_t keys_version_ = ~std::uint64_t{0};
     std::vector<KeyRef> keys_;
+    std::size_t keys_models_ = 0; // how many models the document had then
     std::uint64_t spans_version_ = ~std::uint64_t{0};
     double spans_baked_ = -1.0;
     std::string spans_backend_;

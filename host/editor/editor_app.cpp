@@ -510,7 +510,12 @@ int run_editor(const EditorOptions &options) {
                         pointer.cancel(session);
                         panels.cancel_timeline_drag();
                     } else if (e.code == GLFW_KEY_DELETE) {
-                        panels.delete_keys(session); // the Timeline's selected keys, if any
+                        // The Timeline's selected keys, if any; else the selected models, asked first.
+                        if (!panels.delete_keys(session)) panels.ask_delete_models(session);
+                    } else if (e.code == GLFW_KEY_D && shift && !ctrl) {
+                        panels.duplicate_models(session);
+                    } else if (e.code == GLFW_KEY_A && shift && !ctrl) {
+                        panels.ask_add_model();
                     } else if (e.code == GLFW_KEY_C && ctrl) {
                         panels.copy_keys(session); // never `c`'s free view
                     } else if (e.code == GLFW_KEY_V && ctrl) {

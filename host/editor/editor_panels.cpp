@@ -198,6 +198,14 @@ bool Panels::delete_keys(EditorSession &session) {
 
 void Panels::copy_keys(EditorSession &session) { say(dope_sheet_.copy(session)); }
 
+void Panels::duplicate_models(EditorSession &session) {
+    models_.duplicate(session, [this](const std::string &m, bool error) { say(m, error); });
+}
+
+void Panels::ask_delete_models(const EditorSession &session) {
+    models_.ask_delete(session, [this](const std::string &m, bool error) { say(m, error); });
+}
+
 void Panels::paste_keys(EditorSession &session) { say(dope_sheet_.paste(session)); }
 
 void Panels::animator_panel(EditorSession &session, float height, double wall) {
@@ -213,6 +221,10 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
     }
     if (ImGui::BeginMenuBar()) {
         files_.menu(session, [&] {
+            if (ImGui::MenuItem("Add Model...", "SHIFT+A")) models_.ask_add();
+            tip("Add a model from a mesh on the asset path or any mesh file (OBJ, PLY, STL, glTF);\n"
+                "File > Open... with a mesh file adds it too");
+            ImGui::Separator();
             if (ImGui::MenuItem("Render...", "CTRL+F12")) open_render();
             tip("Render the animation as it is now (unsaved changes too) to PNG frames or a video, with a\n"
                 "progress bar and Cancel");
@@ -484,9 +496,12 @@ void Panels::start_rename(int model) {
 void Panels::outliner(EditorSession &session) {
     constexpr float kTop = 540.0f; // in the window, below a one-line status message
     if (ImGui::GetCursorPosY() < kTop) ImGui::SetCursorPosY(kTop);
-    const bool shown = ImGui::CollapsingHeader("Outliner", ImGuiTreeNodeFlags_DefaultOpen);
+    const bool shown = ImGui::CollapsingHeader("Outliner", ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_AllowItemOverlap);
     tip("The scene's tree, joints and parents included: click a row to select, CTRL+click to add,\n"
         "double-click or F2 to rename, the box to hide a model from the view. Click here to fold it.");
+    // Add model, Duplicate and Delete on the header's line: under the list they would push
+    // the panel past the window's height at 1280x720.
+    models_.buttons(session, [this](const std::string &m, bool error) { say(m, error); });
     if (!shown) {
         renaming_ = -1;
         return;
@@ -889,6 +904,7 @@ void Panels::model_panel(EditorSession &session, float width, float height, floa
 }
 
 void Panels::dialogs(EditorSession &session) {
+    models_.dialogs(session, env_.assets, [this](const std::string &m, bool error) { say(m, error); });
     if (error_pending_) {
         ImGui::OpenPopup("Error");
         error_pending_ = false;

@@ -10,6 +10,7 @@
 #include "editor/file_menu.hpp"
 #include "editor/output_dialogs.hpp"
 #include "editor/transform_panel.hpp"
+#include "editor/model_commands.hpp"
 #include "editor/view_layout.hpp"
 
 #include <functional>
@@ -63,6 +64,10 @@ class Panels {
     bool output_busy() const { return output_.busy(); }
     // The Outliner's name field for model `model` (a double-click on its row, or F2).
     void start_rename(int model);
+    // SHIFT+A, SHIFT+D and DELETE with no keys selected in the Timeline (model_commands.hpp).
+    void ask_add_model() { models_.ask_add(); }
+    void duplicate_models(EditorSession &session);
+    void ask_delete_models(const EditorSession &session);
 
     // The File menu (the Animator Interface's menu bar) and its keys.
     FileMenu &files() { return files_; }
@@ -115,6 +120,7 @@ class Panels {
     float placed_at_bottom_ = 0.0f; // and the bottom it was kept above (the Timeline's top)
     DopeSheet dope_sheet_;
     FileMenu files_;
+    ModelCommands models_;
     // The Outliner: the model being renamed (-1: none), its field, and whether the field has
     // been active yet (it takes the keyboard the frame after it appears).
     int renaming_ = -1;

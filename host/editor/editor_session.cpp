@@ -1,5 +1,6 @@
 #include "editor/editor_session.hpp"
 
+#include "editor/model_edits.hpp"
 #include "editor/motion_paths.hpp"
 #include "editor/overlap_fix.hpp"
 #include "editor/time_steps.hpp"
@@ -62,6 +63,9 @@ bool EditorSession::load(const fs::path &file, const fs::path &path, std::string
         export_to_path_ = path.extension() == ".ani";
         timeline_ = std::move(timeline);
         meshes_ = std::move(meshes);
+        mesh_cache_.clear();
+        for (size_t i = 0; i < ids.size() && i < meshes_.size(); ++i)
+            if (meshes_[i]) mesh_cache_[ids[i]] = meshes_[i];
         preview_.reset(); // baked with the meshes of the document before
         warnings_ = std::move(warnings);
         history_.clear();
@@ -536,6 +540,7 @@ void EditorSession::changed() {
 }
 
 bool EditorSession::perform(std::unique_ptr<Edit> edit, std::string *error) {
+    const std::vector<std::string> names = model_names();
     try {
         // Tried on a copy first: the timeline may refuse the result (a missing plugin), and then
         // neither the document nor the history changes.
@@ -548,6 +553,7 @@ bool EditorSession::perform(std::unique_ptr<Edit> edit, std::string *error) {
         return false;
     }
     changed();
+    if (names.size() != doc_.models().size()) follow_models(names);
     return true;
 }
 
@@ -580,14 +586,192 @@ bool EditorSession::lift_out(std::size_t index, std::string *error) {
 }
 
 bool EditorSession::undo() {
+    const std::vector<std::string> names = model_names();
     if (drag_ || !history_.undo(doc_, history_key())) return false;
     follow_document();
+    if (names.size() != doc_.models().size()) follow_models(names);
     return true;
 }
 
 bool EditorSession::redo() {
+    const std::vector<std::string> names = model_names();
     if (drag_ || !history_.redo(doc_, history_key())) return false;
     follow_document();
+    if (names.size() != doc_.models().size()) follow_models(names);
+    return true;
+}
+
+std::vector<std::string> EditorSession::model_names() const {
+    std::vector<std::string> names;
+    for (const Model &m : doc_.models()) names.push_back(m.name);
+    return names;
+}
+
+void EditorSession::follow_models(const std::vector<std::string> &names) {
+    // Each model's state goes where its name is now (gone with a model deleted).
+    const auto now = [&](int before) {
+        return before >= 0 && before < static_cast<int>(names.size()) ? doc_.find_model(names[static_cast<size_t>(before)]) : -1;
+    };
+    const auto follow = [&](std::set<int> &models) {
+        std::set<int> moved;
+        for (int m : models)
+            if (const int n = now(m); n >= 0) moved.insert(n);
+        models = std::move(moved);
+    };
+    follow(selection_);
+    follow(hidden_);
+    follow(pinned_paths_);
+    last_selected_ = now(last_selected_);
+    if (last_selected_ < 0 && !selection_.empty()) last_selected_ = *selection_.rbegin();
+    meshes_.clear();
+    for (const Model &m : doc_.models()) {
+        std::string warning;
+        meshes_.push_back(m.mesh.empty() ? nullptr : mesh_of(m.mesh, &warning));
+        if (!warning.empty()) warnings_.push_back(warning);
+    }
+    timeline_->set_meshes(meshes_);
+    // The drag's bake had the models before.
+    preview_.reset();
+    preview_doc_.reset();
+    ++version_;
+}
+
+std::shared_ptr<const Mesh> EditorSession::mesh_of(const std::string &id, std::string *error) {
+    if (const auto it = mesh_cache_.find(id); it != mesh_cache_.end() && it->second) return it->second;
+    std::vector<std::string> warnings;
+    auto mesh = load_meshes({id}, env_.assets, path_, warnings).front();
+    if (!mesh) {
+        if (error) *error = warnings.empty() ? "mesh '" + id + "' could not be read" : warnings.front();
+        return nullptr;
+    }
+    mesh_cache_[id] = mesh;
+    return mesh;
+}
+
+bool EditorSession::add_model(const std::string &mesh_id, std::string &message) {
+    if (drag_) {
+        message = "cannot add a model during a drag";
+        return false;
+    }
+    std::string error;
+    if (!mesh_of(mesh_id, &error)) {
+        message = "cannot add a model: " + error;
+        return false;
+    }
+    Model model;
+    model.name = unique_model_name(doc_, name_from_mesh(mesh_id));
+    model.mesh = mesh_id;
+    // Where the view looks: the free view's pivot, else along the camera's view at the depth of
+    // the scene (the mean of the models' depths; 10 m in an empty one).
+    ModelState state;
+    if (free_view_on_) {
+        state.center = view_.pivot;
+    } else {
+        const Frame f = frame();
+        std::vector<glm::dmat4> world;
+        world_matrices(doc_.models(), f.models, world);
+        const glm::dvec3 forward = f.camera.rotation * glm::dvec3(0, 0, -1);
+        double sum = 0.0;
+        for (const glm::dmat4 &w : world) sum += glm::dot(glm::dvec3(w[3]) - f.camera.position, forward);
+        double depth = world.empty() ? 10.0 : sum / static_cast<double>(world.size());
+        if (!(depth > 0.1)) depth = 10.0;
+        state.center = f.camera.position + depth * forward;
+    }
+    if (!perform(std::make_unique<AddModelEdit>(model, state), &error)) {
+        message = "cannot add '" + model.name + "': " + error;
+        return false;
+    }
+    const int index = doc_.find_model(model.name);
+    selection_ = {index};
+    last_selected_ = index;
+    message = "added '" + model.name + "'";
+    return true;
+}
+
+bool EditorSession::add_model_from_asset(const std::string &id, std::string &message) {
+    return add_model(id, message);
+}
+
+bool EditorSession::add_model_from_file(const fs::path &file, std::string &message) {
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec)) {
+        message = "cannot add a model: " + file.string() + ": no such mesh file";
+        return false;
+    }
+    return add_model(mesh_reference(file, path_, export_to_path_), message);
+}
+
+bool EditorSession::duplicate_selected(std::string &message) {
+    if (drag_) {
+        message = "cannot duplicate during a drag";
+        return false;
+    }
+    if (selection_.empty()) {
+        message = "nothing selected to duplicate";
+        return false;
+    }
+    // The copies move apart from their originals as the models are placed at t = 0.
+    const Frame f = timeline_->evaluate(0.0);
+    std::vector<glm::dmat4> world;
+    world_matrices(doc_.models(), f.models, world);
+    std::string error;
+    try {
+        const std::vector<ModelCopy> copies = plan_copies(doc_, meshes_, world, selection_);
+        Document after = with_copies(doc_, copies);
+        const std::set<int> selected = selection_;
+        const int last = last_selected_;
+        if (!perform(std::make_unique<ReplaceDocumentEdit>("duplicate models", doc_, std::move(after)), &error)) {
+            message = "cannot duplicate: " + error;
+            return false;
+        }
+        // The copies of the selected models are selected, the last one's copy last.
+        selection_.clear();
+        last_selected_ = -1;
+        for (const ModelCopy &c : copies)
+            if (selected.count(c.original)) selection_.insert(doc_.find_model(c.name));
+        for (const ModelCopy &c : copies)
+            if (c.original == last) last_selected_ = doc_.find_model(c.name);
+        if (last_selected_ < 0 && !selection_.empty()) last_selected_ = *selection_.rbegin();
+        if (selected.size() == 1) {
+            const std::string original = doc_.models()[static_cast<size_t>(*selected.begin())].name;
+            message = "duplicated '" + original + "' as '" + copies.front().name + "'";
+            if (copies.size() > 1)
+                message += copies.size() == 2 ? " with the model under it" : " with the " + std::to_string(copies.size() - 1) + " models under it";
+        } else {
+            message = "duplicated " + std::to_string(selected.size()) + " models (" + std::to_string(copies.size()) + " copies)";
+        }
+        return true;
+    } catch (const std::exception &e) {
+        message = std::string("cannot duplicate: ") + e.what();
+        return false;
+    }
+}
+
+std::set<int> EditorSession::models_to_delete() const { return with_descendants(doc_, selection_); }
+
+bool EditorSession::delete_selected(std::string &message) {
+    if (drag_) {
+        message = "cannot delete during a drag";
+        return false;
+    }
+    if (selection_.empty()) {
+        message = "nothing selected to delete";
+        return false;
+    }
+    const std::set<int> deleted = models_to_delete();
+    const std::string phrase = deletion_phrase(doc_, selection_, deleted);
+    std::string error;
+    try {
+        Document after = without_models(doc_, deleted);
+        if (!perform(std::make_unique<ReplaceDocumentEdit>("delete models", doc_, std::move(after)), &error)) {
+            message = "cannot delete " + phrase + ": " + error;
+            return false;
+        }
+    } catch (const std::exception &e) {
+        message = "cannot delete " + phrase + ": " + e.what();
+        return false;
+    }
+    message = "deleted " + phrase;
     return true;
 }
 

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -97,6 +98,22 @@ class EditorSession {
     // The Outliner's rename, one undoable edit. Surrounding spaces are dropped; an empty name or
     // another model's is refused with a message that says so, and nothing changes.
     bool rename_model(int index, const std::string &name, std::string *error = nullptr);
+
+    // Models (model_edits.hpp, docs/manual.md "Adding, duplicating and deleting models"), each
+    // one undoable edit of the whole document; `message` says what happened (for the status
+    // line) or why nothing did. Not during a drag. Add: a model of the mesh `id` on the asset
+    // path, or of a mesh file (OBJ, PLY, STL, glTF; named relative to the document when under
+    // its folder, else absolutely), named after it (unique, Blender's "cube.001"), with the
+    // default material, keyed at t = 0 where the view looks (the free view's pivot, else the
+    // camera's view at the scene's depth), and selected. Duplicate: the selected models and what
+    // hangs under them, each copy beside its original (copy_distance() along +x at every key),
+    // the copies selected. Delete: the selected models and every model under them.
+    bool add_model_from_asset(const std::string &id, std::string &message);
+    bool add_model_from_file(const std::filesystem::path &file, std::string &message);
+    bool duplicate_selected(std::string &message);
+    bool delete_selected(std::string &message);
+    // What delete_selected() would remove: the selection and everything under it.
+    std::set<int> models_to_delete() const;
 
     EditMode mode() const { return mode_; }
     void set_mode(EditMode mode) { mode_ = mode; }
@@ -254,6 +271,16 @@ class EditorSession {
     void changed();
     // After undo or redo: the timeline takes the document back.
     void follow_document();
+    // After an edit, an undo or a redo that changed the list of models (its names before are
+    // `names`): the meshes, the selection, the hidden and pinned models follow the models by
+    // name (unique in a document), and the timeline takes the new meshes.
+    void follow_models(const std::vector<std::string> &names);
+    std::vector<std::string> model_names() const;
+    // The mesh of id `id` (as the document names it), loaded once; null with a warning in
+    // `error` when it cannot be found or read.
+    std::shared_ptr<const Mesh> mesh_of(const std::string &id, std::string *error);
+    bool add_model(const std::string &mesh, std::string &message);
+
     ModelState state_now(int model, const Frame &frame) const;
     std::unique_ptr<Edit> transform_edit(const std::vector<std::pair<int, ModelState>> &models,
                                          const std::optional<CameraState> &camera) const;
@@ -265,6 +292,7 @@ class EditorSession {
     bool export_to_path_ = false;  // path_ is an .ani this session may write
     std::unique_ptr<Timeline> timeline_;
     std::vector<std::shared_ptr<const Mesh>> meshes_;
+    std::map<std::string, std::shared_ptr<const Mesh>> mesh_cache_; // by id, for Add and undo
     std::vector<std::string> warnings_;
     EditHistory history_;
     std::uint64_t version_ = 0;

@@ -4,13 +4,22 @@
 
 #include <imgui.h>
 
+#include <cctype>
+
 namespace fs = std::filesystem;
 
 namespace animator {
 
 namespace {
 
-const std::vector<std::string> kOpenable = {".ani", ".lua"};
+// Animations and scenes open; meshes are added to the open animation as models.
+const std::vector<std::string> kOpenable = {".ani", ".lua", ".obj", ".ply", ".stl", ".glb", ".gltf"};
+
+bool is_mesh(const fs::path &path) {
+    std::string ext = path.extension().string();
+    for (char &c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext != ".ani" && ext != ".lua";
+}
 const std::vector<std::string> kScenes = {".lua"};
 const std::vector<std::string> kAnimations = {".ani"};
 
@@ -152,7 +161,8 @@ void FileMenu::menu(EditorSession &session, const std::function<void()> &more) {
     if (ImGui::MenuItem("New...", "CTRL+N")) new_file(session);
     tooltip("A new, untitled animation from a .lua scene (Save then asks where to write it)");
     if (ImGui::MenuItem("Open...", "CTRL+O")) open_file(session);
-    tooltip("Open an .ani animation or a .lua scene");
+    tooltip("Open an .ani animation or a .lua scene; a mesh file (OBJ, PLY, STL, glTF) is added to this\n"
+            "animation as a model");
     const bool recent_open = ImGui::BeginMenu("Open Recent");
     // Not over the submenu it opens.
     if (!recent_open) tooltip("The last 10 files opened or saved, newest first");
@@ -211,6 +221,11 @@ void FileMenu::dialogs(EditorSession &session) {
             } else {
                 write_as(session, chosen);
             }
+        } else if (browsing_ == Browse::Open && is_mesh(chosen)) {
+            // A mesh is added to the animation as a model (one undoable edit), as Add Model does.
+            std::string message;
+            const bool added = session.add_model_from_file(chosen, message);
+            say_(message, !added);
         } else {
             request_load(session, {chosen, browsing_ == Browse::New});
         }

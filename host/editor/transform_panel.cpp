@@ -7,7 +7,11 @@ namespace animator {
 bool TransformPanel::draw(EditorSession &session, std::string &error) {
     const int last = session.last_selected();
     if (last < 0 || !session.selection().count(last)) return false;
-    if (!ImGui::CollapsingHeader("Transform", ImGuiTreeNodeFlags_DefaultOpen)) return false;
+    const bool open = ImGui::CollapsingHeader("Transform", ImGuiTreeNodeFlags_DefaultOpen);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Where the selected models are at the current time: typing or dragging a number keys them\n"
+                          "there (also what the gizmo's handles change). Click to fold.");
+    if (!open) return false;
     std::vector<ModelState> states;
     for (int m : session.selection()) states.push_back(session.state_at_time(m));
     const std::array<bool, 3> mixed = transform_mixed(states);

@@ -292,7 +292,10 @@ TEST_CASE("a hidden model is still simulated: the bake, its collisions and the e
         shown.set_time_ms(ms);
         hidden.set_time_ms(ms);
         const Frame a = shown.frame(), b = hidden.frame();
-        CHECK(a.models[static_cast<size_t>(ball)].center == b.models[static_cast<size_t>(ball)].center);
+        // To rounding, not bit for bit: each session bakes in slices of its own size (they
+        // follow the time a slice took), and a sliced bake meets the whole one to rounding.
+        const glm::dvec3 d = a.models[static_cast<size_t>(ball)].center - b.models[static_cast<size_t>(ball)].center;
+        CHECK(glm::length(d) < 1e-9);
     }
     // The ball fell and bounced on the hidden floor: it moved, and it hit the floor.
     hidden.set_time_ms(700);

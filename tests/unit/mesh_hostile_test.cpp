@@ -98,12 +98,10 @@ TEST_CASE("a mesh file larger than 64 MiB is refused before it is read") {
         Catch::StartsWith(file.string() + ": the mesh file is 67108865 bytes; at most 67108864"));
 }
 
-TEST_CASE("a mesh is read as OBJ whatever its name: assimp's other importers are not reached") {
-    const std::string ply =
-        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-        "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-        "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
-    const fs::path file = write("mesh_ply", "triangle.ply", ply);
+TEST_CASE("a mesh is read as OBJ unless named .ply, .stl, .glb or .gltf: assimp's other importers are not reached") {
+    // An Object File Format mesh, which assimp's OFF importer would read.
+    const std::string off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    const fs::path file = write("mesh_off", "triangle.off", off);
     CHECK_THROWS_WITH(load_mesh(file), Catch::StartsWith(file.string() + ": "));
 }
 
