@@ -118,29 +118,52 @@ std::string plain(const std::string &text) {
 
 } // namespace
 
+namespace {
+
+void draw_section(const HelpSection &section, float keys_width) {
+    ImGui::TextColored(ImVec4(1.0f, 0.78f, 0.25f, 1.0f), "%s", section.title.c_str());
+    if (ImGui::BeginTable(section.title.c_str(), 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+        ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, keys_width);
+        ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
+        for (const HelpRow &row : section.rows) {
+            ImGui::TableNextRow();
+            ImGui::TableSetColumnIndex(0);
+            ImGui::TextWrapped("%s", plain(row.keys).c_str());
+            ImGui::TableSetColumnIndex(1);
+            ImGui::TextWrapped("%s", plain(row.action).c_str());
+        }
+        ImGui::EndTable();
+    }
+    ImGui::Spacing();
+}
+
+} // namespace
+
+// Two columns, each scrolling on its own: the keys on the left, the mouse (the view, the free
+// view, the Timeline) and the keys of other programs on the right, so that most of it shows at
+// once in a 1280x720 window.
 void draw_help_overlay(bool *open, float width, float height) {
     if (!*open) return;
-    const ImVec2 size(std::min(width - 40.0f, 760.0f), std::min(height - 40.0f, 600.0f));
+    const ImVec2 size(std::min(width - 40.0f, 1180.0f), std::min(height - 40.0f, 660.0f));
     ImGui::SetNextWindowPos(ImVec2((width - size.x) / 2.0f, (height - size.y) / 2.0f), ImGuiCond_Always);
     ImGui::SetNextWindowSize(size, ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.94f);
     ImGui::SetNextWindowFocus();
     if (ImGui::Begin("Keys and mouse (F1)", open, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
-        for (const HelpSection &section : help_sections()) {
-            ImGui::TextColored(ImVec4(1.0f, 0.78f, 0.25f, 1.0f), "%s", section.title.c_str());
-            if (ImGui::BeginTable(section.title.c_str(), 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-                ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 250.0f);
-                ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
-                for (const HelpRow &row : section.rows) {
-                    ImGui::TableNextRow();
-                    ImGui::TableSetColumnIndex(0);
-                    ImGui::TextUnformatted(plain(row.keys).c_str());
-                    ImGui::TableSetColumnIndex(1);
-                    ImGui::TextWrapped("%s", row.action.c_str());
-                }
-                ImGui::EndTable();
-            }
-            ImGui::Spacing();
+        const auto &sections = help_sections();
+        const float footer = ImGui::GetTextLineHeightWithSpacing();
+        if (ImGui::BeginTable("help columns", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame,
+                              ImVec2(0.0f, ImGui::GetContentRegionAvail().y - footer))) {
+            ImGui::TableNextRow();
+            ImGui::TableSetColumnIndex(0);
+            ImGui::BeginChild("keys column");
+            if (!sections.empty()) draw_section(sections.front(), 150.0f);
+            ImGui::EndChild();
+            ImGui::TableSetColumnIndex(1);
+            ImGui::BeginChild("mouse column");
+            for (size_t i = 1; i < sections.size(); ++i) draw_section(sections[i], 200.0f);
+            ImGui::EndChild();
+            ImGui::EndTable();
         }
         ImGui::TextDisabled("docs/manual.md says more. Close: F1, ESC or the x above.");
     }

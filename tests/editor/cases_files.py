@@ -9,7 +9,7 @@ BROWSER_TITLE = (640, 159)          # a point of the browser's title bar (right 
 FILE_MENU = (24, 19)                # "File" in the Animator Interface's menu bar
 FILE_MENU_ITEM_STEP = 17            # items in the open menu, from the first one's middle
 FILE_MENU_OPEN_RECENT = (60, 78)    # the third item: New... (44), Open... (61), Open Recent
-FILE_MENU_QUIT = (40, 137)          # the last item, under Save (99) and Save As... (116)
+FILE_MENU_QUIT = (40, 196)          # the last item: Save (99), Save As... (116), Add Model... (137), Render... (158), Export... (175)
 RECENT_ITEM0 = (250, 78)            # the submenu's first file, opened right of the menu
 # The questions' buttons, from the dialog's left edge and the top of its title bar.
 REPLACE_BUTTON = (35, 69)
@@ -256,4 +256,29 @@ def case_files_new_asks(c):
     ctrl_key(e, 's')
     check_browser(e, 'save-asks-where')
     e.key('Escape')
+    e.quit()
+
+
+def case_files_open_mesh(c):
+    """CTRL+O with a mesh file adds it to the open animation as a model instead of opening it:
+    a binary PLY tetrahedron typed in the browser becomes the model 'tetra' (the status line says
+    so), the exported .ani has it with its mesh file and the ball is still there; u takes it back."""
+    c.write('ball.ani', BALL_ANI)
+    c.copy('tests/fuzz/seeds/mesh/tetra_binary.ply', 'tetra.ply')
+    e = c.start('ball.ani')
+    ctrl_key(e, 'o')
+    check_browser(e, 'browser')
+    choose_in_browser(e, 'tetra.ply')
+    e.wait_log(r"^animator: added 'tetra'", 'the editor to say it added the tetrahedron')
+    check(e.title() == 'animator - ball.ani *', 'adding a model did not mark the animation changed: %r' % e.title())
+    e.key('x')
+    e.wait_log(r'^animator: exported to ball\.ani$', 'the export')
+    doc = parse_ani(c.path('ball.ani'))
+    check(sorted(doc['models']) == ['ball', 'tetra'], 'the exported models are %s' % sorted(doc['models']))
+    mesh = doc['models']['tetra'].get('mesh', [''])[0]
+    check(mesh.endswith('tetra.ply'), 'the new model\'s mesh is %r, not the file chosen' % mesh)
+    e.key('u')
+    e.key('x')
+    e.wait_for(lambda: len(re.findall(r'exported to ball\.ani', e.stdout())) >= 2, 'the second export')
+    check(sorted(parse_ani(c.path('ball.ani'))['models']) == ['ball'], 'u did not take the added model back')
     e.quit()

@@ -1,6 +1,6 @@
 # The F1 overlay (issue 17, "Help"), run in editor_e2e.py's namespace.
 
-HELP_BOX = (260, 60, 1020, 660)      # 760 x 600, centred in the 1280 x 720 window
+HELP_BOX = (50, 30, 1230, 690)       # 1180 x 660, centred in the 1280 x 720 window
 HELP_TITLE_AMBER = (255, 199, 64)    # the section titles
 
 
