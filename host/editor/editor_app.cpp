@@ -62,23 +62,39 @@ struct WindowState {
         int key, scancode, action, mods;
     };
     std::deque<KeyChange> imgui_keys;
+    // The same for mouse buttons: the 1.86 backend sees one press of a button a frame, so a
+    // double-click whose two clicks both came during one slow frame (a busy machine) was one
+    // click to ImGui. Its button changes wait here and reach it one a frame (replaying: our own
+    // callback, which ImGui's calls first, has already had them).
+    GLFWmousebuttonfun imgui_mouse = nullptr;
+    struct ButtonChange {
+        int button, action, mods;
+    };
+    std::deque<ButtonChange> imgui_buttons;
+    bool replaying_buttons = false;
 };
 
 WindowState &state_of(GLFWwindow *w) { return *static_cast<WindowState *>(glfwGetWindowUserPointer(w)); }
 
+// A mouse button changed: an event for the editor's queue, where the pointer was. Called at
+// once by the callback over ImGui's (install_key_callback); ImGui's own calls it again when it
+// is handed the change later, which is skipped.
+void on_mouse_button(GLFWwindow *w, int button, int action, int mods) {
+    auto &s = state_of(w);
+    if (s.replaying_buttons) return;
+    s.woke = true;
+    ++s.inputs;
+    // Where the pointer was when the button changed: the last motion event's place. (On X11
+    // glfwGetCursorPos asks the server where the pointer is now, which may be past moves
+    // still queued: a drag released and moved on at once was dropped where it moved to.)
+    double x = s.cursor_x, y = s.cursor_y;
+    if (!s.cursor_known) glfwGetCursorPos(w, &x, &y);
+    s.events.push_back({action == GLFW_PRESS ? InputEvent::Press : InputEvent::Release, button, mods, x, y});
+}
+
 void install_callbacks(GLFWwindow *window) {
     // Keys: installed over ImGui's own callback (see install_key_callback), not under it.
-    glfwSetMouseButtonCallback(window, [](GLFWwindow *w, int button, int action, int mods) {
-        auto &s = state_of(w);
-        s.woke = true;
-        ++s.inputs;
-        // Where the pointer was when the button changed: the last motion event's place. (On X11
-        // glfwGetCursorPos asks the server where the pointer is now, which may be past moves
-        // still queued: a drag released and moved on at once was dropped where it moved to.)
-        double x = s.cursor_x, y = s.cursor_y;
-        if (!s.cursor_known) glfwGetCursorPos(w, &x, &y);
-        s.events.push_back({action == GLFW_PRESS ? InputEvent::Press : InputEvent::Release, button, mods, x, y});
-    });
+    glfwSetMouseButtonCallback(window, on_mouse_button); // under ImGui's (install_key_callback)
     glfwSetScrollCallback(window, [](GLFWwindow *w, double, double dy) {
         auto &s = state_of(w);
         s.woke = true;
@@ -197,6 +213,35 @@ void install_key_callback(GLFWwindow *window) {
         if (action == GLFW_PRESS || action == GLFW_REPEAT) s.events.push_back({InputEvent::Key, key, mods, 0, 0});
         s.imgui_keys.push_back({key, scancode, action, mods});
     });
+    // Mouse buttons: ours at once (where the pointer was), ImGui's from a queue
+    // (feed_imgui_buttons), whose replay reaches ours again through ImGui's and is skipped.
+    state_of(window).imgui_mouse = glfwSetMouseButtonCallback(window, [](GLFWwindow *w, int button, int action, int mods) {
+        on_mouse_button(w, button, action, mods);
+        state_of(w).imgui_buttons.push_back({button, action, mods});
+    });
+}
+
+// Before a frame, after feed_imgui_keys: hands ImGui the queued button changes, at most one of
+// each button (so a second click of a double-click comes a frame after the first's release).
+// True when it handed one: the frame's clock is then kept short, so that clicks queued during
+// a slow frame stay as close together to ImGui as they were to the user.
+bool feed_imgui_buttons(GLFWwindow *window) {
+    auto &s = state_of(window);
+    std::vector<int> changed;
+    bool fed = false;
+    while (!s.imgui_buttons.empty()) {
+        const auto b = s.imgui_buttons.front();
+        if (std::find(changed.begin(), changed.end(), b.button) != changed.end()) break;
+        changed.push_back(b.button);
+        s.imgui_buttons.pop_front();
+        if (s.imgui_mouse) {
+            s.replaying_buttons = true;
+            s.imgui_mouse(window, b.button, b.action, b.mods);
+            s.replaying_buttons = false;
+        }
+        fed = true;
+    }
+    return fed;
 }
 
 // Before a frame: hands ImGui the queued key changes, stopping at a second change of a key it
@@ -389,7 +434,7 @@ int run_editor(const EditorOptions &options) {
         std::uint64_t previewed = 0; // the drag's document last said baked (signals)
         while (!quitting) {
             const bool busy = session.playing() || session.baking() || pointer.down() || frames_to_draw > 0;
-            if (busy || !window_state.imgui_keys.empty()) glfwPollEvents();
+            if (busy || !window_state.imgui_keys.empty() || !window_state.imgui_buttons.empty()) glfwPollEvents();
             else if (panels.output_busy()) glfwWaitEventsTimeout(1.0 / 30.0); // a render's progress
             else if (glfwGetTime() < settle_until) glfwWaitEventsTimeout(1.0 / 60.0);
             else if (frame_rate.text() != "idle") {
@@ -412,7 +457,10 @@ int run_editor(const EditorOptions &options) {
 
             ImGui_ImplOpenGL3_NewFrame();
             feed_imgui_keys(window);
+            const bool buttons_fed = feed_imgui_buttons(window);
             ImGui_ImplGlfw_NewFrame();
+            // Clicks that waited in the queue reach ImGui as close together as they came.
+            if (buttons_fed || !window_state.imgui_buttons.empty()) io.DeltaTime = std::min(io.DeltaTime, 1.0f / 60.0f);
             ImGui::NewFrame();
 
             int fb_w = 0, fb_h = 0, win_w = 0, win_h = 0;
@@ -568,6 +616,15 @@ int run_editor(const EditorOptions &options) {
             panels.draw(session, static_cast<float>(win_w), static_cast<float>(win_h), glfwGetTime());
             if (panels.quit_confirmed()) quitting = true;
             view = view_rect(win_w, win_h, panels.places());
+            // A gizmo handle under the resting pointer says what dragging it does, as every
+            // control does (drawn with this frame's panels; the gizmo itself is drawn below).
+            if (!pointer.down() && !io.WantCaptureMouse && view.contains(cx, cy)) {
+                const GizmoView gv = session.gizmo_view(static_cast<int>(std::lround(view.width)),
+                                                        static_cast<int>(std::lround(view.height)));
+                if (const auto gizmo = session.gizmo(gv))
+                    if (const char *tip = gizmo_handle_tip(session.mode(), gizmo_hit(*gizmo, gv, glm::dvec2(cx - view.x, cy - view.y))))
+                        ImGui::SetTooltip("%s", tip);
+            }
             // What this frame's panels show; the work below (playback, the bake) may change it.
             const ScreenState shown = screen_state(session, panels.message());
             // A document opened from the File menu: its autosave, if any, is offered as at a start.
@@ -599,7 +656,7 @@ int run_editor(const EditorOptions &options) {
                 const double took = glfwGetTime() - play_started;
                 if (signals)
                     std::cout << "animator: played " << play_frames << " frames in " << took << " s ("
-                              << (took > 0.0 ? play_frames / took : 0.0) << " fps)" << std::endl;
+                              << (took > 0.0 ? static_cast<double>(play_frames) / took : 0.0) << " fps)" << std::endl;
                 play_started = -1.0;
             }
             if (session.playing() && session.time() > played_to) {

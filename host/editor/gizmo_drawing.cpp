@@ -12,6 +12,38 @@ glm::vec3 gizmo_colour(int axis, bool highlighted) {
     }
 }
 
+const char *gizmo_handle_tip(EditMode mode, GizmoHandle handle) {
+    switch (mode) {
+    case EditMode::Translate:
+        switch (handle) {
+        case GizmoHandle::AxisX: return "Drag: move along x (the parent's axes), keyed at the current time. CTRL snaps to 0.1 m.";
+        case GizmoHandle::AxisY: return "Drag: move along y (the parent's axes), keyed at the current time. CTRL snaps to 0.1 m.";
+        case GizmoHandle::AxisZ: return "Drag: move along z (the parent's axes), keyed at the current time. CTRL snaps to 0.1 m.";
+        case GizmoHandle::PlaneXY: return "Drag: move in the x-y plane, keyed at the current time. CTRL snaps to 0.1 m.";
+        case GizmoHandle::PlaneYZ: return "Drag: move in the y-z plane, keyed at the current time. CTRL snaps to 0.1 m.";
+        case GizmoHandle::PlaneZX: return "Drag: move in the z-x plane, keyed at the current time. CTRL snaps to 0.1 m.";
+        case GizmoHandle::Center: return "Drag: move in the view's plane, keyed at the current time. CTRL snaps to 0.1 m.";
+        default: return nullptr;
+        }
+    case EditMode::Rotate:
+        switch (handle) {
+        case GizmoHandle::AxisX: return "Drag around: turn the x angle (a gimbal ring: one Euler angle), keyed at the current time. CTRL snaps to 15 degrees.";
+        case GizmoHandle::AxisY: return "Drag around: turn the y angle (a gimbal ring: one Euler angle), keyed at the current time. CTRL snaps to 15 degrees.";
+        case GizmoHandle::AxisZ: return "Drag around: turn the z angle (a gimbal ring: one Euler angle), keyed at the current time. CTRL snaps to 15 degrees.";
+        default: return nullptr;
+        }
+    case EditMode::Scale:
+        switch (handle) {
+        case GizmoHandle::AxisX: return "Drag: scale along the model's x, keyed at the current time. CTRL snaps to steps of 0.1.";
+        case GizmoHandle::AxisY: return "Drag: scale along the model's y, keyed at the current time. CTRL snaps to steps of 0.1.";
+        case GizmoHandle::AxisZ: return "Drag: scale along the model's z, keyed at the current time. CTRL snaps to steps of 0.1.";
+        case GizmoHandle::Center: return "Drag: scale all three axes, keyed at the current time. CTRL snaps to steps of 0.1.";
+        default: return nullptr;
+        }
+    default: return nullptr;
+    }
+}
+
 OverlayTriangles gizmo_triangles(const std::vector<GizmoShape> &shapes, GizmoHandle highlighted) {
     OverlayTriangles t;
     // gizmo_shapes lists the small targets first (they win a tie when picked): drawn last.

@@ -13,6 +13,9 @@ constexpr float kGizmoLineWidth = 3.0f;
 
 glm::vec3 gizmo_colour(int axis, bool highlighted);
 
+// What dragging `handle` does in `mode` (Rotate, Translate or Scale), for its tooltip.
+const char *gizmo_handle_tip(EditMode mode, GizmoHandle handle);
+
 // The triangles that draw `shapes` (gizmo_shapes) in the view's pixels, the centre on top.
 OverlayTriangles gizmo_triangles(const std::vector<GizmoShape> &shapes, GizmoHandle highlighted);
 

@@ -398,3 +398,20 @@ TEST_CASE("a gizmo drag in the session previews, is one undoable edit keying the
     s.set_mode(EditMode::Camera);
     CHECK_FALSE(s.gizmo(view).has_value());
 }
+
+TEST_CASE("every handle the gizmo draws has a tooltip saying what dragging it does", "[gizmo][tooltips]") {
+    const GizmoView view = front_view();
+    for (EditMode mode : {EditMode::Translate, EditMode::Rotate, EditMode::Scale}) {
+        const Gizmo g = place(view, mode);
+        const auto shapes = gizmo_shapes(g, view);
+        REQUIRE_FALSE(shapes.empty());
+        for (const GizmoShape &s : shapes) {
+            const char *tip = gizmo_handle_tip(mode, s.handle);
+            INFO("mode " << static_cast<int>(mode) << ", handle " << static_cast<int>(s.handle));
+            REQUIRE(tip != nullptr);
+            CHECK(std::string(tip).find("Drag") == 0);
+        }
+    }
+    CHECK(gizmo_handle_tip(EditMode::Translate, GizmoHandle::None) == nullptr);
+    CHECK(gizmo_handle_tip(EditMode::Camera, GizmoHandle::AxisX) == nullptr);
+}
