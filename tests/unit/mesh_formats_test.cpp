@@ -317,3 +317,23 @@ TEST_CASE("a PLY whose face has no corners is refused, not left to abort assimp'
     const fs::path file = test::source_dir() / "tests" / "fuzz" / "seeds" / "mesh" / "ply_face_without_corners.ply";
     CHECK_THROWS_WITH(load_mesh(file), Catch::StartsWith(file.string() + ": "));
 }
+
+TEST_CASE("a mangled PLY header is refused before assimp reads it, naming the line", "[mesh]") {
+    // The mesh fuzzer's second finding: assimp's binary PLY reader read past the file on a
+    // header with a garbled format line and a misspelled keyword. The header is checked first.
+    const std::string body(64, '\0');
+    const std::pair<const char *, const char *> cases[] = {
+        {"ply\nformat binary_litt\xa8\xa8 1.0\nelement vertex 1\nproperty float x\nend_header\n", "line 2: an unknown format"},
+        {"ply\nformat ascii 1.0\nelement vertex 1\noeprprty float x\nend_header\n", "line 4: an unknown keyword 'oeprprty'"},
+        {"ply\nformat ascii 1.0\nformat ascii 1.0\nelement vertex 1\nend_header\n", "line 3: a second format line"},
+        {"ply\nformat ascii 1.0\nelement vertex 1\nproperty flot x\nend_header\n", "line 4: an unknown property type 'flot'"},
+        {"ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n", "line 3: a property before any element"},
+        {"ply\nelement vertex 1\nformat ascii 1.0\nend_header\n", "line 2: 'element' before the format line"},
+    };
+    int i = 0;
+    for (const auto &[header, said] : cases) {
+        const fs::path file = write("mangled" + std::to_string(i++) + ".ply", std::string(header) + body);
+        INFO(header);
+        CHECK_THROWS_WITH(load_mesh(file), Catch::StartsWith(file.string() + ": " + said));
+    }
+}
