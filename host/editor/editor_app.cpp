@@ -77,7 +77,7 @@ struct WindowState {
 WindowState &state_of(GLFWwindow *w) { return *static_cast<WindowState *>(glfwGetWindowUserPointer(w)); }
 
 // A mouse button changed: an event for the editor's queue, where the pointer was. Called at
-// once by the callback over ImGui's (install_key_callback); ImGui's own calls it again when it
+// once by the callback over ImGui's (install_queued_callbacks); ImGui's own calls it again when it
 // is handed the change later, which is skipped.
 void on_mouse_button(GLFWwindow *w, int button, int action, int mods) {
     auto &s = state_of(w);
@@ -93,8 +93,8 @@ void on_mouse_button(GLFWwindow *w, int button, int action, int mods) {
 }
 
 void install_callbacks(GLFWwindow *window) {
-    // Keys: installed over ImGui's own callback (see install_key_callback), not under it.
-    glfwSetMouseButtonCallback(window, on_mouse_button); // under ImGui's (install_key_callback)
+    // Keys: installed over ImGui's own callback (see install_queued_callbacks), not under it.
+    glfwSetMouseButtonCallback(window, on_mouse_button); // under ImGui's (install_queued_callbacks)
     glfwSetScrollCallback(window, [](GLFWwindow *w, double, double dy) {
         auto &s = state_of(w);
         s.woke = true;
@@ -203,9 +203,10 @@ class Pointer {
     int viewport_height_ = 1;
 };
 
-// Keys go to the editor's queue and, through WindowState::imgui_keys, to ImGui. Installed after
-// ImGui's backend, whose callback it wraps.
-void install_key_callback(GLFWwindow *window) {
+// Keys and mouse buttons go to the editor's queue at once and to ImGui through its own queues
+// (WindowState::imgui_keys, imgui_buttons). Installed after ImGui's backend, whose callbacks
+// they wrap.
+void install_queued_callbacks(GLFWwindow *window) {
     state_of(window).imgui_key = glfwSetKeyCallback(window, [](GLFWwindow *w, int key, int scancode, int action, int mods) {
         auto &s = state_of(w);
         s.woke = true;
@@ -376,7 +377,7 @@ int run_editor(const EditorOptions &options) {
     io.MouseDoubleClickTime = 0.5f;
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window, true);
-    install_key_callback(window);
+    install_queued_callbacks(window);
     ImGui_ImplOpenGL3_Init("#version 330 core");
 
     int exit_code = 0;
