@@ -27,7 +27,9 @@ bool Model::operator==(const Model &o) const {
            texture == o.texture && tint == o.tint && reflectivity == o.reflectivity &&
            transparency == o.transparency && refractive_index == o.refractive_index &&
            dynamics == o.dynamics && gravity == o.gravity && mass == o.mass &&
-           initial_velocity == o.initial_velocity && collision_sound == o.collision_sound &&
+           initial_velocity == o.initial_velocity && restitution == o.restitution &&
+           friction == o.friction && rotates == o.rotates &&
+           angular_velocity == o.angular_velocity && collision_sound == o.collision_sound &&
            moving_sound == o.moving_sound;
 }
 
@@ -54,6 +56,12 @@ std::string check_model(const Model &m) {
         return concat("model '", m.name, "': mass must be a finite number > 0");
     if (!finite(m.initial_velocity))
         return concat("model '", m.name, "': velocity must be finite");
+    if (!in_unit(m.restitution))
+        return concat("model '", m.name, "': restitution must be in [0, 1]");
+    if (!std::isfinite(m.friction) || m.friction < 0.0)
+        return concat("model '", m.name, "': friction must be a finite number >= 0");
+    if (!finite(m.angular_velocity))
+        return concat("model '", m.name, "': angular velocity must be finite");
     return "";
 }
 

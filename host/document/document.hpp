@@ -50,6 +50,12 @@ struct Model {
     bool gravity = false;
     double mass = 1.0;
     glm::dvec3 initial_velocity{0.0};
+    // Rigid-body settings (issue 18; defaults: the seed's idealised world). A contact uses the
+    // lower restitution and the higher friction of its two models.
+    double restitution = 1.0;               // [0, 1]
+    double friction = 0.0;                  // >= 0, Coulomb's mu
+    bool rotates = false;                   // turned by its contacts, not only by its keys
+    glm::dvec3 angular_velocity{0.0};       // at t = 0, rad/s about world axes
     std::string collision_sound;
     std::string moving_sound;
 

@@ -54,6 +54,10 @@ DocumentView::DocumentView(const Document &doc) {
         d.gravity = m.gravity ? 1 : 0;
         d.mass = m.mass;
         d.initial_velocity = to_ani(m.initial_velocity);
+        d.restitution = m.restitution;
+        d.friction = m.friction;
+        d.rotates = m.rotates ? 1 : 0;
+        d.angular_velocity = to_ani(m.angular_velocity);
         d.collision_sound = m.collision_sound.c_str();
         d.moving_sound = m.moving_sound.c_str();
         models_.push_back(d);
@@ -146,6 +150,12 @@ Document document_from_view(const ani_document_view &view) {
         m.gravity = d.gravity != 0;
         m.mass = d.mass;
         m.initial_velocity = from_ani(d.initial_velocity);
+        if (ANI_MODEL_DESC_HAS_BODY(&d)) {
+            m.restitution = d.restitution;
+            m.friction = d.friction;
+            m.rotates = d.rotates != 0;
+            m.angular_velocity = from_ani(d.angular_velocity);
+        }
         m.collision_sound = str(d.collision_sound);
         m.moving_sound = str(d.moving_sound);
         doc.add_model(m, from_ani(view.keyframes[0].states[i]));

@@ -41,7 +41,9 @@ glm::dvec3 velocity_at(const ani_motion_segment &s, double t) {
 // The physics-relevant part of a model: a change elsewhere (a colour) moves nothing.
 bool same_physics(const Model &a, const Model &b) {
     return a.mesh == b.mesh && a.parent == b.parent && a.dynamics == b.dynamics && a.gravity == b.gravity &&
-           a.mass == b.mass && a.initial_velocity == b.initial_velocity;
+           a.mass == b.mass && a.initial_velocity == b.initial_velocity &&
+           a.restitution == b.restitution && a.friction == b.friction && a.rotates == b.rotates &&
+           a.angular_velocity == b.angular_velocity;
 }
 
 struct BakeContext {
@@ -55,12 +57,17 @@ struct BakeContext {
 };
 
 // Euler angles (degrees in [0, 360), the documents' X-Y-Z convention) of a rotation segment at t.
-glm::dvec3 angles_at(const ani_rotation_segment &s, double t) {
+// The world orientation of a rotation segment at t: q0 followed by a turn about w.
+glm::dquat orientation_at(const ani_rotation_segment &s, double t) {
     const glm::dquat q0(s.q0.w, s.q0.x, s.q0.y, s.q0.z);
     const glm::dvec3 w(s.w.x, s.w.y, s.w.z);
     const double speed = glm::length(w);
     const glm::dquat turn = speed > 0.0 ? glm::angleAxis(speed * (t - s.t0), w / speed) : glm::dquat(1.0, 0.0, 0.0, 0.0);
-    const glm::dmat4 m = glm::mat4_cast(glm::normalize(turn * q0));
+    return glm::normalize(turn * q0);
+}
+
+glm::dvec3 angles_at(const ani_rotation_segment &s, double t) {
+    const glm::dmat4 m = glm::mat4_cast(orientation_at(s, t));
     double x = 0.0, y = 0.0, z = 0.0;
     glm::extractEulerAngleXYZ(m, x, y, z);
     glm::dvec3 degrees = glm::degrees(glm::dvec3(x, y, z));
@@ -85,6 +92,13 @@ const ani_motion_segment *Timeline::segment_at(int model, double t) const {
                                [](double time, const ani_motion_segment &s) { return time < s.t0; });
     if (it == list.begin()) return list.empty() ? nullptr : &list.front();
     return &*(it - 1);
+}
+
+const ani_rotation_segment *Timeline::rotation_at(int model, double t) const {
+    const auto &turns = rotations_[static_cast<size_t>(model)];
+    const auto r = std::upper_bound(turns.begin(), turns.end(), t,
+                                    [](double time, const ani_rotation_segment &x) { return time < x.t0; });
+    return r != turns.begin() && t <= (r - 1)->t1 ? &*(r - 1) : nullptr;
 }
 
 ani_body_state Timeline::state_at(int model, double t) const {
@@ -175,6 +189,12 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         pm.keyed_spans = &spans[m];
         pm.keyed_span_count = 1;
         pm.start = starts[m];
+        if (const ani_rotation_segment *r = rotation_at(static_cast<int>(m), from)) {
+            const glm::dquat q = orientation_at(*r, from);
+            pm.start_orientation = ani_quat{q.w, q.x, q.y, q.z};
+            pm.start_angular_velocity = r->w;
+            pm.start_turning = 1;
+        }
         for (const Keyframe *k : doc_.keys_of(static_cast<int>(m))) key_times[m].push_back(static_cast<double>(k->time_ms) / 1000.0);
         pm.key_times = key_times[m].data();
         pm.key_count = static_cast<uint32_t>(key_times[m].size());
@@ -263,10 +283,7 @@ Frame Timeline::evaluate(double t) const {
             pose.velocity = velocity_at(*s, t);
         }
         // A backend that turns models (rigid-body rotation) overrides the keys' angles.
-        const auto &turns = rotations_[static_cast<size_t>(m)];
-        const auto r = std::upper_bound(turns.begin(), turns.end(), t,
-                                        [](double time, const ani_rotation_segment &x) { return time < x.t0; });
-        if (r != turns.begin() && t <= (r - 1)->t1) pose.angles = angles_at(*(r - 1), t);
+        if (const ani_rotation_segment *r = rotation_at(m, t)) pose.angles = angles_at(*r, t);
         frame.models[static_cast<size_t>(m)] = pose;
     }
     frame.camera = keyed_->camera(t);

@@ -88,6 +88,8 @@ class Timeline {
     void truncate(double from);
     ani_body_state state_at(int model, double t) const;
     const ani_motion_segment *segment_at(int model, double t) const;
+    // The backend's rotation segment that turns the model at t, if one does.
+    const ani_rotation_segment *rotation_at(int model, double t) const;
     void run_bake(double from, double until, const std::function<bool(double)> &progress);
 
     Document doc_;

@@ -8,7 +8,7 @@ namespace physics_custom {
 bool ModelPrint::operator==(const ModelPrint &o) const {
     return mesh == o.mesh && positions == o.positions && vertex_count == o.vertex_count &&
            triangle_count == o.triangle_count && group == o.group && dynamics == o.dynamics &&
-           gravity == o.gravity && mass == o.mass && spans == o.spans && keys == o.keys &&
+           gravity == o.gravity && mass == o.mass && body == o.body && spans == o.spans && keys == o.keys &&
            key_states == o.key_states;
 }
 
@@ -34,6 +34,10 @@ ScenePrint scene_print(const ani_physics_scene &scene) {
             p.dynamics = m.desc->dynamics;
             p.gravity = m.desc->gravity;
             p.mass = m.desc->mass;
+            if (ANI_MODEL_DESC_HAS_BODY(m.desc))
+                p.body = {m.desc->restitution, m.desc->friction, double(m.desc->rotates),
+                          m.desc->angular_velocity.x, m.desc->angular_velocity.y,
+                          m.desc->angular_velocity.z};
         }
         for (uint32_t k = 0; k < m.keyed_span_count; ++k)
             p.spans.insert(p.spans.end(), {m.keyed_spans[k].begin, m.keyed_spans[k].end});

@@ -17,6 +17,7 @@ struct ModelPrint {
     uint32_t vertex_count = 0, triangle_count = 0, group = 0;
     int32_t dynamics = 0, gravity = 0;
     double mass = 0.0;
+    std::vector<double> body; // restitution, friction, rotates, angular velocity (ABI 1.3)
     std::vector<double> spans, keys, key_states;
     bool operator==(const ModelPrint &o) const;
 };

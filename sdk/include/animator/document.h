@@ -46,7 +46,18 @@ typedef struct ani_model_desc {
     ani_vec3 initial_velocity; /* velocity at t = 0 */
     const char *collision_sound;
     const char *moving_sound;
+    /* Since ABI 1.3 (read them only when struct_size covers them: ANI_MODEL_DESC_HAS_BODY;
+     * otherwise the defaults, the seed's idealised world, apply). A contact uses the lower
+     * restitution and the higher friction of its two models (docs/physics.md). */
+    double restitution;        /* [0, 1], default 1: elastic */
+    double friction;           /* >= 0, default 0: frictionless (Coulomb's mu) */
+    int32_t rotates;           /* 0 or 1, default 0: turned only by its keys */
+    ani_vec3 angular_velocity; /* at t = 0, radians per second about world axes, default 0 */
 } ani_model_desc;
+
+/* Whether a model description carries the rigid-body fields of ABI 1.3. */
+#define ANI_MODEL_DESC_HAS_BODY(d)                                                             \
+    ((d)->struct_size >= offsetof(ani_model_desc, angular_velocity) + sizeof(ani_vec3))
 
 /* One model's state at one keyframe (the seed's NodeState), in its parent's frame (the world for
  * a model under the root): T(center) Rx(angles.x) Ry(angles.y) Rz(angles.z) S(scale). */

@@ -51,6 +51,7 @@ struct OwnedDocument {
         m.texture = m.collision_sound = m.moving_sound = keep("");
         m.refractive_index = 1.0;
         m.mass = 1.0;
+        m.restitution = 1.0; // ABI 1.3: elastic, frictionless, turned by keys only
         return m;
     }
 

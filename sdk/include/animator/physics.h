@@ -66,7 +66,18 @@ typedef struct ani_physics_model {
      * keys at a contact takes them up again at the next one). */
     const double *key_times;
     uint32_t key_count;
+    /* Since ABI 1.3: when start_turning is 1, the backend turned the model in an earlier bake
+     * (a rotation segment covers t_begin) and this is its world orientation and angular velocity
+     * (radians per second, world axes) at t_begin; when 0, its keys turn it at t_begin (and a
+     * model whose desc->rotates is on starts turning with desc->angular_velocity at t = 0). */
+    ani_quat start_orientation;
+    ani_vec3 start_angular_velocity;
+    int32_t start_turning;
 } ani_physics_model;
+
+/* Whether a physics model carries the start orientation of ABI 1.3. */
+#define ANI_PHYSICS_MODEL_HAS_TURNING(m)                                                        \
+    ((m)->struct_size >= offsetof(ani_physics_model, start_turning) + sizeof(int32_t))
 
 typedef struct ani_physics_scene {
     uint32_t struct_size;
