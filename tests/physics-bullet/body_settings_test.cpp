@@ -295,3 +295,37 @@ TEST_CASE("a model's rigid-body settings are checked, the model named") {
     CHECK(physics_bullet::combined_restitution(0.2, 0.9) == 0.2);
     CHECK(physics_bullet::combined_friction(0.2, 0.9) == 0.9);
 }
+
+TEST_CASE("a bake that goes on from a later time starts a turning model from the host's "
+          "orientation and angular velocity") {
+    // A sphere spinning without gravity, and a cube whose keys an edit changes after what is
+    // baked: the next slice builds a new world from 3 s (sliced_bake_test), where the sphere has
+    // no keys to say how it is turned, only the host's rotation segments (start_turning).
+    const glm::dvec3 w(0.0, 2.0, -1.0);
+    Document doc = no_gravity();
+    Model ball = model("ball", "sphere", true, false);
+    ball.rotates = true;
+    ball.angular_velocity = w;
+    doc.add_model(ball, placed({0, 0, 0}, glm::dvec3(0.5)));
+    doc.add_model(model("cube", "cube", false, false), placed({5, 1, 0}));
+    key(doc, 2000, 1, placed({5, 2, 0}));
+    key(doc, 5000, 1, placed({5, 3, 0}));
+    auto t = timeline_of(doc);
+    t->bake(3.0);
+    const auto worlds = [&] { return t->stats().backend_counts.at("worlds built"); };
+    REQUIRE(worlds() == 1.0);
+    Document edited = doc;
+    key(edited, 5000, 1, placed({5, 4, 0}));
+    t->edit(edited);
+    REQUIRE(t->baked_until() == 2.0); // the edited span starts at the key at 2 s
+    t->bake(6.0);
+    REQUIRE(worlds() == 2.0);
+    // Constant w throughout: q(t) = exp(t w / 2), across the two worlds.
+    for (double time : {1.0, 1.9, 2.0, 2.1, 4.5, 6.0}) {
+        CAPTURE(time);
+        glm::dquat q;
+        REQUIRE(orientation_at(*t, 0, time, &q));
+        const glm::dquat exact = glm::angleAxis(glm::length(w) * time, glm::normalize(w));
+        CHECK(quat_distance(q, exact) < 1e-12);
+    }
+}
