@@ -317,8 +317,8 @@ class Bake {
         if (!b.rotation) return glm::dvec3(0.0);
         const ani_physics_model &m = scene_->models[b.model];
         if (t == t_begin_ && ANI_PHYSICS_MODEL_HAS_TURNING(&m) && m.start_turning) {
-            const glm::dquat s(m.start_orientation.w, m.start_orientation.x,
-                               m.start_orientation.y, m.start_orientation.z);
+            const glm::dquat s(m.start_orientation.w, m.start_orientation.x, m.start_orientation.y,
+                               m.start_orientation.z);
             const glm::dvec3 w = vec(m.start_angular_velocity);
             if (!finite(w) || !std::isfinite(glm::length(glm::dvec4(s.x, s.y, s.z, s.w))) ||
                 !(glm::length(glm::dvec4(s.x, s.y, s.z, s.w)) > 0.0))
@@ -718,9 +718,9 @@ class Bake {
                 glm::dquat q = orientation(s);
                 const glm::dvec3 w = start_spin(b, t_begin_, q);
                 start_dynamic(b, t_begin_, vec(m.start.center), bullet_velocity(b, m.start), q, w);
-            }
-            else
+            } else {
                 start_rest(b, t_begin_, vec(m.start.center));
+            }
         } else if (free_now) {
             const ani_body_state start = start_of(i, t_begin_);
             start_free(b, t_begin_, start, orientation(s));

@@ -61,7 +61,8 @@ std::vector<double> bounce_apexes(double dt, double e_ball, double e_floor, doub
     ball.restitution = e_ball;
     doc.add_model(ball, placed({0.3, h, 0.2}, glm::dvec3(0.5)));
     auto t = timeline_of(with_param(doc, "step", dt));
-    // Falling time sqrt(2 (h - r) / G) = 0.74 s, then bounces of 2 e^k of it: the third apex is at 3.25 s.
+    // Falling time sqrt(2 (h - r) / G) = 0.74 s, then bounces of 2 e^k of it: the third apex is
+    // at 3.25 s.
     t->bake(4.0);
     std::vector<double> apexes;
     for (const ani_motion_segment &s : t->segments(1)) {
@@ -134,8 +135,7 @@ TEST_CASE("per-model restitution: a ball with e = 0.8 on an elastic floor bounce
         // Where Bullet's steps fall against the contact matters: four phases, the worst counts.
         for (double phase : {0.0, 0.29, 0.58, 0.87}) {
             double h_minus_r = 0.0;
-            const std::vector<double> apexes =
-                bounce_apexes(kSteps[k], e, 1.0, phase, &h_minus_r);
+            const std::vector<double> apexes = bounce_apexes(kSteps[k], e, 1.0, phase, &h_minus_r);
             CAPTURE(kSteps[k], phase);
             REQUIRE(apexes.size() >= 3);
             // Each bounce keeps e of the speed, so e^2 of the height: apex k = e^(2k) (h - r).
