@@ -76,7 +76,7 @@ std::vector<double> bounce_apexes(double dt, double e_ball, double e_floor, doub
 
 // Two spheres (r = 0.5, masses 1 and 3, at 2 and -1 m/s) head-on without gravity, restitution
 // e_a and e_b on each: their velocities (along x) well after the contact.
-glm::dvec2 head_on(double dt, double e_a, double e_b) {
+glm::dvec2 head_on(double dt, double e_a, double e_b, double e_param = 1.0) {
     Document doc = no_gravity();
     Model a = model("a", "sphere", true, false), b = model("b", "sphere", true, false);
     a.mass = 1.0;
@@ -87,7 +87,7 @@ glm::dvec2 head_on(double dt, double e_a, double e_b) {
     b.restitution = e_b;
     doc.add_model(a, placed({-1.0, 0, 0}, glm::dvec3(0.5)));
     doc.add_model(b, placed({1.0, 0, 0}, glm::dvec3(0.5)));
-    auto t = timeline_of(with_param(doc, "step", dt));
+    auto t = timeline_of(with_param(with_param(doc, "step", dt), "restitution", e_param));
     t->bake(1.5); // contact at (2 - 2 r) / 3 = 0.33 s
     const Frame f = t->evaluate(1.5);
     CHECK(t->events().size() == 1);
@@ -180,6 +180,9 @@ TEST_CASE("the combination rule: a contact takes the lower restitution and the h
         CHECK(on_a == on_both);
         // Lower of 0.5 and 0.9: 0.5.
         CHECK(head_on(dt, 0.9, 0.5) == on_a);
+        // An earlier document's parameter bounds every contact: the same as on a model.
+        CHECK(head_on(dt, 1.0, 1.0, 0.5) == on_a);
+        CHECK(head_on(dt, 0.9, 1.0, 0.5) == on_a);
         // Friction on the ball or on the floor, or the higher of two: the same rolling.
         const std::vector<double> at = {0.1, 0.2, 0.4, 1.0};
         const Rolling ball = sliding_ball(dt, 0.3, 0.0, at), floor = sliding_ball(dt, 0.0, 0.3, at),
