@@ -1,6 +1,7 @@
 #include "bullet_bake.hpp"
 
 #include "../physics-custom/scene_print.hpp" // physics.custom's, shared
+#include "material.hpp"
 #include "shapes.hpp"
 #include "track.hpp"
 
@@ -178,12 +179,7 @@ class Bake {
     }
 
     void run() {
-        if (options_.rotate_on_contact && !sink_->rotation) {
-            // Bullet would turn models that the host then shows turned by their keys.
-            log(ANI_LOG_WARNING, "rotate_on_contact needs a host that takes rotation segments; "
-                                 "models turn by their keys only");
-            options_.rotate_on_contact = false;
-        }
+        read_materials();
         print_ = physics_custom::scene_print(*scene_);
         out_.resize(scene_->model_count);
         rotation_out_.resize(scene_->model_count);
@@ -295,6 +291,45 @@ class Bake {
 
   private:
     // ---- setup -----------------------------------------------------------------------------
+
+    // Each model's restitution, friction, Rotates and angular velocity (material.hpp).
+    void read_materials() {
+        bool turning = false;
+        for (uint32_t i = 0; i < scene_->model_count; ++i) {
+            const ani_physics_model &m = scene_->models[i];
+            if (!m.desc) throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "a model has no description");
+            materials_.push_back(material_of(*m.desc, name_of(m), options_.restitution,
+                                             options_.friction, options_.rotate_on_contact));
+            turning = turning || (materials_.back().rotates && m.desc->dynamics);
+        }
+        if (turning && !sink_->rotation) {
+            // Bullet would turn models that the host then shows turned by their keys.
+            log(ANI_LOG_WARNING, "Rotates (and rotate_on_contact) needs a host that takes "
+                                 "rotation segments; models turn by their keys only");
+            for (Material &m : materials_) m.rotates = false;
+        }
+    }
+
+    // The orientation and angular velocity a body Bullet turns starts with at t (q: its keys'
+    // orientation there): the host's when Bullet turned it in an earlier bake, the model's own
+    // at t = 0, else its keys' angular velocity where they leave it (over the step before t).
+    glm::dvec3 start_spin(const Body &b, double t, glm::dquat &q) const {
+        if (!b.rotation) return glm::dvec3(0.0);
+        const ani_physics_model &m = scene_->models[b.model];
+        if (t == t_begin_ && ANI_PHYSICS_MODEL_HAS_TURNING(&m) && m.start_turning) {
+            const glm::dquat s(m.start_orientation.w, m.start_orientation.x, m.start_orientation.y,
+                               m.start_orientation.z);
+            const glm::dvec3 w = vec(m.start_angular_velocity);
+            if (!finite(w) || !std::isfinite(glm::length(glm::dvec4(s.x, s.y, s.z, s.w))) ||
+                !(glm::length(glm::dvec4(s.x, s.y, s.z, s.w)) > 0.0))
+                not_finite(b.model);
+            q = glm::normalize(s);
+            return w;
+        }
+        if (t <= 0.0) return materials_[b.model].angular_velocity;
+        const double before = std::max(0.0, t - dt_);
+        return angular_velocity(orientation(keyed_state(b.model, before)), q, t - before);
+    }
 
     // Bullet meets a body moving over the inner edge between two coplanar triangles of a static
     // mesh on that edge too, with a normal tilted towards the body: beside the face's contact,
@@ -626,7 +661,7 @@ class Bake {
         btRigidBody::btRigidBodyConstructionInfo ci(0.0, nullptr, o.shape->shape.get());
         o.rb = std::make_unique<btRigidBody>(ci);
         o.rb->setWorldTransform(transform(center, q));
-        configure_material(*o.rb);
+        configure_material(*o.rb, i);
         o.rb->setUserIndex(static_cast<int>(i));
         o.rb->setUserIndex2(-1 - static_cast<int>(obstacles_.size()));
         world_->addRigidBody(o.rb.get(), btBroadphaseProxy::DefaultFilter,
@@ -634,10 +669,11 @@ class Bake {
         obstacles_.push_back(std::move(o));
     }
 
-    void configure_material(btRigidBody &rb) const {
-        // Bullet multiplies the two bodies' coefficients: each gets the square root.
-        rb.setRestitution(std::sqrt(options_.restitution));
-        rb.setFriction(std::sqrt(options_.friction));
+    void configure_material(btRigidBody &rb, uint32_t model) const {
+        // The model's own values: the combine callbacks take the lower restitution and the
+        // higher friction of a contact's two bodies (install_combine_rules).
+        rb.setRestitution(materials_[model].restitution);
+        rb.setFriction(materials_[model].friction);
         rb.setRollingFriction(0.0);
         rb.setSpinningFriction(0.0);
         rb.setContactProcessingThreshold(0.0);
@@ -661,14 +697,14 @@ class Bake {
         b.track = std::make_unique<Track>(i, segment_sink());
         const ani_model_state s = keyed_state(i, t_begin_);
         b.shape = make_shape(i, vec(s.scale), true);
-        if (options_.rotate_on_contact && b.dynamics) {
+        if (materials_[i].rotates && b.dynamics) {
             b.rotation =
                 std::make_unique<RotationTrack>(i, rotation_sink(), std::max(b.shape->reach, 1e-9));
             b.rotation->set_gravity(glm::length(b.a));
         }
         btRigidBody::btRigidBodyConstructionInfo ci(0.0, nullptr, b.shape->shape.get());
         b.rb = std::make_unique<btRigidBody>(ci);
-        configure_material(*b.rb);
+        configure_material(*b.rb, i);
         b.rb->setDamping(0.0, 0.0);
         b.rb->setFlags(b.rb->getFlags() & ~BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY);
         b.rb->setUserIndex(static_cast<int>(i));
@@ -678,11 +714,13 @@ class Bake {
         if (released) {
             // Released from its keys at a contact in an earlier bake: free until its next key.
             b.resume_at = next_key(i, t_begin_);
-            if (b.dynamics)
-                start_dynamic(b, t_begin_, vec(m.start.center), bullet_velocity(b, m.start),
-                              orientation(s));
-            else
+            if (b.dynamics) {
+                glm::dquat q = orientation(s);
+                const glm::dvec3 w = start_spin(b, t_begin_, q);
+                start_dynamic(b, t_begin_, vec(m.start.center), bullet_velocity(b, m.start), q, w);
+            } else {
                 start_rest(b, t_begin_, vec(m.start.center));
+            }
         } else if (free_now) {
             const ani_body_state start = start_of(i, t_begin_);
             start_free(b, t_begin_, start, orientation(s));
@@ -706,7 +744,9 @@ class Bake {
     // four cases.
     void start_free(Body &b, double t, const ani_body_state &start, const glm::dquat &q) {
         if (b.dynamics) {
-            start_dynamic(b, t, vec(start.center), bullet_velocity(b, start), q);
+            glm::dquat turned_to = q;
+            const glm::dvec3 w = start_spin(b, t, turned_to);
+            start_dynamic(b, t, vec(start.center), bullet_velocity(b, start), turned_to, w);
         } else if (b.gravity && start.motion != ANI_MOTION_REST) {
             // Without Dynamics it drops from rest, except that a fall under way goes on.
             const glm::dvec3 v =
@@ -726,7 +766,7 @@ class Bake {
     }
 
     void start_dynamic(Body &b, double t, const glm::dvec3 &x, const glm::dvec3 &v,
-                       const glm::dquat &q) {
+                       const glm::dquat &q, const glm::dvec3 &w = glm::dvec3(0.0)) {
         b.mode = Mode::kDynamic;
         const bool was_in_world = b.rb->isInWorld();
         if (was_in_world) world_->removeRigidBody(b.rb.get());
@@ -737,7 +777,7 @@ class Bake {
         btVector3 inertia(0.0, 0.0, 0.0);
         b.shape->shape->calculateLocalInertia(b.mass, inertia);
         b.rb->setMassProps(b.mass, inertia);
-        const double turn = options_.rotate_on_contact ? 1.0 : 0.0;
+        const double turn = b.rotation ? 1.0 : 0.0; // Rotates: inertia from the shape
         b.rb->setAngularFactor(btVector3(turn, turn, turn));
         b.rb->setLinearFactor(btVector3(1.0, 1.0, 1.0));
         if (b.gravity) {
@@ -747,7 +787,7 @@ class Bake {
         }
         b.rb->setCenterOfMassTransform(transform(x, q));
         b.rb->setLinearVelocity(bt(v));
-        b.rb->setAngularVelocity(btVector3(0.0, 0.0, 0.0));
+        b.rb->setAngularVelocity(bt(b.rotation ? w : glm::dvec3(0.0)));
         b.rb->updateInertiaTensor();
         if (options_.ccd && b.shape->inner > 0.0) {
             b.rb->setCcdMotionThreshold(0.5 * b.shape->inner);
@@ -757,7 +797,7 @@ class Bake {
             b.rb->setCcdSweptSphereRadius(0.0);
         }
         b.track->start_stepping(t, x, v, b.a, dt_);
-        if (b.rotation) b.rotation->start(t, q, glm::dvec3(0.0), dt_);
+        if (b.rotation) b.rotation->start(t, q, w, dt_);
         if (was_in_world) world_add(b);
     }
 
@@ -1339,7 +1379,9 @@ class Bake {
         b.track->start_closed(p.t, vec(s.center), v, b.a, ANI_MOTION_FREE);
         const glm::dvec3 x1 = b.track->position(t1), v1 = b.track->velocity(t1);
         b.track->close(t1);
-        start_dynamic(b, t1, x1, v1 - 0.5 * dt_ * b.a, orientation(keyed_state(b.model, t1)));
+        const glm::dquat q1 = orientation(keyed_state(b.model, t1));
+        const glm::dvec3 w1 = b.rotation ? b.kin_w : glm::dvec3(0.0); // its keys', this step
+        start_dynamic(b, t1, x1, v1 - 0.5 * dt_ * b.a, q1, w1);
     }
 
     // Pairs overlapping now (at the start, or when a body becomes free or is keyed again) are
@@ -1625,6 +1667,7 @@ class Bake {
     double t_ = 0.0, previous_ = 0.0;
     int64_t k_ = 1;
     std::vector<uint32_t> groups_;
+    std::vector<Material> materials_; // per model (read_materials)
     Filter filter_;
     std::unique_ptr<btDefaultCollisionConfiguration> config_;
     std::unique_ptr<Dispatcher> dispatcher_;
@@ -1675,6 +1718,7 @@ BakeInProgress::~BakeInProgress() = default;
 void bake_scene(const ani_physics_scene &scene, double t_begin, double t_end,
                 const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options,
                 BakeInProgress *in_progress) {
+    install_combine_rules(); // process-wide, always the same min / max functions
     if (!in_progress) {
         SaidInBake one_bake;
         Bake(scene, t_begin, t_end, sink, host, options, one_bake).run();

@@ -54,8 +54,8 @@ const ani_param_descriptor kParams[] = {
     {sizeof(ani_param_descriptor),
      "rotate_on_contact",
      "Rotate on contact",
-     "Beyond the seed: full rigid-body rotation of models with Dynamics once their keys end. Off, "
-     "models turn only as their keys say.",
+     "Every model with Dynamics turns from its contacts once its keys end, as if each had Rotates "
+     "on (for earlier documents: prefer each model's Rotates). Off, only models with Rotates do.",
      ANI_PARAM_BOOL,
      0.0,
      1.0,
@@ -66,8 +66,9 @@ const ani_param_descriptor kParams[] = {
     {sizeof(ani_param_descriptor),
      "friction",
      "Friction",
-     "Coulomb friction coefficient of every contact (0: the seed's frictionless contacts). Without "
-     "rotation a model slides to a stop; with it, it rolls.",
+     "The least Coulomb friction of every contact; a model's own Friction counts where higher (for "
+     "earlier documents: prefer each model's; 0: the models' own). Without rotation a model slides "
+     "to a stop; with it, it rolls.",
      ANI_PARAM_FLOAT,
      0.0,
      2.0,
@@ -78,7 +79,8 @@ const ani_param_descriptor kParams[] = {
     {sizeof(ani_param_descriptor),
      "restitution",
      "Restitution",
-     "Coefficient of restitution of every contact (1: the seed's elastic bounces).",
+     "The most restitution of every contact; a model's own Restitution counts where lower (for "
+     "earlier documents: prefer each model's; 1: the models' own).",
      ANI_PARAM_FLOAT,
      0.0,
      1.0,
@@ -167,9 +169,10 @@ const ani_plugin_descriptor descriptor = {
     ANI_KIND_PHYSICS,
     "Bullet",
     {0, 1, 0},
-    "Bullet 3 (double precision) at a fixed time step, set up to follow the seed's model: elastic, "
-    "frictionless contacts, keyed models as kinematic bodies, no rotation from contacts unless "
-    "asked. A second engine to cross-check the exact one.",
+    "Bullet 3 (double precision) at a fixed time step, set up to follow the seed's model: keyed "
+    "models as kinematic bodies; each model's restitution, friction and Rotates (by default "
+    "elastic, frictionless, turned by keys only), a contact taking the lower restitution and the "
+    "higher friction. A second engine to cross-check the exact one.",
     kParams,
     sizeof(kParams) / sizeof(kParams[0]),
     &api,

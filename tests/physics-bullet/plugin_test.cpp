@@ -378,7 +378,7 @@ TEST_CASE("a mesh vertex that is not finite is refused, naming the model, and ro
     sink.rotation = nullptr; // a host without rotation segments: Bullet does not turn models
     take_log();
     REQUIRE(api.bake(instance.handle(), &scene, 0.0, 3.0, &sink, &status) == ANI_OK);
-    CHECK(logged(take_log(), "rotate_on_contact needs a host that takes rotation segments"));
+    CHECK(logged(take_log(), "needs a host that takes rotation segments"));
 
     positions[4] = std::nan("");
     CHECK(api.bake(instance.handle(), &scene, 0.0, 3.0, &sink, &status) ==
