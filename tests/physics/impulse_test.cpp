@@ -1,11 +1,18 @@
 // The contact impulse (plugins/physics-custom/impulse.hpp) against hand-derived formulas.
 #include "impulse.hpp"
+#include "material.hpp"
+
+#include <animator/plugin_cpp.hpp>
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include <cmath>
+#include <cstddef>
+#include <limits>
 #include <random>
+#include <string>
 
 using namespace physics_custom;
 
@@ -177,4 +184,36 @@ TEST_CASE("impulse: with friction and spin, spheres never gain energy for e <= 1
     CHECK(worst_gain <= 1e-12);
     CHECK(sticking > 100);
     CHECK(slipping > 100);
+}
+
+TEST_CASE("material: a description before SDK 1.3 gets the seed's world; values out of range are "
+          "refused naming the model") {
+    ani_model_desc d{};
+    d.name = "odd ball";
+    d.struct_size = static_cast<uint32_t>(offsetof(ani_model_desc, restitution));
+    d.restitution = 0.3; // beyond struct_size: not read
+    CHECK(material_of(d).seed());
+    d.struct_size = sizeof(ani_model_desc);
+    d.friction = 0.2;
+    d.rotates = 1;
+    d.angular_velocity = {0, 1, 0};
+    const Material m = material_of(d);
+    CHECK(m.restitution == 0.3);
+    CHECK(m.friction == 0.2);
+    CHECK(m.rotates);
+    CHECK(m.angular_velocity == glm::dvec3(0, 1, 0));
+    for (int bad = 0; bad < 4; ++bad) {
+        ani_model_desc x = d;
+        if (bad == 0) x.restitution = 1.5;
+        if (bad == 1) x.restitution = std::nan("");
+        if (bad == 2) x.friction = -0.1;
+        if (bad == 3) x.angular_velocity.y = std::numeric_limits<double>::infinity();
+        CAPTURE(bad);
+        try {
+            material_of(x);
+            FAIL("accepted");
+        } catch (const ani::Failure &f) {
+            CHECK(f.message.find("'odd ball'") != std::string::npos);
+        }
+    }
 }
