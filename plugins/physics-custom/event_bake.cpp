@@ -94,8 +94,8 @@ struct Body {
     // vertices of a mesh in the support's plane. It leaves the support when all have left it.
     std::vector<glm::dvec3> support_feet;
     double grazed_until = -kNever; // not a sphere: when the obstacles it grazed count again
-    Material material; // restitution, friction, turning (issue 18)
-    Spin spin;         // a free sphere that rotates: its orientation and angular velocity
+    Material material;             // restitution, friction, turning (issue 18)
+    Spin spin;                  // a free sphere that rotates: its orientation and angular velocity
     double settles_at = kNever; // put on its support by the Zeno rule: the accumulation time
 
     bool keyed() const { return mode == Mode::kKeyed; }

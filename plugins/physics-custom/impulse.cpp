@@ -34,7 +34,9 @@ void apply(const ImpulseBody &b, const glm::dvec3 &p, glm::dvec3 &v, glm::dvec3 
 
 } // namespace
 
-glm::dvec3 point_velocity_of(const ImpulseBody &b) { return b.v + glm::cross(b.w, b.r); }
+glm::dvec3 point_velocity_of(const ImpulseBody &b) {
+    return b.v + glm::cross(b.w, b.r);
+}
 
 ImpulseResult contact_impulse(const ImpulseBody &a, const ImpulseBody &b, const glm::dvec3 &n,
                               double e, double mu) {

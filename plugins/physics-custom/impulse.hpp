@@ -25,16 +25,16 @@
 namespace physics_custom {
 
 struct ImpulseBody {
-    double inv_mass = 0.0;             // 0: infinite mass (static or keyed)
-    glm::dmat3 inv_inertia{0.0};       // world inverse inertia; 0: does not turn
-    glm::dvec3 v{0.0}, w{0.0};         // velocity and angular velocity
-    glm::dvec3 r{0.0};                 // contact point minus centre of mass
+    double inv_mass = 0.0;       // 0: infinite mass (static or keyed)
+    glm::dmat3 inv_inertia{0.0}; // world inverse inertia; 0: does not turn
+    glm::dvec3 v{0.0}, w{0.0};   // velocity and angular velocity
+    glm::dvec3 r{0.0};           // contact point minus centre of mass
 };
 
 struct ImpulseResult {
-    glm::dvec3 impulse{0.0};           // on a (b receives -impulse)
-    double normal = 0.0;               // impulse . n
-    bool sticks = false;               // the slip stopped (case 1)
+    glm::dvec3 impulse{0.0}; // on a (b receives -impulse)
+    double normal = 0.0;     // impulse . n
+    bool sticks = false;     // the slip stopped (case 1)
     glm::dvec3 va{0.0}, wa{0.0}, vb{0.0}, wb{0.0};
 };
 
@@ -46,8 +46,12 @@ ImpulseResult contact_impulse(const ImpulseBody &a, const ImpulseBody &b, const 
 
 // The contact's values from the two models' (physics.md): the lower restitution, the higher
 // friction.
-inline double combined_restitution(double ea, double eb) { return ea < eb ? ea : eb; }
-inline double combined_friction(double mua, double mub) { return mua > mub ? mua : mub; }
+inline double combined_restitution(double ea, double eb) {
+    return ea < eb ? ea : eb;
+}
+inline double combined_friction(double mua, double mub) {
+    return mua > mub ? mua : mub;
+}
 
 // The velocity of the point at offset r from the centre of a body.
 glm::dvec3 point_velocity_of(const ImpulseBody &b);

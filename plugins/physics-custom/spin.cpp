@@ -19,7 +19,8 @@ glm::dquat orientation_of_angles(const glm::dvec3 &degrees) {
     return glm::normalize(glm::quat_cast(glm::dmat3(glm::eulerAngleXYZ(a.x, a.y, a.z))));
 }
 
-glm::dvec3 angular_velocity_between(const glm::dquat &q_before, const glm::dquat &q_after, double dt) {
+glm::dvec3 angular_velocity_between(const glm::dquat &q_before, const glm::dquat &q_after,
+                                    double dt) {
     glm::dquat d = glm::normalize(q_after * glm::inverse(q_before));
     if (d.w < 0.0) d = -d; // the shorter way round
     const glm::dvec3 axis(d.x, d.y, d.z);

@@ -10,10 +10,10 @@
 namespace physics_custom {
 
 struct Spin {
-    bool on = false;               // contacts turn it; reported as rotation segments
-    double t0 = 0.0;               // start of the current stretch
+    bool on = false; // contacts turn it; reported as rotation segments
+    double t0 = 0.0; // start of the current stretch
     glm::dquat q0{1.0, 0.0, 0.0, 0.0};
-    glm::dvec3 w{0.0};             // rad/s, world axes
+    glm::dvec3 w{0.0}; // rad/s, world axes
     glm::dquat at(double t) const;
 };
 
@@ -23,7 +23,8 @@ glm::dquat orientation_of_angles(const glm::dvec3 &degrees);
 
 // The world angular velocity that turns q_before into q_after in dt: the rotation
 // q_after q_before^-1 as an axis times its angle, over dt (the shorter way round).
-glm::dvec3 angular_velocity_between(const glm::dquat &q_before, const glm::dquat &q_after, double dt);
+glm::dvec3 angular_velocity_between(const glm::dquat &q_before, const glm::dquat &q_after,
+                                    double dt);
 
 // A solid sphere's inverse inertia, 1 / (2/5 m r^2).
 inline double sphere_inverse_inertia(double mass, double radius) {

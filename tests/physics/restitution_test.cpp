@@ -30,7 +30,9 @@ const ani_rotation_segment *rotation_at(const Timeline &t, int model, double tim
     return found;
 }
 
-glm::dvec3 vec(const ani_vec3 &v) { return {v.x, v.y, v.z}; }
+glm::dvec3 vec(const ani_vec3 &v) {
+    return {v.x, v.y, v.z};
+}
 
 } // namespace
 
@@ -103,7 +105,8 @@ TEST_CASE("two spheres of unequal mass meeting obliquely with e = 0.5: the norma
     REQUIRE(timeline->events().size() == 1);
     // They meet when |d + va t| = 2r (d = pa - pb), with n = (d + va t) / 2r from b to a.
     const glm::dvec3 d = pa - pb;
-    const double R = 2.0 * r, qa = glm::dot(va, va), qb = glm::dot(d, va), qc = glm::dot(d, d) - R * R;
+    const double R = 2.0 * r, qa = glm::dot(va, va), qb = glm::dot(d, va),
+                 qc = glm::dot(d, d) - R * R;
     const double t = (-qb - std::sqrt(qb * qb - qa * qc)) / qa;
     const glm::dvec3 n = (d + va * t) / R;
     // Newton: j = -(1 + e) u_n / (1/ma + 1/mb), u_n = va . n; va' = va + j/ma n, vb' = -j/mb n.
@@ -273,9 +276,10 @@ TEST_CASE("a bake cut into slices bounces, turns and comes to rest exactly as on
     for (double t : {0.5, 1.0, 3.0, 6.0, 11.9}) {
         CAPTURE(t);
         // (A slice reports a segment from its own start: rounding of the same parabola.)
-        CHECK(glm::length(whole->evaluate(t).models[1].center - sliced->evaluate(t).models[1].center) <
-              1e-12);
-        const ani_rotation_segment *ra = rotation_at(*whole, 1, t), *rb = rotation_at(*sliced, 1, t);
+        CHECK(glm::length(whole->evaluate(t).models[1].center -
+                          sliced->evaluate(t).models[1].center) < 1e-12);
+        const ani_rotation_segment *ra = rotation_at(*whole, 1, t),
+                                   *rb = rotation_at(*sliced, 1, t);
         REQUIRE(ra);
         REQUIRE(rb);
         CHECK(vec(ra->w) == vec(rb->w));
