@@ -293,3 +293,35 @@ TEST_CASE("a bake cut into slices bounces, turns and comes to rest exactly as on
     CHECK(vec(still->v0) == glm::dvec3(0.0));
     CHECK(vec(rotation_at(*whole, 1, 11.0)->w) == glm::dvec3(0, 2.0, 0));
 }
+
+TEST_CASE("a backspinning ball dropped on a rough floor sticks at its first bounce, then rolls "
+          "without slipping, and comes to rest on the floor rolling at the closed-form speed") {
+    // First bounce: v_x = 0, w_z = 4, slip u = w r. Sticking (|J_t| = 2 m u / 7 is far inside
+    // mu J_n): v_x' = (5 * 0 - 2 r w) / 7 = -8 r / 7, w' = (2 r w - 0) / (7 r) = 8 / 7, no slip
+    // after, so no later bounce rubs: it rolls at -8 r / 7 from t0 (1 + e) / (1 - e) on.
+    const double r = unit_radius() * 0.5, h = 2.0, e = 0.6;
+    Document doc;
+    Model floor = model("floor", "plane", false, false);
+    floor.friction = 1.0;
+    doc.add_model(floor, placed({0, 0, 0}, 10.0));
+    Model ball = model("ball", "sphere", true, true);
+    ball.restitution = e;
+    ball.rotates = true;
+    ball.angular_velocity = {0, 0, 4};
+    doc.add_model(ball, placed({0, h, 0}, 0.5));
+    auto timeline = timeline_of(doc);
+    timeline->bake(8.0);
+    const double t0 = std::sqrt(2.0 * (h - r) / G), rest = t0 * (1.0 + e) / (1.0 - e);
+    const ani_motion_segment *rolling = segment_at(*timeline, 1, rest + 1.0);
+    REQUIRE(rolling);
+    CHECK(std::abs(rolling->t0 - rest) < 1e-9);
+    CHECK(std::abs(rolling->v0.x + 8.0 * r / 7.0) < 1e-12);
+    CHECK(rolling->v0.y == 0.0);
+    CHECK(vec(rolling->a) == glm::dvec3(0.0));
+    CHECK(rolling->p0.y == Approx(r).epsilon(1e-12));
+    const ani_rotation_segment *spin = rotation_at(*timeline, 1, rest + 1.0);
+    REQUIRE(spin);
+    CHECK(std::abs(spin->w.z - 8.0 / 7.0) < 1e-12);
+    CHECK(std::abs(rolling->v0.x + spin->w.z * r) < 1e-12); // rolling: the contact point is still
+    CHECK(timeline->events().size() < 200);
+}
