@@ -3,14 +3,18 @@
 #include "event_queue.hpp"
 #include "free_motion.hpp"
 #include "grid.hpp"
+#include "impulse.hpp"
 #include "keyed_contact.hpp"
+#include "material.hpp"
 #include "mesh_contact.hpp"
 #include "mesh_distance.hpp"
 #include "overlap_memory.hpp"
 #include "polynomial.hpp"
 #include "response.hpp"
 #include "scene_print.hpp"
+#include "spin.hpp"
 #include "time_of_impact.hpp"
+#include "zeno.hpp"
 
 #include <animator/plugin_cpp.hpp>
 #include <glm/geometric.hpp>
@@ -90,6 +94,9 @@ struct Body {
     // vertices of a mesh in the support's plane. It leaves the support when all have left it.
     std::vector<glm::dvec3> support_feet;
     double grazed_until = -kNever; // not a sphere: when the obstacles it grazed count again
+    Material material;             // restitution, friction, turning (issue 18)
+    Spin spin;                  // a free sphere that rotates: its orientation and angular velocity
+    double settles_at = kNever; // put on its support by the Zeno rule: the accumulation time
 
     bool keyed() const { return mode == Mode::kKeyed; }
     bool free_sphere() const { return sphere && mode == Mode::kFree; }
@@ -129,7 +136,8 @@ enum class EventKind {
     kCell,
     kRelease,
     kRecheck,
-    kLeave
+    kLeave,
+    kSettle
 };
 struct Predicted {
     double t = kNever;
@@ -263,6 +271,7 @@ class EventBake {
                 emit_keyed(b.model, b.keyed_from, t_end_);
             else if (b.active)
                 close_segment(b, t_end_);
+            if (b.spin.on) emit_spin(b, t_end_);
         }
         report_counts();
     }
@@ -282,6 +291,7 @@ class EventBake {
             // left it (the host's cache says so), until its next key.
             const bool released = !free_now && m.start.motion != ANI_MOTION_KEYED;
             const ani_model_desc &d = *m.desc;
+            const Material material = material_of(d); // refuses values out of range
             const bool movable = d.dynamics || d.gravity;
             const bool solid = m.mesh && m.mesh->triangle_count > 0 && m.group == i;
             // Keys that all hold it in the same place (a floor keyed along with the rest of a
@@ -308,6 +318,7 @@ class EventBake {
                 b.reach = mesh_reach(*m.mesh);
                 if (!b.sphere) b.edges = edges_of(m.mesh->triangles, m.mesh->triangle_count);
                 b.dynamics = d.dynamics != 0;
+                b.material = material;
                 b.keys_end = free_now ? t_begin_ : span.end;
                 bodies_.push_back(b);
                 Body &body = bodies_.back();
@@ -539,6 +550,8 @@ class EventBake {
         b.motion = s.motion;
         b.support = -1;
         b.support_edges.clear();
+        b.settles_at = kNever;
+        start_spin(b, t);
         b.shape.reset();
         if (!b.sphere && t >= b.keys_end) { // its keys no longer turn or scale it
             const ani_model_state state = keyed_state(*scene_, b.model, t, nullptr);
@@ -617,6 +630,7 @@ class EventBake {
         b.t0 = t;
         b.path = stop ? Path{p, glm::dvec3(0.0), glm::dvec3(0.0)} : Path{p, velocity, b.path.a};
         b.motion = stop ? ANI_MOTION_REST : ANI_MOTION_FREE;
+        b.settles_at = kNever;
         ++b.version;
     }
 
@@ -1190,6 +1204,7 @@ class EventBake {
             next = predicted(b.keys_end, EventKind::kActivation);
         else if (b.resume_at < kNever)
             next = predicted(b.resume_at, EventKind::kResume);
+        if (b.settles_at < next.t) next = predicted(b.settles_at, EventKind::kSettle);
         if (!b.active) {
             set_prediction(i, next);
             return;
@@ -1619,6 +1634,7 @@ class EventBake {
         b.support = -1;
         b.support_edges.clear();
         b.support_feet.clear();
+        b.settles_at = kNever;
         ++b.version;
     }
 
@@ -1746,6 +1762,13 @@ class EventBake {
         case EventKind::kLeave:
             unsupport(b, now);
             break;
+        case EventKind::kSettle: // the Zeno bounces' accumulation time: resting from here
+            close_segment(b, now);
+            b.path = from_now(b, now);
+            b.t0 = now;
+            b.settles_at = kNever;
+            ++b.version;
+            break;
         }
         predict(i, now);
     }
@@ -1776,8 +1799,14 @@ class EventBake {
         e.normal = ani(n);
         e.point = ani(contact.point);
         e.speed = std::max(0.0, -glm::dot(v, n));
-        // Off a model without Dynamics: a reflection; without Dynamics itself it stops.
-        restart(b, t, reflect(v, n), !b.dynamics);
+        // Off a model without Dynamics: a reflection; without Dynamics itself it stops. A sphere
+        // with restitution or friction: the contact impulse (sphere_response.inc).
+        if (!b.dynamics || !sphere_responds(b, scene_->models[o.model]))
+            restart(b, t, reflect(v, n), !b.dynamics);
+        else if (respond_to_obstacle(i, o, n, v, t)) {
+            report(e); // resting from the Zeno bounces' accumulation time
+            return;
+        }
         after_contact(i, t);
         report(e);
     }
@@ -1803,10 +1832,16 @@ class EventBake {
             Body &free = b_wall ? o : b;
             const glm::dvec3 v_free = b_wall ? vo : v, v_wall = b_wall ? v : vo,
                              n_free = b_wall ? -n : n;
-            restart(free, t,
-                    free.dynamics ? reflect_off_moving_wall(v_free, v_wall, n_free)
-                                  : glm::dvec3(0.0),
-                    !free.dynamics);
+            if (free.dynamics && sphere_responds(free, scene_->models[(b_wall ? b : o).model]))
+                respond_to_wall(free, v_free, v_wall, n_free, (b_wall ? b : o).material, t);
+            else
+                restart(free, t,
+                        free.dynamics ? reflect_off_moving_wall(v_free, v_wall, n_free)
+                                      : glm::dvec3(0.0),
+                        !free.dynamics);
+        } else if (b.dynamics && o.dynamics && b.sphere && o.sphere &&
+                   sphere_responds(b, scene_->models[o.model])) {
+            respond_to_sphere(b, v, o, vo, n, t);
         } else if (b.dynamics && o.dynamics) {
             const double ma = scene_->models[b.model].desc->mass,
                          mb = scene_->models[o.model].desc->mass;
@@ -1816,15 +1851,23 @@ class EventBake {
         } else {
             // A model without Dynamics stops at the contact; one with Dynamics reflects off it as
             // off a wall moving at its velocity then.
-            restart(b, t, b.dynamics ? reflect_off_moving_wall(v, vo, n) : glm::dvec3(0.0),
-                    !b.dynamics);
-            restart(o, t, o.dynamics ? reflect_off_moving_wall(vo, v, -n) : glm::dvec3(0.0),
-                    !o.dynamics);
+            if (b.dynamics && sphere_responds(b, scene_->models[o.model]))
+                respond_to_wall(b, v, vo, n, o.material, t);
+            else
+                restart(b, t, b.dynamics ? reflect_off_moving_wall(v, vo, n) : glm::dvec3(0.0),
+                        !b.dynamics);
+            if (o.dynamics && sphere_responds(o, scene_->models[b.model]))
+                respond_to_wall(o, vo, v, -n, b.material, t);
+            else
+                restart(o, t, o.dynamics ? reflect_off_moving_wall(vo, v, -n) : glm::dvec3(0.0),
+                        !o.dynamics);
         }
         after_contact(i, t);
         after_contact(j, t);
         report(e);
     }
+
+#include "sphere_response.inc"
 
     void report(const ani_collision_event &e) {
         auto finite = [](const ani_vec3 &v) {

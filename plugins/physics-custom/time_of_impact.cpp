@@ -50,6 +50,14 @@ std::optional<double> first_valid(const Quartic &f, double t_max, const std::fun
         const auto out = first_contact(negated, std::nextafter(*t, t_max + 1.0), t_max);
         if (!out) return std::nullopt;
         from = std::nextafter(*out, t_max + 1.0);
+        // A root found a few ulps early leaves f <= 0 at `from`, still rising: step past it
+        // (doubling the step) so that the next round does not stop there again. A ball leaving
+        // a face slowly from a hair inside it (rounding) would otherwise run out of rounds and
+        // miss its next landing (issue 18: the small bounces before rest).
+        for (double step = std::abs(from) * 1e-16 + 1e-300; from <= t_max && evaluate(f, from) <= 0.0 &&
+                                                            evaluate(df, from) > 0.0;
+             step *= 2.0)
+            from += step;
     }
     return std::nullopt;
 }

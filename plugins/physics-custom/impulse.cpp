@@ -1,0 +1,81 @@
+#include "impulse.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <cmath>
+
+namespace physics_custom {
+
+namespace {
+
+// [r]x, the cross-product matrix: cross(r) * x = r x x.
+glm::dmat3 cross(const glm::dvec3 &r) {
+    // glm is column-major: m[c][row].
+    glm::dmat3 m(0.0);
+    m[1][0] = -r.z;
+    m[2][0] = r.y;
+    m[0][1] = r.z;
+    m[2][1] = -r.x;
+    m[0][2] = -r.y;
+    m[1][2] = r.x;
+    return m;
+}
+
+glm::dmat3 k_of(const ImpulseBody &b) {
+    const glm::dmat3 rx = cross(b.r);
+    return b.inv_mass * glm::dmat3(1.0) - rx * b.inv_inertia * rx;
+}
+
+void apply(const ImpulseBody &b, const glm::dvec3 &p, glm::dvec3 &v, glm::dvec3 &w) {
+    v = b.v + b.inv_mass * p;
+    w = b.w + b.inv_inertia * glm::cross(b.r, p);
+}
+
+} // namespace
+
+glm::dvec3 point_velocity_of(const ImpulseBody &b) {
+    return b.v + glm::cross(b.w, b.r);
+}
+
+ImpulseResult contact_impulse(const ImpulseBody &a, const ImpulseBody &b, const glm::dvec3 &n,
+                              double e, double mu) {
+    ImpulseResult out;
+    out.va = a.v;
+    out.wa = a.w;
+    out.vb = b.v;
+    out.wb = b.w;
+    const glm::dvec3 u = point_velocity_of(a) - point_velocity_of(b);
+    const double un = glm::dot(u, n);
+    const glm::dmat3 k = k_of(a) + k_of(b);
+    const double knn = glm::dot(n, k * n);
+    if (!(un < 0.0) || !(knn > 0.0)) return out;
+    const glm::dvec3 ut = u - un * n;
+    glm::dvec3 p = (-(1.0 + e) * un / knn) * n; // frictionless
+    if (mu > 0.0 && ut != glm::dvec3(0.0)) {
+        const double det = glm::determinant(k);
+        bool stuck = false;
+        if (det > 0.0) {
+            const glm::dvec3 stick = glm::inverse(k) * (-(1.0 + e) * un * n - ut);
+            const double pn = glm::dot(stick, n);
+            if (pn > 0.0 && glm::length(stick - pn * n) <= mu * pn) {
+                p = stick;
+                stuck = true;
+                out.sticks = true;
+            }
+        }
+        if (!stuck) {
+            const glm::dvec3 t = ut / glm::length(ut);
+            const glm::dvec3 dir = n - mu * t;
+            const double kd = glm::dot(n, k * dir);
+            if (kd > 0.0) p = (-(1.0 + e) * un / kd) * dir;
+        }
+    }
+    out.impulse = p;
+    out.normal = glm::dot(p, n);
+    apply(a, p, out.va, out.wa);
+    apply(b, -p, out.vb, out.wb);
+    return out;
+}
+
+} // namespace physics_custom
