@@ -58,10 +58,15 @@ FreeRotation::FreeRotation(const glm::dvec3 &I, const glm::dquat &q0, const glm:
     const double tol = equal_moments * I.z;
     const bool low_equal = I.y - I.x <= tol, high_equal = I.z - I.y <= tol;
     // Rotation about one principal axis alone is steady (Euler's equations: each product
-    // w_i w_j vanishes), as is any rotation of a spherical top.
+    // w_i w_j vanishes), as is any rotation of a spherical top. About the axis of the smallest
+    // or the largest moment, which are stable, a tilt below 1e-15 stays below it, so such a
+    // rotation is taken as steady (the elliptic form would divide by the tilt); about the
+    // intermediate axis, which is unstable, only an exact one.
     int spinning = -1;
-    for (int i = 0; i < 3; ++i)
-        if (wb[(i + 1) % 3] == 0.0 && wb[(i + 2) % 3] == 0.0) spinning = i;
+    const double tilt = 1e-15 * glm::length(wb);
+    if (std::hypot(wb.y, wb.z) <= tilt) spinning = 0;
+    if (std::hypot(wb.x, wb.y) <= tilt) spinning = 2;
+    if (wb.x == 0.0 && wb.z == 0.0) spinning = 1;
     if ((low_equal && high_equal) || spinning >= 0) {
         kind_ = Kind::constant;
         return;
@@ -120,10 +125,11 @@ FreeRotation::FreeRotation(const glm::dvec3 &I, const glm::dquat &q0, const glm:
     Lnorm_ = glm::length(I * wb);
     double sn, cn, dn;
     elliptic_at(u0_, sn, cn, dn, P0_);
+    // Q from the given w0 (not from the elliptic functions at u0, which differ from it by
+    // their rounding, and by more where k is clamped) keeps L exactly where w0 puts it.
     const glm::dmat3 R0 = glm::mat3_cast(q0_) * to_principal_; // world <- abc at t0
     const glm::dvec3 Iabc(Ia_, Ib_, Ic_);
-    const glm::dvec3 wabc0(A_ * cn, B_ * sn, C_ * dn);
-    Q_ = R0 * glm::transpose(to_intermediate(glm::normalize(Iabc * wabc0)));
+    Q_ = R0 * glm::transpose(to_intermediate(glm::normalize(Iabc * w)));
 }
 
 // sn, cn, dn of u and P(u) = integral_0^u du' / (1 - n sn^2 u'), with u reduced to r in
