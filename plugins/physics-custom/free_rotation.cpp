@@ -1,10 +1,8 @@
 #include "free_rotation.hpp"
 
+#include "elliptic_functions.hpp"
 #include "mass_properties.hpp"
 
-#include <boost/math/special_functions/ellint_1.hpp>
-#include <boost/math/special_functions/ellint_3.hpp>
-#include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/mat3x3.hpp>
@@ -106,22 +104,38 @@ FreeRotation::FreeRotation(const glm::dvec3 &I, const glm::dquat &q0, const glm:
     A_ = std::sqrt(D1 / (Ia_ * (Ic_ - Ia_)));
     B_ = std::sqrt(D1 / (Ib_ * (Ic_ - Ib_)));
     C_ = std::sqrt(D2 / (Ic_ * (Ic_ - Ia_)));
-    double k2 = (Ib_ - Ia_) * D1 / ((Ic_ - Ib_) * D2);
-    // On the separatrix (k = 1, a flip that takes forever) the nearest k < 1 is used.
-    k2 = std::min(k2, 1.0 - 4 * std::numeric_limits<double>::epsilon());
-    k_ = std::sqrt(k2);
-    // Signs from Euler's equations: with wc of sign s (dn > 0), Ib B wp = s (Ic - Ia) C A, so
-    // wp has the sign of s (Ic - Ia); the phase u0 puts cn and sn at wa / A and wb / B.
+    // k'^2 = 1 - k^2 = (Ic - Ia) (Ic (Ic - Ib) wc^2 - Ia (Ib - Ia) wa^2) / ((Ic - Ib) D2): the
+    // wb^2 terms cancel exactly, so a body near the separatrix (wa, wc small) keeps its k'.
+    const double kc2 = std::max(
+        0.0, (Ic_ - Ia_) * (Ic_ * (Ic_ - Ib_) * w.z * w.z - Ia_ * (Ib_ - Ia_) * w.x * w.x) /
+                 ((Ic_ - Ib_) * D2));
+    separatrix_ = !(kc2 > 0.0);
+    // Signs from Euler's equations: with wc of sign s (dn > 0) and wa = sigma A cn,
+    // Ib B wp = sigma s (Ic - Ia) C A, so wp has the sign of sigma s (Ic - Ia). Off the
+    // separatrix sigma = 1 and the phase u0 puts cn and sn at wa / A and wb / B; on it cn > 0
+    // always and sigma is the sign of wa.
     const double s = w.z > 0.0 ? 1.0 : -1.0;
-    wp_ = s * (Ic_ > Ia_ ? 1.0 : -1.0) * std::sqrt((Ic_ - Ib_) * D2 / (Ia_ * Ib_ * Ic_));
+    const double sigma = separatrix_ && w.x < 0.0 ? -1.0 : 1.0;
+    wp_ = sigma * s * (Ic_ > Ia_ ? 1.0 : -1.0) * std::sqrt((Ic_ - Ib_) * D2 / (Ia_ * Ib_ * Ic_));
     C_ *= s;
-    u0_ = boost::math::ellint_1(k_, std::atan2(w.y / B_, w.x / A_));
-    K_ = boost::math::ellint_1(k_);
+    A_ *= sigma;
     // The precession angle about L: phi' = L (Ia wa^2 + Ib wb^2) / (Ia^2 wa^2 + Ib^2 wb^2)
     //   = L / Ic + L (Ic - Ia) / (Ia Ic) / (1 - n sn^2 u),  n = -Ic (Ib - Ia) / (Ia (Ic - Ib)),
     // so phi(t) = L (t - t0) / Ic + L (Ic - Ia) / (Ia Ic wp) (P(u) - P(u0)), P(u) = Pi(n; am u, k).
     n_ = -Ic_ * (Ib_ - Ia_) / (Ia_ * (Ic_ - Ib_));
-    Pi_ = boost::math::ellint_3(k_, n_);
+    const double sn0 = w.y / B_, cn0 = w.x / A_, r0 = std::hypot(sn0, cn0);
+    if (separatrix_) {
+        // sn = tanh u, cn = dn = sech u (k = 1): no period, the body tends to the axis b.
+        u0_ = std::atanh(std::clamp(sn0 / r0, -1.0 + 1e-16, 1.0 - 1e-16));
+    } else {
+        modulus_ = EllipticModulus(kc2);
+        K_ = modulus_.complete_K();
+        Pi_ = modulus_.complete_Pi(n_);
+        // The amplitude of (sn0, cn0); for cn0 < 0, u0 = 2K - v with sn v = sn0, cn v = -cn0.
+        const double sn = sn0 / r0, cn = std::abs(cn0) / r0;
+        const double v = modulus_.F(sn, cn, std::sqrt(cn * cn + kc2 * sn * sn));
+        u0_ = cn0 >= 0.0 ? v : 2.0 * K_ - v;
+    }
     Lnorm_ = glm::length(I * wb);
     double sn, cn, dn;
     elliptic_at(u0_, sn, cn, dn, P0_);
@@ -134,12 +148,20 @@ FreeRotation::FreeRotation(const glm::dvec3 &I, const glm::dquat &q0, const glm:
 
 // sn, cn, dn of u and P(u) = integral_0^u du' / (1 - n sn^2 u'), with u reduced to r in
 // [-K, K] by u = 2 K m + r (sn and cn change sign with each half period 2K, P grows by 2 Pi).
+// On the separatrix P(u) = (u + sqrt(-n) atan(sqrt(-n) tanh u)) / (1 - n), from
+// 1 / ((1 - y^2)(1 - n y^2)) = (1 / (1 - y^2) - n / (1 - n y^2)) / (1 - n) with y = tanh u.
 void FreeRotation::elliptic_at(double u, double &sn, double &cn, double &dn, double &P) const {
+    if (separatrix_) {
+        sn = std::tanh(u);
+        cn = dn = 1.0 / std::cosh(u);
+        const double root = std::sqrt(-n_);
+        P = (u + root * std::atan(root * sn)) / (1.0 - n_);
+        return;
+    }
     const double m = std::round(u / (2.0 * K_));
     const double r = u - 2.0 * K_ * m;
-    sn = boost::math::jacobi_elliptic(k_, r, &cn, &dn);
-    const double am = std::atan2(sn, cn); // in [-pi/2, pi/2] since cn >= 0 on [-K, K]
-    P = 2.0 * m * Pi_ + (am >= 0 ? 1.0 : -1.0) * boost::math::ellint_3(k_, n_, std::abs(am));
+    modulus_.sn_cn_dn(r, sn, cn, dn);
+    P = 2.0 * m * Pi_ + modulus_.Pi(n_, sn, cn, dn);
     if (std::fmod(std::abs(m), 2.0) == 1.0) {
         sn = -sn;
         cn = -cn;
@@ -149,7 +171,7 @@ void FreeRotation::elliptic_at(double u, double &sn, double &cn, double &dn, dou
 double FreeRotation::body_period() const {
     switch (kind_) {
     case Kind::asymmetric:
-        return 4.0 * K_ / std::abs(wp_);
+        return separatrix_ ? std::numeric_limits<double>::infinity() : 4.0 * K_ / std::abs(wp_);
     case Kind::symmetric:
         return spin_ == 0.0 ? 0.0 : 2.0 * M_PI / std::abs(spin_);
     default:

@@ -6,9 +6,14 @@
 //  - asymmetric top: the exact solution (Landau & Lifshitz, Mechanics, section 37; in the form of
 //    van Zon & Schofield, J. Comput. Phys. 225 (2007) 145): the body angular velocity from the
 //    Jacobi elliptic functions sn, cn, dn, and the orientation as a rotation about L whose angle
-//    holds an incomplete elliptic integral of the third kind (Boost.Math).
+//    holds an incomplete elliptic integral of the third kind (elliptic_functions.hpp, driven by
+//    k' = sqrt(1 - k^2) so that a spin next to the intermediate axis keeps its true k); on the
+//    separatrix itself (k = 1) their limits tanh and sech.
+// The quaternion's sign is not continuous in t (q and -q are the same orientation).
 // Moments are equal when they differ by no more than 1e-12 of the largest.
 #pragma once
+
+#include "elliptic_functions.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
@@ -35,7 +40,7 @@ class FreeRotation {
     enum class Kind { constant, symmetric, asymmetric };
     Kind kind() const { return kind_; }
     // The angular velocity's period in the body (asymmetric: 4K(k)/|omega_p|; symmetric:
-    // 2 pi / |omega_body|); 0 when it is constant in the body.
+    // 2 pi / |omega_body|); 0 when it is constant in the body, infinite on the separatrix.
     double body_period() const;
 
   private:
@@ -52,7 +57,9 @@ class FreeRotation {
     // angular velocity circles axis c: w = (A cn u, B sn u, sign C dn u), u = wp (t - t0) + u0.
     glm::dmat3 to_principal_{1.0}; // abc coordinates -> principal coordinates (P)
     double Ia_ = 1.0, Ib_ = 1.0, Ic_ = 1.0;
-    double A_ = 0.0, B_ = 0.0, C_ = 0.0, wp_ = 0.0, k_ = 0.0, n_ = 0.0, u0_ = 0.0;
+    double A_ = 0.0, B_ = 0.0, C_ = 0.0, wp_ = 0.0, n_ = 0.0, u0_ = 0.0;
+    bool separatrix_ = false; // k = 1 exactly: sn = tanh, cn = dn = sech
+    EllipticModulus modulus_{1.0};
     double K_ = 0.0, Pi_ = 0.0, P0_ = 0.0, Lnorm_ = 0.0;
     glm::dmat3 Q_{1.0}; // world <- intermediate frame, constant
     void elliptic_at(double u, double &sn, double &cn, double &dn, double &P) const;

@@ -99,8 +99,9 @@ void check_against_rk4(const glm::dvec3 &I, const glm::dquat &q0, const glm::dve
 // to 1e-12 relative.
 void check_conservation(const glm::dvec3 &I, const glm::dquat &q0, const glm::dvec3 &w0) {
     const FreeRotation rotation(I, q0, w0, 0.0);
-    const double period =
+    double period =
         rotation.body_period() > 0 ? rotation.body_period() : 2 * M_PI / glm::length(w0);
+    if (!std::isfinite(period)) period = 1.0; // the separatrix: 1,000 s
     double E0;
     glm::dvec3 L0;
     invariants(I, q0, w0, E0, L0);
@@ -327,4 +328,64 @@ TEST_CASE("free rotation: a spin about one principal axis stays steady") {
     const glm::dvec3 tilted = some_orientation * glm::dvec3(0.0, 2.5, 0.0);
     REQUIRE(glm::conjugate(some_orientation) * tilted != glm::dvec3(0.0, 2.5, 0.0));
     check_conservation(I, some_orientation, tilted);
+}
+
+TEST_CASE("free rotation: a spin tilted by 1e-9 from the intermediate axis flips on time") {
+    // As in the flip test above with w1 = 1e-9, w3 = 2e-9: k^2 = 1 - 1e-17 or so is not a
+    // double, but its complement is: 1 - k^2 = (I3 - I1)(I3 (I3 - I2) w3^2 - I1 (I2 - I1) w1^2)
+    // / ((I3 - I2)(L^2 - 2 E I1)) (the w2^2 terms of the two products cancel), and
+    // K = ln(4/k') + k'^2/4 (ln(4/k') - 1) + O(k'^4 ln k') (A&S 17.3.26).
+    // The body frame is the world's, so that w reaches the solver unrounded (turning w by a
+    // rotation would move w1 and w3 by 1e-16, 1e-7 of themselves).
+    const glm::dvec3 I(1.0, 2.0, 3.0), wb(1e-9, 2.0, 2e-9);
+    const glm::dquat q0(1.0, 0.0, 0.0, 0.0);
+    const double L2mE1 = I.y * (I.y - I.x) * wb.y * wb.y + I.z * (I.z - I.x) * wb.z * wb.z;
+    const double kc2 = (I.z - I.x) *
+                       (I.z * (I.z - I.y) * wb.z * wb.z - I.x * (I.y - I.x) * wb.x * wb.x) /
+                       ((I.z - I.y) * L2mE1);
+    const double omega_p = std::sqrt((I.z - I.y) * L2mE1 / (I.x * I.y * I.z));
+    const double lk = std::log(4 / std::sqrt(kc2));
+    const double period = 4 * (lk + kc2 / 4 * (lk - 1)) / omega_p;
+    const FreeRotation rotation(I, q0, q0 * wb, 0.0);
+    INFO("period " << rotation.body_period() << ", closed form " << period);
+    REQUIRE(std::abs(rotation.body_period() - period) <= 1e-13 * period);
+    // The flip itself: w2 = 0 at a quarter period past the start, where sn(u0) ~ 1 (u0 ~ K).
+    glm::dquat q;
+    glm::dvec3 w;
+    double a = 0.0, b = period / 2; // w2 > 0 at a, < 0 at b
+    for (int i = 0; i < 200 && b - a > 1e-15 * period; ++i) {
+        const double m = 0.5 * (a + b);
+        rotation.evaluate(m, q, w);
+        ((glm::conjugate(q) * w).y > 0 ? a : b) = m;
+    }
+    // w2 = B sn u is 0 at u = 2K. The start is u0 = K - v0 with (A&S 16.8)
+    // cn(K - v) = k' sn v / dn v = w1 / A, and for k' -> 0 sn v = tanh v, dn v = sech v up to
+    // O(k'^2 e^{2v}) (A&S 16.15), so k' sinh v0 = w1 / A, and the flip comes at
+    // (2K - u0) / omega_p = (K + asinh(w1 / (A k'))) / omega_p.
+    const double D1 = I.x * (I.z - I.x) * wb.x * wb.x + I.y * (I.z - I.y) * wb.y * wb.y;
+    const double A = std::sqrt(D1 / (I.x * (I.z - I.x)));
+    const double flip = (period / 4 * omega_p + std::asinh(wb.x / (A * std::sqrt(kc2)))) / omega_p;
+    INFO("flip at " << a << ", closed form " << flip);
+    REQUIRE(std::abs(a - flip) <= 1e-12 * flip);
+    check_against_rk4(I, q0, q0 * wb);
+    check_conservation(I, q0, q0 * wb);
+}
+
+TEST_CASE("free rotation: on the separatrix the body tends to the intermediate axis") {
+    // I = (1, 2, 2.25), w = (0.75, 1, 1): I3 (I3 - I2) w3^2 = I1 (I2 - I1) w1^2 = 0.5625
+    // exactly, so L^2 = 2 E I2 and w tends to (0, L / I2, 0) as sech(omega_p t) -> 0.
+    const glm::dvec3 I(1.0, 2.0, 2.25), wb(0.75, 1.0, 1.0);
+    const glm::dquat q0(1.0, 0.0, 0.0, 0.0);
+    const FreeRotation rotation(I, q0, wb, 0.0);
+    REQUIRE(std::isinf(rotation.body_period()));
+    check_against_rk4(I, q0, wb);
+    check_conservation(I, q0, wb);
+    glm::dquat q;
+    glm::dvec3 w;
+    rotation.evaluate(200.0, q, w);
+    const double L = glm::length(I * wb);
+    const glm::dvec3 body = glm::conjugate(q) * w;
+    REQUIRE(std::abs(body.x) <= 1e-12);
+    REQUIRE(std::abs(body.z) <= 1e-12);
+    REQUIRE(std::abs(std::abs(body.y) - L / I.y) <= 1e-12);
 }
