@@ -53,17 +53,17 @@ void EllipticModulus::sn_cn_dn(double u, double &sn, double &cn, double &dn) con
     }
 }
 
-double EllipticModulus::F(double sn, double cn, double dn) const {
+double EllipticModulus::first_kind(double sn, double cn, double dn) const {
     return sn * boost::math::ellint_rf(cn * cn, dn * dn, 1.0);
 }
 
-double EllipticModulus::Pi(double n, double sn, double cn, double dn) const {
+double EllipticModulus::third_kind(double n, double sn, double cn, double dn) const {
     const double s3 = sn * sn * sn;
-    return F(sn, cn, dn) +
+    return first_kind(sn, cn, dn) +
            n / 3.0 * s3 * boost::math::ellint_rj(cn * cn, dn * dn, 1.0, 1.0 - n * sn * sn);
 }
 
-double EllipticModulus::complete_Pi(double n) const {
+double EllipticModulus::complete_third_kind(double n) const {
     return K_ + n / 3.0 * boost::math::ellint_rj(0.0, kc2_, 1.0, 1.0 - n);
 }
 

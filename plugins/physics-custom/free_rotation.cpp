@@ -129,11 +129,11 @@ FreeRotation::FreeRotation(const glm::dvec3 &I, const glm::dquat &q0, const glm:
         u0_ = std::atanh(std::clamp(sn0 / r0, -1.0 + 1e-16, 1.0 - 1e-16));
     } else {
         modulus_ = EllipticModulus(kc2);
-        K_ = modulus_.complete_K();
-        Pi_ = modulus_.complete_Pi(n_);
+        K_ = modulus_.quarter_period();
+        Pi_ = modulus_.complete_third_kind(n_);
         // The amplitude of (sn0, cn0); for cn0 < 0, u0 = 2K - v with sn v = sn0, cn v = -cn0.
         const double sn = sn0 / r0, cn = std::abs(cn0) / r0;
-        const double v = modulus_.F(sn, cn, std::sqrt(cn * cn + kc2 * sn * sn));
+        const double v = modulus_.first_kind(sn, cn, std::sqrt(cn * cn + kc2 * sn * sn));
         u0_ = cn0 >= 0.0 ? v : 2.0 * K_ - v;
     }
     Lnorm_ = glm::length(I * wb);
@@ -161,7 +161,7 @@ void FreeRotation::elliptic_at(double u, double &sn, double &cn, double &dn, dou
     const double m = std::round(u / (2.0 * K_));
     const double r = u - 2.0 * K_ * m;
     modulus_.sn_cn_dn(r, sn, cn, dn);
-    P = 2.0 * m * Pi_ + modulus_.Pi(n_, sn, cn, dn);
+    P = 2.0 * m * Pi_ + modulus_.third_kind(n_, sn, cn, dn);
     if (std::fmod(std::abs(m), 2.0) == 1.0) {
         sn = -sn;
         cn = -cn;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <map>
 #include <utility>
 #include <vector>
@@ -14,7 +15,8 @@ namespace physics_custom {
 namespace {
 
 glm::dvec3 vertex(const ani_mesh_view &mesh, uint32_t i) {
-    return {mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2]};
+    return {mesh.positions[3 * std::size_t(i)], mesh.positions[3 * std::size_t(i) + 1],
+            mesh.positions[3 * std::size_t(i) + 2]};
 }
 
 // The ten volume integrals of 1, x, y, z, x^2, y^2, z^2, xy, yz, zx over the solid, with the
@@ -23,9 +25,9 @@ glm::dvec3 vertex(const ani_mesh_view &mesh, uint32_t i) {
 std::array<double, 10> volume_integrals(const ani_mesh_view &mesh, const glm::dvec3 &origin) {
     std::array<double, 10> sum{};
     for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
-        const glm::dvec3 p0 = vertex(mesh, mesh.triangles[3 * t]) - origin;
-        const glm::dvec3 p1 = vertex(mesh, mesh.triangles[3 * t + 1]) - origin;
-        const glm::dvec3 p2 = vertex(mesh, mesh.triangles[3 * t + 2]) - origin;
+        const glm::dvec3 p0 = vertex(mesh, mesh.triangles[3 * std::size_t(t)]) - origin;
+        const glm::dvec3 p1 = vertex(mesh, mesh.triangles[3 * std::size_t(t) + 1]) - origin;
+        const glm::dvec3 p2 = vertex(mesh, mesh.triangles[3 * std::size_t(t) + 2]) - origin;
         const glm::dvec3 d = glm::cross(p1 - p0, p2 - p0);
         glm::dvec3 f1, f2, f3, g0, g1, g2;
         for (int c = 0; c < 3; ++c) {
@@ -76,7 +78,7 @@ bool is_closed(const ani_mesh_view &mesh, std::string *why) {
     // run along it from the lower index to the higher.
     std::map<std::pair<uint32_t, uint32_t>, std::vector<std::pair<uint32_t, bool>>> edges;
     for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
-        const uint32_t *v = mesh.triangles + 3 * t;
+        const uint32_t *v = mesh.triangles + 3 * std::size_t(t);
         for (int k = 0; k < 3; ++k)
             if (v[k] >= mesh.vertex_count)
                 return fail("triangle " + std::to_string(t) + " names vertex " +
