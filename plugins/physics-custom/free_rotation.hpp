@@ -22,6 +22,10 @@
 
 namespace physics_custom {
 
+// For a model with mass properties p (mass_properties.hpp) and world orientation q_model, the
+// principal frame's orientation is q_model * p.principal_orientation, and the model's world
+// orientation at t is q(t) * conjugate(p.principal_orientation); it turns about its centre of
+// mass.
 class FreeRotation {
   public:
     // `moments` I1 <= I2 <= I3 (> 0, finite); `orientation` the world orientation of the principal

@@ -1,5 +1,7 @@
 // Mass properties of closed meshes (mass_properties.hpp) against closed forms derived by hand
-// in each test, to 1e-12 relative; and the detection of meshes that are not closed.
+// in each test, to 1e-12 relative; the detection of meshes that are not closed; and a box turning
+// freely (free_rotation.hpp) from its principal frame.
+#include "free_rotation.hpp"
 #include "mass_properties.hpp"
 
 #include <catch2/catch.hpp>
@@ -279,4 +281,30 @@ TEST_CASE("mass properties: open meshes and misoriented triangles are found") {
                              cube.triangles.begin() + 6);
     REQUIRE_FALSE(is_closed(doubled.view(), &why));
     REQUIRE(why.find("triangles") != std::string::npos);
+}
+
+TEST_CASE("mass properties: a box's principal frame turns freely with its full tensor's L and E") {
+    // A 1 x 2 x 3 box of 4 kg turned by q_model: its principal frame is q_model * P (P the
+    // principal orientation in the model), and the model at t is q(t) * conj(P). With the
+    // model-frame tensor I_m (not the principal moments) the world tensor is R I_m R^T, and
+    // L = R I_m R^T w and E = w . L / 2 stay what they were at t0 (no torque).
+    const MassProperties p = mass_properties(box(1, 2, 3).view(), 4.0);
+    const glm::dquat q_model = glm::normalize(glm::dquat(0.3, 0.9, -0.1, 0.4));
+    const glm::dvec3 w0(0.7, -2.0, 1.1);
+    const FreeRotation rotation(p.principal_moments, q_model * p.principal_orientation, w0, 0.0);
+    auto momentum = [&](const glm::dquat &q, const glm::dvec3 &w) {
+        const glm::dmat3 R = glm::mat3_cast(q);
+        return R * p.inertia * glm::transpose(R) * w;
+    };
+    const glm::dvec3 L0 = momentum(q_model, w0);
+    const double E0 = 0.5 * glm::dot(w0, L0);
+    for (double t : {0.5, 3.0, 40.0, 900.0}) {
+        glm::dquat q;
+        glm::dvec3 w;
+        rotation.evaluate(t, q, w);
+        const glm::dvec3 L = momentum(q * glm::conjugate(p.principal_orientation), w);
+        INFO("t " << t);
+        require_close(glm::length(L - L0), 0.0, glm::length(L0));
+        require_close(0.5 * glm::dot(w, L), E0, E0);
+    }
 }
