@@ -17,6 +17,9 @@ endif()
 
 # Physics: Bullet in double precision, to match the custom solver's doubles.
 pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
+# Boost.Math (headers only): the Jacobi elliptic functions and elliptic integrals of the exact
+# torque-free rotation (plugins/physics-custom/free_rotation.cpp).
+find_package(Boost 1.71 REQUIRED)
 # Windowing and OpenGL.
 find_package(glfw3 3.3 REQUIRED)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL) # EGL: off-screen rendering without a display
