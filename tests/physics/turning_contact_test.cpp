@@ -1,0 +1,317 @@
+// Time of impact for turning meshes (turning_contact.hpp) against independent truths: closed
+// forms for a falling cube and two crossing edges, a brute-force root search coded here (dense
+// sampling of the lowest vertex plus bisection, rotating by Rodrigues' formula rather than by
+// quaternions) for turning cubes and a fast plank, and the sphere's closed form bracketed by the
+// tessellation's inner and outer radii.
+#include "mesh_distance.hpp"
+#include "test_meshes.hpp"
+#include "turning_contact.hpp"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <functional>
+#include <vector>
+
+using namespace physics_custom;
+
+namespace {
+
+constexpr double kG = 9.81;
+
+// Never past the truth, up to the rounding of the truth itself (a few units in the last place
+// of t: the brute force evaluates the same heights in a different order).
+bool not_past(double t, double truth) { return t <= truth + 8.0 * 2.2e-16 * truth; }
+
+// A box with half-extents e about its centre (8 vertices, 12 triangles outward).
+struct TestMesh {
+    std::vector<glm::dvec3> vertices;
+    std::vector<uint32_t> triangles;
+    std::vector<std::array<uint32_t, 2>> edges;
+    TurningMesh mesh() const {
+        return {vertices.data(), vertices.size(), triangles.data(), triangles.size() / 3,
+                edges.data(),    edges.size()};
+    }
+};
+
+TestMesh box(const glm::dvec3 &e) {
+    TestMesh out;
+    for (int k = 0; k < 8; ++k)
+        out.vertices.push_back(e * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1));
+    out.triangles = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
+                     2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
+    out.edges = edges_of(out.triangles.data(), 12);
+    return out;
+}
+
+// A square of two triangles in the plane x[axis] = at, spanning [-half, half] in the others:
+// a world-space soup (a ground or a thin wall).
+TestMesh square(int axis, double at, double half) {
+    TestMesh out;
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    for (int k = 0; k < 4; ++k) {
+        glm::dvec3 p(0.0);
+        p[axis] = at;
+        p[u] = (k & 1 ? 1 : -1) * half;
+        p[v] = (k & 2 ? 1 : -1) * half;
+        out.vertices.push_back(p);
+    }
+    out.triangles = {0, 1, 3, 0, 3, 2};
+    out.edges = edges_of(out.triangles.data(), 2);
+    return out;
+}
+
+// Rodrigues' rotation of p by angle about the unit axis k.
+glm::dvec3 rodrigues(const glm::dvec3 &p, const glm::dvec3 &k, double angle) {
+    return p * std::cos(angle) + glm::cross(k, p) * std::sin(angle) +
+           k * glm::dot(k, p) * (1.0 - std::cos(angle));
+}
+
+// The first root of H(t) = min_i height_i(t) in [0, t_end] by sampling every `dt` and bisecting
+// the first sign change to rounding; -1 when none.
+double brute_first_root(const std::function<double(double)> &H, double t_end, double dt) {
+    double prev = 0.0;
+    if (!(H(prev) > 0.0)) return 0.0;
+    for (double t = dt; t <= t_end; t += dt) {
+        if (H(t) <= 0.0) {
+            double lo = prev, hi = t;
+            for (int k = 0; k < 200 && std::nextafter(lo, 1e300) < hi; ++k) {
+                const double mid = 0.5 * (lo + hi);
+                (H(mid) > 0.0 ? lo : hi) = mid;
+            }
+            return lo;
+        }
+        prev = t;
+    }
+    return -1.0;
+}
+
+// The lowest height above the plane n . x = d of vertices turned about axis k (unit) at rate
+// omega from angle0 and carried by c(t) = c0 + v t + a t^2 / 2.
+std::function<double(double)> lowest_height(const std::vector<glm::dvec3> &vertices,
+                                            glm::dvec3 k, double angle0, double omega,
+                                            glm::dvec3 c0, glm::dvec3 v, glm::dvec3 a,
+                                            glm::dvec3 n, double d) {
+    return [=](double t) {
+        double lowest = 1e300;
+        const glm::dvec3 c = c0 + v * t + a * (0.5 * t * t);
+        for (const glm::dvec3 &p : vertices)
+            lowest = std::min(lowest, glm::dot(n, c + rodrigues(p, k, angle0 + omega * t)) - d);
+        return lowest;
+    };
+}
+
+} // namespace
+
+TEST_CASE("turning contact: a cube dropped on its corner lands at the closed-form time",
+          "[physics][turning]") {
+    // Body diagonal (1,1,1)/sqrt3 turned onto -y: the lowest corner is sqrt(3)/2 below the
+    // centre, which falls from rest at h = 3 under g, so it lands at sqrt(2 (h - sqrt3/2) / g).
+    const TestMesh cube = box(glm::dvec3(0.5));
+    const glm::dvec3 from = glm::normalize(glm::dvec3(1.0)), to(0.0, -1.0, 0.0);
+    TurningPath path;
+    path.q0 = glm::angleAxis(std::acos(glm::dot(from, to)), glm::normalize(glm::cross(from, to)));
+    path.c0 = {0.0, 3.0, 0.0};
+    path.a = {0.0, -kG, 0.0};
+    const double truth = std::sqrt(2.0 * (3.0 - std::sqrt(3.0) / 2.0) / kG);
+    const StaticPlane ground{{0.0, 1.0, 0.0}, 0.0};
+
+    const TurningContact hit = turning_plane_contact(cube.mesh(), path, ground, 0.0, 5.0);
+    REQUIRE(hit.kind == TurningContact::kVertexFace);
+    CHECK(not_past(hit.t, truth)); // never past the truth
+    CHECK(truth - hit.t <= 1e-12);
+    CHECK(hit.points.size() == 1);
+    CHECK(std::abs(hit.point.y) < 1e-11);
+    CHECK(glm::length(glm::dvec3(hit.point.x, 0.0, hit.point.z)) < 1e-12);
+    CHECK(hit.normal == glm::dvec3(0.0, 1.0, 0.0));
+    CHECK(hit.steps < 200);
+
+    const double root = turning_plane_root(cube.mesh(), path, ground, hit.t, 5.0);
+    CHECK(std::abs(root - truth) <= 1e-14);
+
+    // The same ground as a two-triangle soup.
+    const TestMesh soup = square(1, 0.0, 10.0);
+    const TurningContact on_soup =
+        turning_mesh_contact(cube.mesh(), path, soup.mesh(), TurningPath{}, 0.0, 5.0);
+    REQUIRE(on_soup.kind == TurningContact::kVertexFace);
+    CHECK(not_past(on_soup.t, truth));
+    CHECK(truth - on_soup.t <= 1e-12);
+    CHECK(glm::length(on_soup.normal - glm::dvec3(0.0, 1.0, 0.0)) < 1e-12);
+    CHECK(on_soup.steps < 200);
+}
+
+TEST_CASE("turning contact: a cube turning towards a wall meets it at the brute-force time",
+          "[physics][turning]") {
+    // No gravity, moving +x at 2 m/s towards the wall x = 5 (normal -x), turning at 3 rad/s about
+    // a horizontal axis. The truth turns the vertices by Rodrigues' formula and samples.
+    const TestMesh cube = box(glm::dvec3(0.5));
+    const StaticPlane wall{{-1.0, 0.0, 0.0}, -5.0};
+    struct Case {
+        glm::dvec3 axis;
+        double angle0;
+    };
+    for (const Case &c : {Case{{0.0, 0.0, 1.0}, 0.3}, Case{{0.6, 0.0, 0.8}, 0.0},
+                          Case{{0.0, 0.0, 1.0}, 1.1}}) {
+        TurningPath path;
+        path.c0 = {0.0, 1.0, 0.0};
+        path.v = {2.0, 0.0, 0.0};
+        path.q0 = glm::angleAxis(c.angle0, c.axis);
+        path.w = 3.0 * c.axis;
+        const double truth = brute_first_root(
+            lowest_height(cube.vertices, c.axis, c.angle0, 3.0, path.c0, path.v, glm::dvec3(0.0),
+                          wall.n, wall.d),
+            5.0, 1e-4);
+        REQUIRE(truth > 0.0);
+
+        const TurningContact hit = turning_plane_contact(cube.mesh(), path, wall, 0.0, 5.0);
+        REQUIRE(hit.kind == TurningContact::kVertexFace);
+        CHECK(not_past(hit.t, truth));
+        CHECK(truth - hit.t <= 1e-12);
+        CHECK(hit.steps < 200);
+        CHECK(std::abs(hit.point.x - 5.0) < 1e-11);
+
+        const double root = turning_plane_root(cube.mesh(), path, wall, hit.t, 5.0);
+        CHECK(std::abs(root - truth) <= 1e-14);
+
+        const TestMesh soup = square(0, 5.0, 10.0);
+        const TurningContact on_soup =
+            turning_mesh_contact(cube.mesh(), path, soup.mesh(), TurningPath{}, 0.0, 5.0);
+        REQUIRE(on_soup.found());
+        INFO("axis " << c.axis.x << " " << c.axis.z << " angle0 " << c.angle0 << " t-truth "
+                     << on_soup.t - truth << " normal " << on_soup.normal.x << " "
+                     << on_soup.normal.y << " " << on_soup.normal.z << " gap " << on_soup.gap
+                     << " steps " << on_soup.steps);
+        CHECK(not_past(on_soup.t, truth));
+        CHECK(truth - on_soup.t <= 1e-12);
+        CHECK(glm::length(on_soup.normal - wall.n) < 1e-9);
+        CHECK(on_soup.steps < 200);
+    }
+}
+
+TEST_CASE("turning contact: a thin fast-turning plank never passes a thin wall",
+          "[physics][turning]") {
+    // A 2 m x 2 cm x 0.5 m plank spinning at 40 rad/s about z, flying at 30 m/s at a wall of
+    // zero thickness (two triangles, x = 3): a check at fixed steps of 1/60 s (0.5 m of flight
+    // and 38 degrees of turn) could step over it; advancement must stop before the truth.
+    const TestMesh plank = box({1.0, 0.01, 0.25});
+    const TestMesh wall = square(0, 3.0, 10.0);
+    const StaticPlane plane{{-1.0, 0.0, 0.0}, -3.0};
+    for (double angle0 : {0.0, 0.7, 2.0}) {
+        TurningPath path;
+        path.v = {30.0, 0.0, 0.0};
+        path.q0 = glm::angleAxis(angle0, glm::dvec3(0.0, 0.0, 1.0));
+        path.w = {0.0, 0.0, 40.0};
+        const double truth = brute_first_root(
+            lowest_height(plank.vertices, {0.0, 0.0, 1.0}, angle0, 40.0, path.c0, path.v,
+                          glm::dvec3(0.0), plane.n, plane.d),
+            1.0, 1e-6);
+        REQUIRE(truth > 0.0);
+        const TurningContact hit =
+            turning_mesh_contact(plank.mesh(), path, wall.mesh(), TurningPath{}, 0.0, 1.0);
+        REQUIRE(hit.found());
+        CHECK(not_past(hit.t, truth));
+        CHECK(truth - hit.t <= 1e-12);
+        CHECK(glm::length(hit.normal - plane.n) < 1e-9);
+        CHECK(hit.steps < 200);
+
+        const TurningContact on_plane = turning_plane_contact(plank.mesh(), path, plane, 0.0, 1.0);
+        REQUIRE(on_plane.found());
+        CHECK(not_past(on_plane.t, truth));
+        CHECK(truth - on_plane.t <= 1e-12);
+        CHECK(on_plane.steps < 200);
+    }
+}
+
+TEST_CASE("turning contact: a tessellated sphere lands between its outer and inner spheres' "
+          "closed-form times",
+          "[physics][turning]") {
+    // Every vertex lies on the sphere of radius r and every face at least r_in from the centre,
+    // so the mesh lies between those spheres and lands between their closed-form times
+    // sqrt(2 (h - r) / g) and sqrt(2 (h - r_in) / g), whatever its turn.
+    auto [unit, tris] = test_meshes::subdivided_icosahedron(2);
+    tris = test_meshes::facing_out(unit, tris);
+    const double r = 0.5;
+    std::vector<glm::dvec3> vertices;
+    for (const glm::dvec3 &p : unit) vertices.push_back(r * p);
+    std::vector<uint32_t> flat;
+    double r_in = r;
+    for (const auto &t : tris) {
+        for (uint32_t i : t) flat.push_back(i);
+        const glm::dvec3 n = glm::normalize(
+            glm::cross(vertices[t[1]] - vertices[t[0]], vertices[t[2]] - vertices[t[0]]));
+        r_in = std::min(r_in, glm::dot(n, vertices[t[0]]));
+    }
+    const auto edges = edges_of(flat.data(), tris.size());
+    const TurningMesh mesh{vertices.data(), vertices.size(), flat.data(), tris.size(),
+                           edges.data(),    edges.size()};
+    TurningPath path;
+    path.c0 = {0.0, 2.0, 0.0};
+    path.v = {1.0, 0.0, 0.0};
+    path.a = {0.0, -kG, 0.0};
+    path.w = {2.0, 1.0, 0.5};
+    const double outer = std::sqrt(2.0 * (2.0 - r) / kG), inner = std::sqrt(2.0 * (2.0 - r_in) / kG);
+    REQUIRE(inner - outer < 1e-2); // the tessellation error the bracket allows
+
+    const TurningContact hit = turning_plane_contact(mesh, path, {{0.0, 1.0, 0.0}, 0.0}, 0.0, 5.0);
+    REQUIRE(hit.found());
+    CHECK(hit.t >= outer - 1e-15);
+    CHECK(hit.t <= inner);
+    CHECK(hit.steps < 200);
+    const double root = turning_plane_root(mesh, path, {{0.0, 1.0, 0.0}, 0.0}, hit.t, 5.0);
+    CHECK(root >= hit.t);
+    CHECK(root - hit.t <= 1e-12);
+
+    const TestMesh ground = square(1, 0.0, 10.0);
+    const TurningContact on_soup =
+        turning_mesh_contact(mesh, path, ground.mesh(), TurningPath{}, 0.0, 5.0);
+    REQUIRE(on_soup.found());
+    CHECK(not_past(on_soup.t, root));
+    CHECK(root - on_soup.t <= 1e-12);
+    CHECK(on_soup.steps < 200);
+}
+
+TEST_CASE("turning contact: two crossed edges meet at the closed-form time, edge to edge",
+          "[physics][turning]") {
+    // Cube a turned 45 degrees about x hangs an edge along x, sqrt(2)/2 below its centre; cube b
+    // turned 45 degrees about z raises an edge along z, sqrt(2)/2 above its centre. a falls from
+    // rest (centres 3 apart, vertically) while spinning about the vertical at 1 rad/s, which
+    // keeps its lowest edge level and under its centre, so the edges cross and meet at
+    // sqrt(2 (3 - sqrt2) / g), the normal +y (from b towards a).
+    const TestMesh cube = box(glm::dvec3(0.5));
+    const double pi = std::acos(-1.0);
+    TurningPath a, b;
+    a.c0 = {0.0, 3.0, 0.0};
+    a.a = {0.0, -kG, 0.0};
+    a.q0 = glm::angleAxis(pi / 4.0, glm::dvec3(1.0, 0.0, 0.0));
+    a.w = {0.0, 1.0, 0.0};
+    b.q0 = glm::angleAxis(pi / 4.0, glm::dvec3(0.0, 0.0, 1.0));
+    const double truth = std::sqrt(2.0 * (3.0 - std::sqrt(2.0)) / kG);
+    const TurningContact hit = turning_mesh_contact(cube.mesh(), a, cube.mesh(), b, 0.0, 5.0);
+    REQUIRE(hit.kind == TurningContact::kEdgeEdge);
+    CHECK(not_past(hit.t, truth));
+    CHECK(truth - hit.t <= 1e-12);
+    CHECK(glm::length(hit.normal - glm::dvec3(0.0, 1.0, 0.0)) < 1e-9);
+    CHECK(glm::length(hit.point - glm::dvec3(0.0, std::sqrt(0.5), 0.0)) < 1e-9);
+    CHECK(hit.steps < 200);
+}
+
+TEST_CASE("turning contact: no contact within the window, and a miss", "[physics][turning]") {
+    const TestMesh cube = box(glm::dvec3(0.5));
+    TurningPath path;
+    path.c0 = {0.0, 3.0, 0.0};
+    path.a = {0.0, -kG, 0.0};
+    path.w = {0.0, 0.0, 5.0};
+    const StaticPlane ground{{0.0, 1.0, 0.0}, 0.0};
+    // The centre reaches 0.5 + sqrt(3)/2 (the highest the lowest corner can be) only at
+    // sqrt(2 (3 - 0.5 - sqrt3/2) / g) ~ 0.577 s: nothing before 0.5 s.
+    const TurningContact early = turning_plane_contact(cube.mesh(), path, ground, 0.0, 0.5);
+    CHECK(early.kind == TurningContact::kNone);
+    CHECK(turning_plane_root(cube.mesh(), path, ground, 0.0, 0.5) > 0.5);
+    // Moving up and away from a wall beside it: never.
+    path.a = glm::dvec3(0.0);
+    path.v = {-1.0, 0.0, 0.0};
+    const TurningContact away =
+        turning_plane_contact(cube.mesh(), path, {{-1.0, 0.0, 0.0}, -5.0}, 0.0, 100.0);
+    CHECK(away.kind == TurningContact::kNone);
+}
