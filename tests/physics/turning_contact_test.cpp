@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <functional>
+#include <random>
 #include <vector>
 
 using namespace physics_custom;
@@ -187,6 +188,49 @@ TEST_CASE("turning contact: a cube turning towards a wall meets it at the brute-
         CHECK(glm::length(on_soup.normal - wall.n) < 1e-9);
         CHECK(on_soup.steps < 200);
     }
+}
+
+TEST_CASE("turning contact: random turning cubes against a wall agree with brute force",
+          "[physics][turning]") {
+    // 40 cubes with random axes (any direction), rates up to 20 rad/s and speeds 0.5-5 m/s
+    // towards the wall x = 5, with random accelerations (never away from the wall).
+    const TestMesh cube = box(glm::dvec3(0.5));
+    const TestMesh soup = square(0, 5.0, 20.0);
+    const StaticPlane wall{{-1.0, 0.0, 0.0}, -5.0};
+    std::mt19937 random(18);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    int most_steps = 0;
+    for (int k = 0; k < 40; ++k) {
+        glm::dvec3 axis;
+        do axis = {unit(random), unit(random), unit(random)};
+        while (glm::length(axis) > 1.0 || glm::length(axis) < 0.1);
+        axis = glm::normalize(axis);
+        const double omega = 10.0 * (unit(random) + 1.0), angle0 = 3.0 * unit(random);
+        TurningPath path;
+        path.c0 = {0.0, unit(random), unit(random)};
+        path.v = {2.75 + 2.25 * unit(random), unit(random), unit(random)};
+        path.a = {0.5 * (unit(random) + 1.0), unit(random), 0.0};
+        path.q0 = glm::angleAxis(angle0, axis);
+        path.w = omega * axis;
+        const double truth = brute_first_root(lowest_height(cube.vertices, axis, angle0, omega,
+                                                            path.c0, path.v, path.a, wall.n,
+                                                            wall.d),
+                                              10.0, 1e-4);
+        REQUIRE(truth > 0.0);
+        const TurningContact hit = turning_plane_contact(cube.mesh(), path, wall, 0.0, 10.0);
+        const TurningContact on_soup =
+            turning_mesh_contact(cube.mesh(), path, soup.mesh(), TurningPath{}, 0.0, 10.0);
+        INFO("case " << k << " truth " << truth);
+        REQUIRE(hit.found());
+        REQUIRE(on_soup.found());
+        CHECK(not_past(hit.t, truth));
+        CHECK(truth - hit.t <= 1e-12);
+        CHECK(not_past(on_soup.t, truth));
+        CHECK(truth - on_soup.t <= 1e-12);
+        CHECK(std::abs(turning_plane_root(cube.mesh(), path, wall, hit.t, 10.0) - truth) <= 1e-14);
+        most_steps = std::max({most_steps, hit.steps, on_soup.steps});
+    }
+    CHECK(most_steps < 200);
 }
 
 TEST_CASE("turning contact: a thin fast-turning plank never passes a thin wall",
