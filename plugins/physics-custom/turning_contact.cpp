@@ -252,7 +252,31 @@ Nearest nearest_features(const TurningMesh &ma, const std::vector<glm::dvec3> &v
     return best;
 }
 
+bool finite(const glm::dvec3 &v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+bool mesh_is_finite(const TurningMesh &mesh) {
+    for (std::size_t i = 0; i < mesh.vertex_count; ++i)
+        if (!finite(mesh.vertices[i])) return false;
+    return true;
+}
+
+bool window_is_finite(double t0, double t1) {
+    return std::isfinite(t0) && std::isfinite(t1);
+}
+
+bool plane_is_finite(const StaticPlane &plane) {
+    return finite(plane.n) && std::isfinite(plane.d) && glm::length(plane.n) > 0.0;
+}
+
 } // namespace
+
+bool turning_path_is_finite(const TurningPath &path) {
+    return finite(path.c0) && finite(path.v) && finite(path.a) && finite(path.w) &&
+           std::isfinite(path.q0.w) && std::isfinite(path.q0.x) && std::isfinite(path.q0.y) &&
+           std::isfinite(path.q0.z);
+}
 
 glm::dquat TurningPath::orientation(double t) const {
     const double rate = glm::length(w);
@@ -269,6 +293,11 @@ TurningContact turning_plane_contact(const TurningMesh &mesh, const TurningPath 
                                      const TurningContactSettings &settings,
                                      double contact_slack) {
     TurningContact out;
+    if (!window_is_finite(t0, t1) || !turning_path_is_finite(path) || !mesh_is_finite(mesh) ||
+        !plane_is_finite(plane)) {
+        out.kind = TurningContact::kInvalid;
+        return out;
+    }
     const double rho = glm::length(glm::cross(plane.n, path.w)) * radius_of(mesh);
     double t = t0;
     std::size_t lowest = 0;
@@ -312,6 +341,11 @@ TurningContact turning_mesh_contact(const TurningMesh &a, const TurningPath &pat
                                     double t1, const TurningContactSettings &settings,
                                     double contact_slack) {
     TurningContact out;
+    if (!window_is_finite(t0, t1) || !turning_path_is_finite(path_a) ||
+        !turning_path_is_finite(path_b) || !mesh_is_finite(a) || !mesh_is_finite(b)) {
+        out.kind = TurningContact::kInvalid;
+        return out;
+    }
     Moving ma, mb;
     glm::dvec3 pair_normal(0.0);
     double t = t0;
@@ -362,6 +396,9 @@ TurningContact turning_mesh_contact(const TurningMesh &a, const TurningPath &pat
 
 double turning_plane_root(const TurningMesh &mesh, const TurningPath &path,
                           const StaticPlane &plane, double t_lo, double t1, std::size_t *vertex) {
+    if (!window_is_finite(t_lo, t1) || !turning_path_is_finite(path) || !mesh_is_finite(mesh) ||
+        !plane_is_finite(plane))
+        return std::numeric_limits<double>::quiet_NaN();
     const double rho = glm::length(glm::cross(plane.n, path.w)) * radius_of(mesh);
     auto height = [&](std::size_t i, double t, double *rate) {
         const glm::dvec3 r = path.orientation(t) * mesh.vertices[i];

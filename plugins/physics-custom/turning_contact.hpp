@@ -63,7 +63,9 @@ struct TurningContact {
         kNone,       // no contact within [t0, t1]
         kVertexFace, // a vertex of one on a face of the other (or on the plane)
         kEdgeEdge,   // two edges cross
-        kUndecided   // max_steps reached before the gap closed: t is a lower bound still
+        kUndecided,  // max_steps reached before the gap closed: t is a lower bound still
+        kInvalid     // an input is not finite (the window, a path, a vertex, the plane): the
+                     // caller refuses it, naming the model
     } kind = kNone;
     double t = 0.0;
     glm::dvec3 point{0.0};  // where they touch (the middle of the nearest points)
@@ -91,11 +93,14 @@ TurningContact turning_mesh_contact(const TurningMesh &a, const TurningPath &pat
                                     double t1, const TurningContactSettings &settings = {},
                                     double contact_slack = 1e-9);
 
+// Whether every number of the path is finite.
+bool turning_path_is_finite(const TurningPath &path);
+
 // The first root of h(t) = min over the mesh's vertices of n . x_i(t) - d in [t_lo, t1], where
 // t_lo is a lower bound such as turning_plane_contact's time: bracketed from t_lo, then
 // safeguarded Newton / bisection on the vertex that goes lowest, to rounding (the bracket is
 // below 1e-13 s, or no representable time lies between its ends). Returns t1 + 1 if the mesh
-// does not reach the plane by t1; `vertex` receives the index of the vertex that touches.
+// does not reach the plane by t1, NaN if an input is not finite; `vertex` receives the index of the vertex that touches.
 double turning_plane_root(const TurningMesh &mesh, const TurningPath &path,
                           const StaticPlane &plane, double t_lo, double t1,
                           std::size_t *vertex = nullptr);

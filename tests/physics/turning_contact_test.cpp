@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -358,4 +359,21 @@ TEST_CASE("turning contact: no contact within the window, and a miss", "[physics
     const TurningContact away =
         turning_plane_contact(cube.mesh(), path, {{-1.0, 0.0, 0.0}, -5.0}, 0.0, 100.0);
     CHECK(away.kind == TurningContact::kNone);
+}
+
+TEST_CASE("turning contact: inputs that are not finite are refused", "[physics][turning]") {
+    const TestMesh cube = box(glm::dvec3(0.5));
+    const StaticPlane ground{{0.0, 1.0, 0.0}, 0.0};
+    TurningPath path;
+    path.c0 = {0.0, 3.0, 0.0};
+    path.w = {0.0, std::nan(""), 0.0};
+    CHECK(turning_plane_contact(cube.mesh(), path, ground, 0.0, 1.0).kind ==
+          TurningContact::kInvalid);
+    CHECK(std::isnan(turning_plane_root(cube.mesh(), path, ground, 0.0, 1.0)));
+    path.w = glm::dvec3(0.0);
+    CHECK(turning_mesh_contact(cube.mesh(), path, cube.mesh(), TurningPath{}, 0.0,
+                               std::numeric_limits<double>::infinity())
+              .kind == TurningContact::kInvalid);
+    CHECK(turning_plane_contact(cube.mesh(), path, ground, 0.0, 1.0).kind ==
+          TurningContact::kNone); // falls no further than it is now: no gravity, at rest
 }
