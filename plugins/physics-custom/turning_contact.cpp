@@ -76,10 +76,11 @@ void place_moving(const TurningMesh &mesh, const TurningPath &path, double t, Mo
     out.r.resize(mesh.vertex_count);
     const glm::dvec3 c = path.center(t), cv = path.velocity(t);
     const glm::dquat q = path.orientation(t);
+    const glm::dvec3 spin = path.angular_velocity(t);
     for (std::size_t i = 0; i < mesh.vertex_count; ++i) {
         const glm::dvec3 r = q * mesh.vertices[i];
         out.x[i] = c + r;
-        out.v[i] = cv + glm::cross(path.w, r);
+        out.v[i] = cv + glm::cross(spin, r);
         out.r[i] = glm::length(mesh.vertices[i]);
     }
 }
@@ -97,7 +98,7 @@ double plane_taylor_step(const TurningMesh &mesh, const TurningPath &path,
                          const StaticPlane &plane, double t) {
     Moving m;
     place_moving(mesh, path, t, m);
-    const double turn = glm::length(glm::cross(plane.n, path.w)) * glm::length(path.w);
+    const double turn = path.turn_curving(plane.n);
     const double na = glm::dot(plane.n, path.a);
     double step = kInf;
     for (std::size_t i = 0; i < mesh.vertex_count; ++i)
@@ -169,9 +170,8 @@ double pair_step(const Moving &A, const uint32_t *ta, const TurningPath &pa_path
     }
     if (normal) *normal = n;
     if (!(d > 0.0) || !(slab > 0.0)) return 0.0;
-    const double turn_a = glm::length(glm::cross(n, pa_path.w)),
-                 turn_b = glm::length(glm::cross(n, pb_path.w));
-    const double spin_a = turn_a * glm::length(pa_path.w), spin_b = turn_b * glm::length(pb_path.w);
+    const double turn_a = pa_path.turn_across(n), turn_b = pb_path.turn_across(n);
+    const double spin_a = pa_path.turn_curving(n), spin_b = pb_path.turn_curving(n);
     const double na = glm::dot(n, pa_path.a - pb_path.a);
     double ra = 0.0, rb = 0.0, second = kInf;
     for (int i = 0; i < 3; ++i) {
@@ -273,15 +273,27 @@ bool plane_is_finite(const StaticPlane &plane) {
 } // namespace
 
 bool turning_path_is_finite(const TurningPath &path) {
+    if (path.turn && !(path.turn_rate && std::isfinite(path.w_bound) && path.w_bound >= 0.0 &&
+                       std::isfinite(path.w_rate_bound) && path.w_rate_bound >= 0.0))
+        return false;
     return finite(path.c0) && finite(path.v) && finite(path.a) && finite(path.w) &&
            std::isfinite(path.q0.w) && std::isfinite(path.q0.x) && std::isfinite(path.q0.y) &&
            std::isfinite(path.q0.z);
 }
 
 glm::dquat TurningPath::orientation(double t) const {
+    if (turn) return turn(t);
     const double rate = glm::length(w);
     if (!(rate > 0.0)) return q0;
     return glm::angleAxis(rate * t, w / rate) * q0;
+}
+
+double TurningPath::turn_across(const glm::dvec3 &n) const {
+    return turn ? w_bound : glm::length(glm::cross(n, w));
+}
+
+double TurningPath::turn_curving(const glm::dvec3 &n) const {
+    return turn ? w_bound * w_bound + w_rate_bound : glm::length(glm::cross(n, w)) * glm::length(w);
 }
 
 glm::dvec3 TurningPath::place(const glm::dvec3 &p, double t) const {
@@ -298,7 +310,7 @@ TurningContact turning_plane_contact(const TurningMesh &mesh, const TurningPath 
         out.kind = TurningContact::kInvalid;
         return out;
     }
-    const double rho = glm::length(glm::cross(plane.n, path.w)) * radius_of(mesh);
+    const double rho = path.turn_across(plane.n) * radius_of(mesh);
     double t = t0;
     std::size_t lowest = 0;
     double g = plane_gap(mesh, path, plane, t, lowest);
@@ -399,10 +411,11 @@ double turning_plane_root(const TurningMesh &mesh, const TurningPath &path,
     if (!window_is_finite(t_lo, t1) || !turning_path_is_finite(path) || !mesh_is_finite(mesh) ||
         !plane_is_finite(plane))
         return std::numeric_limits<double>::quiet_NaN();
-    const double rho = glm::length(glm::cross(plane.n, path.w)) * radius_of(mesh);
+    const double rho = path.turn_across(plane.n) * radius_of(mesh);
     auto height = [&](std::size_t i, double t, double *rate) {
         const glm::dvec3 r = path.orientation(t) * mesh.vertices[i];
-        if (rate) *rate = glm::dot(plane.n, path.velocity(t) + glm::cross(path.w, r));
+        if (rate)
+            *rate = glm::dot(plane.n, path.velocity(t) + glm::cross(path.angular_velocity(t), r));
         return glm::dot(plane.n, path.center(t) + r) - plane.d;
     };
     // Bracket: advance the lower end only by safe (conservative) steps; try the Newton step of

@@ -15,6 +15,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace physics_custom {
@@ -38,9 +39,22 @@ struct TurningPath {
     glm::dquat q0{1.0, 0.0, 0.0, 0.0};
     glm::dvec3 w{0.0};
 
+    // A turn whose angular velocity changes (a top that is not spherical, a spin-up): when
+    // `turn` is set, the orientation is turn(t) and the angular velocity turn_rate(t) (q0 and w
+    // are not used), and the steps rely only on the bounds |w(t)| <= w_bound and
+    // |w'(t)| <= w_rate_bound, which the caller guarantees over the window.
+    std::function<glm::dquat(double)> turn;
+    std::function<glm::dvec3(double)> turn_rate;
+    double w_bound = 0.0, w_rate_bound = 0.0;
+
     glm::dvec3 center(double t) const { return c0 + v * t + a * (0.5 * t * t); }
     glm::dvec3 velocity(double t) const { return v + a * t; }
     glm::dquat orientation(double t) const;
+    glm::dvec3 angular_velocity(double t) const { return turn ? turn_rate(t) : w; }
+    // Bounds over the window, seen along a unit direction n: of |n . (w x r)| / |r| (= |n x w|
+    // at constant w), and of |n . (w' x r + w x (w x r))| / |r| (= |n x w| |w|).
+    double turn_across(const glm::dvec3 &n) const;
+    double turn_curving(const glm::dvec3 &n) const;
     glm::dvec3 place(const glm::dvec3 &p, double t) const; // c(t) + R(t) p
 };
 

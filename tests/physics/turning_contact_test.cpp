@@ -234,6 +234,49 @@ TEST_CASE("turning contact: random turning cubes against a wall agree with brute
     CHECK(most_steps < 200);
 }
 
+TEST_CASE("turning contact: a cube spinning up towards a wall, known only by bounds on w",
+          "[physics][turning]") {
+    // The turn angle about a fixed axis k is theta(t) = 0.4 + t + 3 t^2 (w = 1 + 6 t rad/s, not
+    // constant): over [0, 3] |w| <= 19 and |w'| = 6. The steps see only those bounds; the truth
+    // turns the vertices by Rodrigues' formula at theta(t) and samples.
+    const TestMesh cube = box(glm::dvec3(0.5));
+    const StaticPlane wall{{-1.0, 0.0, 0.0}, -5.0};
+    const TestMesh soup = square(0, 5.0, 20.0);
+    for (const glm::dvec3 &k : {glm::dvec3(0.0, 0.0, 1.0), glm::normalize(glm::dvec3(1.0, 2.0, 2.0))}) {
+        auto theta = [](double t) { return 0.4 + t + 3.0 * t * t; };
+        TurningPath path;
+        path.c0 = {0.0, 0.3, 0.0};
+        path.v = {1.5, 0.0, 0.0};
+        path.turn = [=](double t) { return glm::angleAxis(theta(t), k); };
+        path.turn_rate = [=](double t) { return (1.0 + 6.0 * t) * k; };
+        path.w_bound = 19.0;
+        path.w_rate_bound = 6.0;
+        const double truth = brute_first_root(
+            [&](double t) {
+                double lowest = 1e300;
+                for (const glm::dvec3 &p : cube.vertices)
+                    lowest = std::min(lowest, glm::dot(wall.n, path.c0 + path.v * t +
+                                                                    rodrigues(p, k, theta(t))) -
+                                                  wall.d);
+                return lowest;
+            },
+            3.0, 1e-5);
+        REQUIRE(truth > 0.0);
+        const TurningContact hit = turning_plane_contact(cube.mesh(), path, wall, 0.0, 3.0);
+        REQUIRE(hit.found());
+        CHECK(not_past(hit.t, truth));
+        CHECK(truth - hit.t <= 1e-12);
+        CHECK(hit.steps < 200);
+        CHECK(std::abs(turning_plane_root(cube.mesh(), path, wall, hit.t, 3.0) - truth) <= 1e-14);
+        const TurningContact on_soup =
+            turning_mesh_contact(cube.mesh(), path, soup.mesh(), TurningPath{}, 0.0, 3.0);
+        REQUIRE(on_soup.found());
+        CHECK(not_past(on_soup.t, truth));
+        CHECK(truth - on_soup.t <= 1e-12);
+        CHECK(on_soup.steps < 200);
+    }
+}
+
 TEST_CASE("turning contact: a thin fast-turning plank never passes a thin wall",
           "[physics][turning]") {
     // A 2 m x 2 cm x 0.5 m plank spinning at 40 rad/s about z, flying at 30 m/s at a wall of
