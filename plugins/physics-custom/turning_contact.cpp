@@ -94,8 +94,8 @@ double taylor_reach(double h, double rate, double m) {
 }
 
 // The plane's safe step from the Taylor bound of every vertex.
-double plane_taylor_step(const TurningMesh &mesh, const TurningPath &path,
-                         const StaticPlane &plane, double t) {
+double plane_taylor_step(const TurningMesh &mesh, const TurningPath &path, const StaticPlane &plane,
+                         double t) {
     Moving m;
     place_moving(mesh, path, t, m);
     const double turn = path.turn_curving(plane.n);
@@ -116,9 +116,9 @@ double plane_taylor_step(const TurningMesh &mesh, const TurningPath &path,
 // from their vertices, not d: that holds for any direction n, so a direction spoilt by rounding
 // when d is tiny gives a small step, never a step past the contact. `gap` receives d, `normal`
 // the direction used (from b towards a).
-double pair_step(const Moving &A, const uint32_t *ta, const TurningPath &pa_path,
-                 const Moving &B, const uint32_t *tb, const TurningPath &pb_path, double t,
-                 double &gap, glm::dvec3 *normal) {
+double pair_step(const Moving &A, const uint32_t *ta, const TurningPath &pa_path, const Moving &B,
+                 const uint32_t *tb, const TurningPath &pb_path, double t, double &gap,
+                 glm::dvec3 *normal) {
     const glm::dvec3 a[3] = {A.x[ta[0]], A.x[ta[1]], A.x[ta[2]]};
     const glm::dvec3 b[3] = {B.x[tb[0]], B.x[tb[1]], B.x[tb[2]]};
     double d = kInf;
@@ -178,10 +178,9 @@ double pair_step(const Moving &A, const uint32_t *ta, const TurningPath &pa_path
         ra = std::max(ra, A.r[ta[i]]);
         rb = std::max(rb, B.r[tb[i]]);
         for (int j = 0; j < 3; ++j)
-            second = std::min(second,
-                              taylor_reach(glm::dot(n, a[i] - b[j]),
-                                           glm::dot(n, A.v[ta[i]] - B.v[tb[j]]),
-                                           na - spin_a * A.r[ta[i]] - spin_b * B.r[tb[j]]));
+            second = std::min(second, taylor_reach(glm::dot(n, a[i] - b[j]),
+                                                   glm::dot(n, A.v[ta[i]] - B.v[tb[j]]),
+                                                   na - spin_a * A.r[ta[i]] - spin_b * B.r[tb[j]]));
     }
     const double closing = -glm::dot(n, pa_path.velocity(t) - pb_path.velocity(t));
     const double first = first_reach(slab, closing + turn_a * ra + turn_b * rb, -na);
@@ -300,16 +299,22 @@ glm::dvec3 TurningPath::place(const glm::dvec3 &p, double t) const {
     return center(t) + orientation(t) * p;
 }
 
+// The plane with a unit normal (the bounds take |n| = 1).
+StaticPlane unit_plane(const StaticPlane &plane) {
+    const double len = glm::length(plane.n);
+    return {plane.n / len, plane.d / len};
+}
+
 TurningContact turning_plane_contact(const TurningMesh &mesh, const TurningPath &path,
-                                     const StaticPlane &plane, double t0, double t1,
-                                     const TurningContactSettings &settings,
-                                     double contact_slack) {
+                                     const StaticPlane &given, double t0, double t1,
+                                     const TurningContactSettings &settings, double contact_slack) {
     TurningContact out;
     if (!window_is_finite(t0, t1) || !turning_path_is_finite(path) || !mesh_is_finite(mesh) ||
-        !plane_is_finite(plane)) {
+        !plane_is_finite(given)) {
         out.kind = TurningContact::kInvalid;
         return out;
     }
+    const StaticPlane plane = unit_plane(given);
     const double rho = path.turn_across(plane.n) * radius_of(mesh);
     double t = t0;
     std::size_t lowest = 0;
@@ -407,10 +412,11 @@ TurningContact turning_mesh_contact(const TurningMesh &a, const TurningPath &pat
 }
 
 double turning_plane_root(const TurningMesh &mesh, const TurningPath &path,
-                          const StaticPlane &plane, double t_lo, double t1, std::size_t *vertex) {
+                          const StaticPlane &given, double t_lo, double t1, std::size_t *vertex) {
     if (!window_is_finite(t_lo, t1) || !turning_path_is_finite(path) || !mesh_is_finite(mesh) ||
-        !plane_is_finite(plane))
+        !plane_is_finite(given))
         return std::numeric_limits<double>::quiet_NaN();
+    const StaticPlane plane = unit_plane(given);
     const double rho = path.turn_across(plane.n) * radius_of(mesh);
     auto height = [&](std::size_t i, double t, double *rate) {
         const glm::dvec3 r = path.orientation(t) * mesh.vertices[i];

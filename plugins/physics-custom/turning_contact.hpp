@@ -58,7 +58,7 @@ struct TurningPath {
     glm::dvec3 place(const glm::dvec3 &p, double t) const; // c(t) + R(t) p
 };
 
-// A static plane n . x = d (n unit), the side n points to is outside.
+// A static plane n . x = d (n need not be unit), the side n points to is outside.
 struct StaticPlane {
     glm::dvec3 n{0.0, 1.0, 0.0};
     double d = 0.0;
@@ -82,8 +82,8 @@ struct TurningContact {
                      // caller refuses it, naming the model
     } kind = kNone;
     double t = 0.0;
-    glm::dvec3 point{0.0};  // where they touch (the middle of the nearest points)
-    glm::dvec3 normal{0.0}; // unit, from the second body (or the plane) towards the first
+    glm::dvec3 point{0.0};          // where they touch (the middle of the nearest points)
+    glm::dvec3 normal{0.0};         // unit, from the second body (or the plane) towards the first
     std::vector<glm::dvec3> points; // every vertex-face pair within `contact_slack` of touching
     double gap = 0.0;               // the gap left at t (>= 0)
     int steps = 0;                  // advancement steps taken: the work done
@@ -114,7 +114,8 @@ bool turning_path_is_finite(const TurningPath &path);
 // t_lo is a lower bound such as turning_plane_contact's time: bracketed from t_lo, then
 // safeguarded Newton / bisection on the vertex that goes lowest, to rounding (the bracket is
 // below 1e-13 s, or no representable time lies between its ends). Returns t1 + 1 if the mesh
-// does not reach the plane by t1, NaN if an input is not finite; `vertex` receives the index of the vertex that touches.
+// does not reach the plane by t1, NaN if an input is not finite; `vertex` receives the index of the
+// vertex that touches.
 double turning_plane_root(const TurningMesh &mesh, const TurningPath &path,
                           const StaticPlane &plane, double t_lo, double t1,
                           std::size_t *vertex = nullptr);

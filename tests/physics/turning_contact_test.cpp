@@ -24,7 +24,9 @@ constexpr double kG = 9.81;
 
 // Never past the truth, up to the rounding of the truth itself (a few units in the last place
 // of t: the brute force evaluates the same heights in a different order).
-bool not_past(double t, double truth) { return t <= truth + 8.0 * 2.2e-16 * truth; }
+bool not_past(double t, double truth) {
+    return t <= truth + 8.0 * 2.2e-16 * truth;
+}
 
 // A box with half-extents e about its centre (8 vertices, 12 triangles outward).
 struct TestMesh {
@@ -32,8 +34,8 @@ struct TestMesh {
     std::vector<uint32_t> triangles;
     std::vector<std::array<uint32_t, 2>> edges;
     TurningMesh mesh() const {
-        return {vertices.data(), vertices.size(), triangles.data(), triangles.size() / 3,
-                edges.data(),    edges.size()};
+        return {vertices.data(),      vertices.size(), triangles.data(),
+                triangles.size() / 3, edges.data(),    edges.size()};
     }
 };
 
@@ -91,10 +93,9 @@ double brute_first_root(const std::function<double(double)> &H, double t_end, do
 
 // The lowest height above the plane n . x = d of vertices turned about axis k (unit) at rate
 // omega from angle0 and carried by c(t) = c0 + v t + a t^2 / 2.
-std::function<double(double)> lowest_height(const std::vector<glm::dvec3> &vertices,
-                                            glm::dvec3 k, double angle0, double omega,
-                                            glm::dvec3 c0, glm::dvec3 v, glm::dvec3 a,
-                                            glm::dvec3 n, double d) {
+std::function<double(double)> lowest_height(const std::vector<glm::dvec3> &vertices, glm::dvec3 k,
+                                            double angle0, double omega, glm::dvec3 c0,
+                                            glm::dvec3 v, glm::dvec3 a, glm::dvec3 n, double d) {
     return [=](double t) {
         double lowest = 1e300;
         const glm::dvec3 c = c0 + v * t + a * (0.5 * t * t);
@@ -153,17 +154,17 @@ TEST_CASE("turning contact: a cube turning towards a wall meets it at the brute-
         glm::dvec3 axis;
         double angle0;
     };
-    for (const Case &c : {Case{{0.0, 0.0, 1.0}, 0.3}, Case{{0.6, 0.0, 0.8}, 0.0},
-                          Case{{0.0, 0.0, 1.0}, 1.1}}) {
+    for (const Case &c :
+         {Case{{0.0, 0.0, 1.0}, 0.3}, Case{{0.6, 0.0, 0.8}, 0.0}, Case{{0.0, 0.0, 1.0}, 1.1}}) {
         TurningPath path;
         path.c0 = {0.0, 1.0, 0.0};
         path.v = {2.0, 0.0, 0.0};
         path.q0 = glm::angleAxis(c.angle0, c.axis);
         path.w = 3.0 * c.axis;
-        const double truth = brute_first_root(
-            lowest_height(cube.vertices, c.axis, c.angle0, 3.0, path.c0, path.v, glm::dvec3(0.0),
-                          wall.n, wall.d),
-            5.0, 1e-4);
+        const double truth =
+            brute_first_root(lowest_height(cube.vertices, c.axis, c.angle0, 3.0, path.c0, path.v,
+                                           glm::dvec3(0.0), wall.n, wall.d),
+                             5.0, 1e-4);
         REQUIRE(truth > 0.0);
 
         const TurningContact hit = turning_plane_contact(cube.mesh(), path, wall, 0.0, 5.0);
@@ -213,10 +214,10 @@ TEST_CASE("turning contact: random turning cubes against a wall agree with brute
         path.a = {0.5 * (unit(random) + 1.0), unit(random), 0.0};
         path.q0 = glm::angleAxis(angle0, axis);
         path.w = omega * axis;
-        const double truth = brute_first_root(lowest_height(cube.vertices, axis, angle0, omega,
-                                                            path.c0, path.v, path.a, wall.n,
-                                                            wall.d),
-                                              10.0, 1e-4);
+        const double truth =
+            brute_first_root(lowest_height(cube.vertices, axis, angle0, omega, path.c0, path.v,
+                                           path.a, wall.n, wall.d),
+                             10.0, 1e-4);
         REQUIRE(truth > 0.0);
         const TurningContact hit = turning_plane_contact(cube.mesh(), path, wall, 0.0, 10.0);
         const TurningContact on_soup =
@@ -242,7 +243,8 @@ TEST_CASE("turning contact: a cube spinning up towards a wall, known only by bou
     const TestMesh cube = box(glm::dvec3(0.5));
     const StaticPlane wall{{-1.0, 0.0, 0.0}, -5.0};
     const TestMesh soup = square(0, 5.0, 20.0);
-    for (const glm::dvec3 &k : {glm::dvec3(0.0, 0.0, 1.0), glm::normalize(glm::dvec3(1.0, 2.0, 2.0))}) {
+    for (const glm::dvec3 &k :
+         {glm::dvec3(0.0, 0.0, 1.0), glm::normalize(glm::dvec3(1.0, 2.0, 2.0))}) {
         auto theta = [](double t) { return 0.4 + t + 3.0 * t * t; };
         TurningPath path;
         path.c0 = {0.0, 0.3, 0.0};
@@ -255,9 +257,9 @@ TEST_CASE("turning contact: a cube spinning up towards a wall, known only by bou
             [&](double t) {
                 double lowest = 1e300;
                 for (const glm::dvec3 &p : cube.vertices)
-                    lowest = std::min(lowest, glm::dot(wall.n, path.c0 + path.v * t +
-                                                                    rodrigues(p, k, theta(t))) -
-                                                  wall.d);
+                    lowest = std::min(
+                        lowest, glm::dot(wall.n, path.c0 + path.v * t + rodrigues(p, k, theta(t))) -
+                                    wall.d);
                 return lowest;
             },
             3.0, 1e-5);
@@ -290,10 +292,10 @@ TEST_CASE("turning contact: a thin fast-turning plank never passes a thin wall",
         path.v = {30.0, 0.0, 0.0};
         path.q0 = glm::angleAxis(angle0, glm::dvec3(0.0, 0.0, 1.0));
         path.w = {0.0, 0.0, 40.0};
-        const double truth = brute_first_root(
-            lowest_height(plank.vertices, {0.0, 0.0, 1.0}, angle0, 40.0, path.c0, path.v,
-                          glm::dvec3(0.0), plane.n, plane.d),
-            1.0, 1e-6);
+        const double truth =
+            brute_first_root(lowest_height(plank.vertices, {0.0, 0.0, 1.0}, angle0, 40.0, path.c0,
+                                           path.v, glm::dvec3(0.0), plane.n, plane.d),
+                             1.0, 1e-6);
         REQUIRE(truth > 0.0);
         const TurningContact hit =
             turning_mesh_contact(plank.mesh(), path, wall.mesh(), TurningPath{}, 0.0, 1.0);
@@ -331,14 +333,15 @@ TEST_CASE("turning contact: a tessellated sphere lands between its outer and inn
         r_in = std::min(r_in, glm::dot(n, vertices[t[0]]));
     }
     const auto edges = edges_of(flat.data(), tris.size());
-    const TurningMesh mesh{vertices.data(), vertices.size(), flat.data(), tris.size(),
-                           edges.data(),    edges.size()};
+    const TurningMesh mesh{vertices.data(), vertices.size(), flat.data(),
+                           tris.size(),     edges.data(),    edges.size()};
     TurningPath path;
     path.c0 = {0.0, 2.0, 0.0};
     path.v = {1.0, 0.0, 0.0};
     path.a = {0.0, -kG, 0.0};
     path.w = {2.0, 1.0, 0.5};
-    const double outer = std::sqrt(2.0 * (2.0 - r) / kG), inner = std::sqrt(2.0 * (2.0 - r_in) / kG);
+    const double outer = std::sqrt(2.0 * (2.0 - r) / kG),
+                 inner = std::sqrt(2.0 * (2.0 - r_in) / kG);
     REQUIRE(inner - outer < 1e-2); // the tessellation error the bracket allows
 
     const TurningContact hit = turning_plane_contact(mesh, path, {{0.0, 1.0, 0.0}, 0.0}, 0.0, 5.0);
@@ -419,4 +422,28 @@ TEST_CASE("turning contact: inputs that are not finite are refused", "[physics][
               .kind == TurningContact::kInvalid);
     CHECK(turning_plane_contact(cube.mesh(), path, ground, 0.0, 1.0).kind ==
           TurningContact::kNone); // falls no further than it is now: no gravity, at rest
+}
+
+TEST_CASE("turning contact: a cube landing flat touches with its four bottom corners",
+          "[physics][turning]") {
+    // Axis-aligned, falling from rest with its centre at 2 m: its bottom face (0.5 below the
+    // centre) lands at sqrt(2 (2 - 0.5) / g), all four corners at once. The plane is given with
+    // a normal of length 2 (2 y = 0): the same plane.
+    const TestMesh cube = box(glm::dvec3(0.5));
+    TurningPath path;
+    path.c0 = {0.0, 2.0, 0.0};
+    path.a = {0.0, -kG, 0.0};
+    const double truth = std::sqrt(2.0 * 1.5 / kG);
+    const TurningContact hit =
+        turning_plane_contact(cube.mesh(), path, {{0.0, 2.0, 0.0}, 0.0}, 0.0, 5.0);
+    REQUIRE(hit.found());
+    CHECK(not_past(hit.t, truth));
+    CHECK(truth - hit.t <= 1e-12);
+    CHECK(hit.normal == glm::dvec3(0.0, 1.0, 0.0));
+    REQUIRE(hit.points.size() == 4);
+    for (const glm::dvec3 &p : hit.points) {
+        CHECK(std::abs(p.y) < 1e-12);
+        CHECK(std::abs(std::abs(p.x) - 0.5) < 1e-12);
+        CHECK(std::abs(std::abs(p.z) - 0.5) < 1e-12);
+    }
 }
