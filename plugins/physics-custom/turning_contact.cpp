@@ -203,7 +203,15 @@ Nearest nearest_features(const TurningMesh &ma, const std::vector<glm::dvec3> &v
                      TurningContact::Kind kind) {
         const double d = glm::length(x - y);
         if (near) near->push_back({d, 0.5 * (x + y)});
-        if (d < best.distance) {
+        // Where a face lies on a face, edges crossing in the common plane tie with the vertices
+        // on the faces: the vertex-face kind is kept unless an edge pair is nearer by more than
+        // rounding.
+        const double margin =
+            kind == TurningContact::kEdgeEdge && best.kind == TurningContact::kVertexFace
+                ? 64.0 * std::numeric_limits<double>::epsilon() *
+                      (1.0 + glm::length(x) + glm::length(y))
+                : 0.0;
+        if (d < best.distance - margin) {
             best.distance = d;
             best.on_a = x;
             best.on_b = y;
@@ -403,7 +411,14 @@ TurningContact turning_mesh_contact(const TurningMesh &a, const TurningPath &pat
     out.point = 0.5 * (nearest.on_a + nearest.on_b);
     // The direction that separates the nearest triangles best: the face's normal for a vertex on
     // a face, the edges' cross product for two edges, oriented from b towards a.
+    // Where the faces lie in one plane at a touch, rounding alone picks the side; the bodies
+    // are then closing, a moving towards b, so the normal is the side a comes from.
     glm::dvec3 n = pair_normal;
+    const glm::dvec3 at = out.point;
+    const glm::dvec3 closing =
+        path_a.velocity(t) + glm::cross(path_a.angular_velocity(t), at - path_a.center(t)) -
+        path_b.velocity(t) - glm::cross(path_b.angular_velocity(t), at - path_b.center(t));
+    if (out.gap <= 1e-9 && glm::dot(n, closing) > 0.0) n = -n;
     out.normal = n;
     std::vector<std::pair<double, glm::dvec3>> near;
     nearest_features(a, va, b, vb, contact_slack, &near);

@@ -447,3 +447,46 @@ TEST_CASE("turning contact: a cube landing flat touches with its four bottom cor
         CHECK(std::abs(std::abs(p.z) - 0.5) < 1e-12);
     }
 }
+
+TEST_CASE("turning contact: a non-convex U comes down over a post, spinning, and meets it with "
+          "its crossbar",
+          "[physics][turning]") {
+    // The U is three boxes' surfaces: prongs at x = +-0.5 (half-extents 0.1, 0.5, 0.2) and a
+    // crossbar above them at y = 0.6 (0.6, 0.1, 0.2), its underside 0.5 above the centre. It falls
+    // from rest at 3 m, spinning about the vertical at 2 rad/s, over a post of half-width 0.05
+    // whose top is at 1 m: the prongs (at least 0.4 from the axis) circle clear of the post
+    // (within 0.071 of it), so the crossbar's underside meets the post's top when the centre is
+    // at 0.5: at sqrt(2 (3 - 0.5) / g). The U's convex hull would meet it 1 m of fall earlier.
+    TestMesh u;
+    for (const auto &[centre, half] :
+         {std::pair{glm::dvec3(-0.5, 0.0, 0.0), glm::dvec3(0.1, 0.5, 0.2)},
+          std::pair{glm::dvec3(0.5, 0.0, 0.0), glm::dvec3(0.1, 0.5, 0.2)},
+          std::pair{glm::dvec3(0.0, 0.6, 0.0), glm::dvec3(0.6, 0.1, 0.2)}}) {
+        const TestMesh part = box(half);
+        const auto base = static_cast<uint32_t>(u.vertices.size());
+        for (const glm::dvec3 &v : part.vertices) u.vertices.push_back(centre + v);
+        for (uint32_t i : part.triangles) u.triangles.push_back(base + i);
+    }
+    u.edges = edges_of(u.triangles.data(), u.triangles.size() / 3);
+    TestMesh post = box({0.05, 1.0, 0.05});
+    TurningPath path;
+    path.c0 = {0.0, 3.0, 0.0};
+    path.a = {0.0, -kG, 0.0};
+    path.w = {0.0, 2.0, 0.0};
+    const double truth = std::sqrt(2.0 * 2.5 / kG);
+    const TurningContact hit =
+        turning_mesh_contact(u.mesh(), path, post.mesh(), TurningPath{}, 0.0, 5.0);
+    REQUIRE(hit.kind == TurningContact::kVertexFace);
+    CHECK(not_past(hit.t, truth));
+    CHECK(truth - hit.t <= 1e-12);
+    CHECK(glm::length(hit.normal - glm::dvec3(0.0, 1.0, 0.0)) < 1e-9);
+    CHECK(std::abs(hit.point.y - 1.0) < 1e-9);
+    // The post's four top corners, and where its top edges cross the crossbar's triangles'
+    // edges: all on the post's top.
+    CHECK(hit.points.size() >= 4);
+    for (const glm::dvec3 &p : hit.points) {
+        CHECK(std::abs(p.y - 1.0) < 1e-9);
+        CHECK(std::max(std::abs(p.x), std::abs(p.z)) <= 0.05 + 1e-9);
+    }
+    CHECK(hit.steps < 200);
+}
