@@ -20,9 +20,10 @@
 
 namespace physics_custom {
 
-// A mesh in model space about its centre of mass: vertices, triangles (3 indices each, wound
-// counter-clockwise seen from outside) and edges (each once; edges_of in mesh_distance.hpp). A
-// static world-space triangle soup (a floor, a room) is a TurningMesh with a StillPath.
+// A mesh in model space about its centre of mass: vertices, triangles (3 indices each, any
+// winding) and edges (each once; edges_of in mesh_distance.hpp; used to name the features that
+// touch). A static world-space triangle soup (a floor, a room) is a TurningMesh whose vertices
+// are in world space, with a default TurningPath (still).
 struct TurningMesh {
     const glm::dvec3 *vertices = nullptr;
     std::size_t vertex_count = 0;
@@ -65,9 +66,10 @@ struct StaticPlane {
 };
 
 struct TurningContactSettings {
-    // Advancement stops when the gap can close within this time at the bound's speed; the
-    // time returned is then a lower bound of the true one, short of it by at most about
-    // time_tolerance * (bound speed) / (true closing speed).
+    // Advancement stops when the safe step falls below this: the time returned is a lower
+    // bound of the true one, and with the second-order bound (whose step tends to the true
+    // remaining time near a contact that closes at a nonzero speed) short of it by about this
+    // much at most; the tests measure it at rounding.
     double time_tolerance = 1e-13;
     int max_steps = 10000;
 };
@@ -99,9 +101,10 @@ TurningContact turning_plane_contact(const TurningMesh &mesh, const TurningPath 
                                      double contact_slack = 1e-9);
 
 // The earliest t in [t0, t1] at which the surfaces of mesh a (moving on path_a) and mesh b (on
-// path_b; a StillPath for a world-space triangle soup) touch. They must be apart at t0. Each
-// may be convex or not: the bound used is the fastest any point of either can close, so it
-// holds for any shape. The normal points from b towards a.
+// path_b; a default TurningPath, still, for a world-space triangle soup) touch. They must be
+// apart at t0. Each may be convex or not: the bounds are taken on every pair of triangles (each
+// convex), so they hold for any shape. The normal points from b towards a. The pairs are tested
+// by brute force: meant for the few small turning models of a scene.
 TurningContact turning_mesh_contact(const TurningMesh &a, const TurningPath &path_a,
                                     const TurningMesh &b, const TurningPath &path_b, double t0,
                                     double t1, const TurningContactSettings &settings = {},
