@@ -7,6 +7,7 @@
 #include "keyed_contact.hpp"
 #include "material.hpp"
 #include "mesh_contact.hpp"
+#include "mass_properties.hpp"
 #include "mesh_distance.hpp"
 #include "overlap_memory.hpp"
 #include "polynomial.hpp"
@@ -310,6 +311,7 @@ class EventBake {
             const std::optional<double> radius =
                 sphere_radius(i, free_now ? t_begin_ : keyed_until);
             if (solid && (movable || keyed_here)) {
+                check_turning(i, radius.has_value());
                 is_body_.back() = true;
                 Body b;
                 b.model = i;
@@ -1902,6 +1904,24 @@ class EventBake {
             sink_->count(sink_->context, counts[k].first, value - counted_[k]);
             counted_[k] = value;
         }
+    }
+
+    // A model that `rotates` must be able to: its mesh closed (it turns about its centre of mass,
+    // which an open mesh has not). physics.custom turns spheres so far; any other model with
+    // Rotates on moves without turning, and the log says so once per bake.
+    void check_turning(uint32_t i, bool sphere) {
+        const ani_physics_model &m = scene_->models[i];
+        if (!ANI_MODEL_DESC_HAS_BODY(m.desc) || !m.desc->rotates || !m.desc->dynamics) return;
+        std::string why;
+        if (!m.mesh->is_sphere && !is_closed(*m.mesh, &why))
+            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT,
+                               std::string("model '") + name_of(m) +
+                                   "' cannot rotate: its mesh is not closed (" + why +
+                                   "); turn Rotates off or close the mesh");
+        if (!sphere && t_begin_ == 0.0)
+            log_warning(std::string("model '") + name_of(m) +
+                        "' has Rotates on, but physics.custom turns only spheres so far: it "
+                        "moves without turning (physics.bullet turns it)");
     }
 
     void log_warning(const std::string &message) {

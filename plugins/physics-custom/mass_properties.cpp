@@ -74,15 +74,25 @@ bool is_closed(const ani_mesh_view &mesh, std::string *why) {
         return false;
     };
     if (mesh.triangle_count == 0) return fail("it has no triangles");
+    // Meshes split a vertex where its normals or UVs differ (a cube's corner is three vertices
+    // at one position): the surface is closed when the triangles close over the positions, so
+    // each vertex is taken as the first vertex at its position.
+    std::map<std::array<double, 3>, uint32_t> first_at;
+    std::vector<uint32_t> welded(mesh.vertex_count);
+    for (uint32_t i = 0; i < mesh.vertex_count; ++i) {
+        const double *p = mesh.positions + 3 * std::size_t(i);
+        welded[i] = first_at.emplace(std::array<double, 3>{p[0], p[1], p[2]}, i).first->second;
+    }
     // Each undirected edge (lower index first) with the triangles that use it and whether they
     // run along it from the lower index to the higher.
     std::map<std::pair<uint32_t, uint32_t>, std::vector<std::pair<uint32_t, bool>>> edges;
     for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
-        const uint32_t *v = mesh.triangles + 3 * std::size_t(t);
+        const uint32_t *named = mesh.triangles + 3 * std::size_t(t);
         for (int k = 0; k < 3; ++k)
-            if (v[k] >= mesh.vertex_count)
+            if (named[k] >= mesh.vertex_count)
                 return fail("triangle " + std::to_string(t) + " names vertex " +
-                            std::to_string(v[k]) + " of " + std::to_string(mesh.vertex_count));
+                            std::to_string(named[k]) + " of " + std::to_string(mesh.vertex_count));
+        const uint32_t v[3] = {welded[named[0]], welded[named[1]], welded[named[2]]};
         if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0])
             return fail("triangle " + std::to_string(t) + " is degenerate");
         for (int k = 0; k < 3; ++k) {

@@ -27,7 +27,8 @@ struct MassProperties {
 };
 
 // Whether every edge of the mesh is shared by exactly two triangles that run along it in
-// opposite directions (a closed, consistently oriented surface). When not, `why` says what is
+// opposite directions (a closed, consistently oriented surface), vertices at the same position
+// counting as one (meshes split them for normals and UVs). When not, `why` says what is
 // wrong ("edge 3-7 is used by 1 triangle", "edge 3-7 runs the same way in triangles 2 and 5",
 // "triangle 4 is degenerate") for the message "model 'X' cannot rotate: its mesh is not closed
 // (why)".

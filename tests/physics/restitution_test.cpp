@@ -325,3 +325,38 @@ TEST_CASE("a backspinning ball dropped on a rough floor sticks at its first boun
     CHECK(std::abs(rolling->v0.x + spin->w.z * r) < 1e-12); // rolling: the contact point is still
     CHECK(timeline->events().size() < 200);
 }
+
+TEST_CASE("an open mesh with Rotates on is refused naming the model; a cube with Rotates on moves "
+          "without turning and the log says why") {
+    std::vector<std::string> lines;
+    Environment logged({test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
+                       [&](ani_log_level, const std::string &, const std::string &m) { lines.push_back(m); });
+    const auto bake = [&](const Document &doc) {
+        Timeline t(doc, logged.plugins);
+        std::vector<std::string> ids, warnings;
+        for (const Model &m : doc.models()) ids.push_back(m.mesh);
+        t.set_meshes(load_meshes(ids, logged.assets, {}, warnings));
+        REQUIRE(warnings.empty());
+        t.bake(2.0);
+        return t.rotations(1).size();
+    };
+    Document doc;
+    doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, 10.0));
+    Model sheet = model("sheet", "plane", true, true); // the plane: one open square
+    sheet.rotates = true;
+    doc.add_model(sheet, placed({0, 3, 0}));
+    try {
+        bake(doc);
+        FAIL("an open mesh that rotates was baked");
+    } catch (const std::exception &e) {
+        CHECK_THAT(e.what(), Catch::Contains("model 'sheet' cannot rotate: its mesh is not closed"));
+    }
+    Model cube = model("cube", "cube", true, true);
+    cube.rotates = true;
+    cube.angular_velocity = {0.0, 2.0, 0.0};
+    doc.set_model(1, cube);
+    CHECK(bake(doc) == 0); // no rotation segment: its keys keep turning it
+    CHECK(std::count_if(lines.begin(), lines.end(), [](const std::string &l) {
+              return l.find("'cube' has Rotates on, but physics.custom turns only spheres") != std::string::npos;
+          }) == 1);
+}
