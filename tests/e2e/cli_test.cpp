@@ -53,6 +53,8 @@ TEST_CASE("animator info prints a document's settings, models and keyframes") {
     CHECK_THAT(r.out, Catch::Contains("ball: mesh sphere ("));
     CHECK_THAT(r.out, Catch::Contains("sphere.obj: "));
     CHECK_THAT(r.out, Catch::Contains("dynamics on, gravity on, mass 1"));
+    // drop.ani predates the rigid-body keys: the defaults.
+    CHECK_THAT(r.out, Catch::Contains("rigid body: restitution 1, friction 0, rotates off, angular velocity (0, 0, 0) rad/s"));
     CHECK_THAT(r.out, Catch::Contains("keyframes (1):"));
     CHECK_THAT(r.out, Catch::Contains("ball: center (0, 5, 0)"));
 }
@@ -238,4 +240,18 @@ TEST_CASE("animator compare of the exact and the Bullet backend on the cradle ma
     const auto coarse = test::run_animator("compare " + cradle + " --until 2 --param step=0.5");
     CHECK(coarse.exit_code == 1);
     CHECK_THAT(coarse.out, Catch::Contains("step"));
+}
+
+TEST_CASE("animator info prints each model's rigid-body settings") {
+    const auto dir = test::fresh_dir("cli_info_body");
+    test::write_file(dir / "body.ani",
+                     "animator-ani 1\nmodel \"top\"\n  mesh \"cube\"\n  restitution 0.5\n  friction 0.75\n"
+                     "  rotates true\n  angular_velocity 0 -1.5 6.25\nend\nkeyframe 0\n"
+                     "  camera position 0 0 0 rotation 1 0 0 0 fov 50\n"
+                     "  state \"top\" center 0 0 0 angles 0 0 0 scale 1 1 1 turn 0 0 0\nend\n");
+    auto r = test::run_animator("info " + (dir / "body.ani").string());
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("top: mesh cube") &&
+                          Catch::Contains("    rigid body: restitution 0.5, friction 0.75, rotates on, "
+                                          "angular velocity (0, -1.5, 6.25) rad/s\n"));
 }
