@@ -94,6 +94,10 @@ Document random_document(std::mt19937 &rng, int models, int keyframes) {
         m.gravity = rng() % 2;
         m.mass = positive(rng);
         m.initial_velocity = vec();
+        m.restitution = unit(rng);
+        m.friction = positive(rng);
+        m.rotates = rng() % 2;
+        m.angular_velocity = vec();
         m.collision_sound = rng() % 2 ? "click" : "";
         m.moving_sound = rng() % 2 ? "hum" : "";
         doc.add_model(m, state());

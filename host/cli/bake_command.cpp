@@ -7,6 +7,7 @@
 #include "io/environment.hpp"
 #include "plugin/descriptor_check.hpp"
 #include "timeline/timeline.hpp"
+#include "timeline/world_turning.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -55,16 +56,19 @@ void write_trace(const std::string &path, const Timeline &timeline, double until
     const std::filesystem::path partial = partial_of(path);
     std::ofstream out(partial);
     if (!out) throw std::runtime_error(path + ": cannot be written");
-    out << "t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz\n";
+    out << "t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz,qw,qx,qy,qz,wx,wy,wz\n";
     const auto &models = timeline.document().models();
     for (double t : times) {
         const Frame frame = timeline.evaluate(t);
+        const std::vector<Turning> turns = world_turnings(timeline, frame, t);
         for (size_t m = 0; m < models.size(); ++m) {
             const ModelPose &p = frame.models[m];
             out << number(t) << "," << csv_field(models[m].name);
             for (const glm::dvec3 *v : {&p.center, &p.angles, &p.scale, &p.velocity})
                 out << "," << number(v->x) << "," << number(v->y) << "," << number(v->z);
-            out << "\n";
+            const Turning &r = turns[m]; // world orientation and angular velocity (rad/s)
+            out << "," << number(r.q.w) << "," << number(r.q.x) << "," << number(r.q.y) << "," << number(r.q.z)
+                << "," << number(r.w.x) << "," << number(r.w.y) << "," << number(r.w.z) << "\n";
         }
     }
     out.close();
@@ -167,7 +171,8 @@ void add_bake_command(CLI::App &app, std::function<int()> &run) {
     cmd->add_option("--step", o->step, "trace sample step in seconds (default 1/60)")
         ->check(CLI::PositiveNumber);
     cmd->add_option("--trace", o->trace,
-                    "write every model's state as CSV: t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz");
+                    "write every model's state as CSV: t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz,qw,qx,qy,qz,wx,wy,wz "
+                    "(q: world orientation, w: angular velocity in rad/s about world axes)");
     cmd->add_option("--events", o->events, "write collision events as CSV: t,a,b,nx,ny,nz,speed");
     cmd->add_option("--param", o->params, "a backend parameter, NAME=VALUE (repeatable)");
     cmd->add_flag("--stats", o->stats,

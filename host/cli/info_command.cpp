@@ -70,6 +70,9 @@ void print_document(std::ostream &out, const Document &doc, const AssetPaths &as
             << (m.parent < 0 ? std::string("(root)") : doc.models()[static_cast<size_t>(m.parent)].name)
             << "\n    physics: dynamics " << on_off(m.dynamics) << ", gravity " << on_off(m.gravity)
             << ", mass " << m.mass << ", velocity " << vec(m.initial_velocity)
+            << "\n    rigid body: restitution " << m.restitution << ", friction " << m.friction
+            << ", rotates " << on_off(m.rotates) << ", angular velocity " << vec(m.angular_velocity)
+            << " rad/s"
             << "\n    material: kd " << vec(m.material.kd) << ", ks " << vec(m.material.ks)
             << ", shininess " << m.material.shininess << ", texture "
             << (m.texture.empty() ? "(none)" : m.texture) << ", tint " << m.tint

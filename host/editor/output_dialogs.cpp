@@ -235,7 +235,7 @@ void OutputDialogs::export_form(EditorSession &session) {
                 document_stem(session.path()).c_str());
     ImGui::Checkbox("Trace (CSV)", &trace_);
     tip("Every model's position, angles, scale and velocity, every 1/60 s and at every keyframe:\n"
-        "t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz (the same file as `animator bake --trace`).");
+        "t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz,qw,qx,qy,qz,wx,wy,wz (the same file as `animator bake --trace`).");
     ImGui::SameLine(160.0f);
     ImGui::SetNextItemWidth(420.0f);
     ImGui::InputText("##trace path", &trace_path_);

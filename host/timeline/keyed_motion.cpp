@@ -112,6 +112,10 @@ std::vector<ModelPose> KeyedMotion::model(int m, const std::vector<double> &time
             out[i].center[c] = centers[4 * i + static_cast<size_t>(c)];
             out[i].velocity[c] = velocities[4 * i + static_cast<size_t>(c)];
             out[i].angles[c] = angles[4 * i + static_cast<size_t>(c)];
+            // Outside its keys a model's angles are held: they do not turn, whatever rate the
+            // interpolator continues with.
+            const bool held = times[i] < ch.angles.keys.front().time || times[i] > ch.angles.keys.back().time;
+            out[i].angle_rates[c] = held ? 0.0 : angle_rates[4 * i + static_cast<size_t>(c)];
             out[i].scale[c] = scales[4 * i + static_cast<size_t>(c)];
         }
     return out;

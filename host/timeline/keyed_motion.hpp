@@ -20,6 +20,7 @@ struct ModelPose {
     glm::dvec3 angles{0.0}; // degrees in [0, 360)
     glm::dvec3 scale{1.0};
     glm::dvec3 velocity{0.0}; // of the center, m/s
+    glm::dvec3 angle_rates{0.0}; // of the keyed angles, degrees per second (the interpolator's; 0 outside the keys)
 };
 
 // The interpolator instances a document needs: its choice (the seed's linear by default) for

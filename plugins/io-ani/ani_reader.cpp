@@ -339,6 +339,19 @@ void Reader::read_model(ani::OwnedDocument &doc) {
         } else if (key == "velocity") {
             expect_count(4, "three numbers");
             m.initial_velocity = vec3(1, "velocity");
+        } else if (key == "restitution") { // rigid-body settings: absent in older files (defaults)
+            expect_count(2, "a number");
+            m.restitution = unit(1, "restitution");
+        } else if (key == "friction") {
+            expect_count(2, "a number");
+            m.friction = number(1, "friction");
+            if (m.friction < 0.0) fail("expected friction >= 0, got " + got(1));
+        } else if (key == "rotates") {
+            expect_count(2, "true or false");
+            m.rotates = boolean(1, "rotates") ? 1 : 0;
+        } else if (key == "angular_velocity") {
+            expect_count(4, "three numbers");
+            m.angular_velocity = vec3(1, "angular_velocity");
         } else if (key == "collision_sound") {
             expect_count(2, "a quoted sound name");
             m.collision_sound = doc.keep(string(1, "collision_sound"));
@@ -348,7 +361,8 @@ void Reader::read_model(ani::OwnedDocument &doc) {
         } else {
             fail("unknown model key " + got(0) + "; expected mesh, parent, kd, ks, shininess, "
                  "texture, tint, reflectivity, transparency, refractive_index, dynamics, gravity, "
-                 "mass, velocity, collision_sound, moving_sound or end");
+                 "mass, velocity, restitution, friction, rotates, angular_velocity, collision_sound, "
+                 "moving_sound or end");
         }
     }
     if (!have_mesh) fail_at(header_line, "model \"" + name + "\" has no 'mesh'");

@@ -58,7 +58,13 @@ std::string to_text(const ani_document_view &doc) {
             << "  dynamics " << boolean(m.dynamics) << "\n"
             << "  gravity " << boolean(m.gravity) << "\n"
             << "  mass " << number(m.mass) << "\n"
-            << "  velocity " << vec(m.initial_velocity) << "\n"
+            << "  velocity " << vec(m.initial_velocity) << "\n";
+        // Rigid-body settings (ABI 1.3); a shorter view has the defaults.
+        const bool body = ANI_MODEL_DESC_HAS_BODY(&m);
+        out << "  restitution " << number(body ? m.restitution : 1.0) << "\n"
+            << "  friction " << number(body ? m.friction : 0.0) << "\n"
+            << "  rotates " << boolean(body ? m.rotates : 0) << "\n"
+            << "  angular_velocity " << vec(body ? m.angular_velocity : ani_vec3{0.0, 0.0, 0.0}) << "\n"
             << "  collision_sound " << quote(str(m.collision_sound)) << "\n"
             << "  moving_sound " << quote(str(m.moving_sound)) << "\n"
             << "end\n";

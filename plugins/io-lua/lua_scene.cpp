@@ -41,6 +41,9 @@ struct Node {
     bool dynamics = false, gravity = false;
     double mass = 1.0;
     glm::dvec3 velocity{0.0};
+    double restitution = 1.0, friction = 0.0; // rigid-body settings (issue 18)
+    bool rotates = false;
+    glm::dvec3 angular_velocity{0.0};
     std::string texture, collision_sound, moving_sound;
     double tint = 0.0, reflectivity = 0.0, transparency = 0.0, refractive_index = 1.0;
 };
@@ -378,17 +381,26 @@ int node_set_material(lua_State *L) {
 
 int node_set_physics(lua_State *L) {
     const int index = check_node(L, 1);
-    check_keys(L, 2, "set_physics", {"dynamics", "gravity", "mass", "velocity"});
+    check_keys(L, 2, "set_physics",
+               {"dynamics", "gravity", "mass", "velocity", "restitution", "friction", "rotates", "angular_velocity"});
     const auto dynamics = bool_field(L, 2, "dynamics");
     const auto gravity = bool_field(L, 2, "gravity");
     const auto mass = number_field(L, 2, "mass", 0.0, 1e30);
     if (mass && *mass <= 0.0) return luaL_error(L, "'mass' must be > 0");
     const auto velocity = vec3_field(L, 2, "velocity");
+    const auto restitution = number_field(L, 2, "restitution", 0.0, 1.0);
+    const auto friction = number_field(L, 2, "friction", 0.0, 1e30);
+    const auto rotates = bool_field(L, 2, "rotates");
+    const auto angular_velocity = vec3_field(L, 2, "angular_velocity");
     Node &n = node_at(L, index);
     if (dynamics) n.dynamics = *dynamics;
     if (gravity) n.gravity = *gravity;
     if (mass) n.mass = *mass;
     if (velocity) n.velocity = *velocity;
+    if (restitution) n.restitution = *restitution;
+    if (friction) n.friction = *friction;
+    if (rotates) n.rotates = *rotates;
+    if (angular_velocity) n.angular_velocity = *angular_velocity;
     return 0;
 }
 
@@ -542,6 +554,10 @@ bool flatten(const Scene &scene, int root_index, const std::string &path, SceneR
         m.gravity = n.gravity;
         m.mass = n.mass;
         m.initial_velocity = {n.velocity.x, n.velocity.y, n.velocity.z};
+        m.restitution = n.restitution;
+        m.friction = n.friction;
+        m.rotates = n.rotates;
+        m.angular_velocity = {n.angular_velocity.x, n.angular_velocity.y, n.angular_velocity.z};
         m.collision_sound = n.collision_sound;
         m.moving_sound = n.moving_sound;
         if (!to_state(v.prefix * n.local, n, path, out, m.state, error)) return false;

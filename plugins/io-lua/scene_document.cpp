@@ -54,6 +54,10 @@ bool build_document(const SceneResult &scene, const std::string &path, const ani
         m.gravity = n.gravity;
         m.mass = n.mass;
         m.initial_velocity = n.initial_velocity;
+        m.restitution = n.restitution;
+        m.friction = n.friction;
+        m.rotates = n.rotates ? 1 : 0;
+        m.angular_velocity = n.angular_velocity;
         m.collision_sound = doc.keep(n.collision_sound);
         m.moving_sound = doc.keep(n.moving_sound);
         doc.models.push_back(m);

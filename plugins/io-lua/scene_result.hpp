@@ -23,6 +23,9 @@ struct SceneModel {
     bool dynamics = false, gravity = false;
     double mass = 1.0;
     ani_vec3 initial_velocity{0, 0, 0};
+    double restitution = 1.0, friction = 0.0; // rigid-body settings (ABI 1.3)
+    bool rotates = false;
+    ani_vec3 angular_velocity{0, 0, 0};
     std::string collision_sound, moving_sound;
     ani_model_state state{}; // at t = 0, relative to the parent
 };

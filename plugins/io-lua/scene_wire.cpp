@@ -132,6 +132,10 @@ std::string encode_result(const SceneResult &r) {
         w.put(m.gravity);
         w.put(m.mass);
         w.put(m.initial_velocity);
+        w.put(m.restitution);
+        w.put(m.friction);
+        w.put(m.rotates);
+        w.put(m.angular_velocity);
         w.put(m.collision_sound);
         w.put(m.moving_sound);
         for (const ani_vec3 &v : {m.state.center, m.state.angles, m.state.scale, m.state.turn}) w.put(v);
@@ -196,6 +200,10 @@ bool decode_reply(const std::string &bytes, const std::string &path, SceneResult
             m.gravity = r.get_bool();
             m.mass = r.get<double>();
             m.initial_velocity = r.get_vec3();
+            m.restitution = r.get<double>();
+            m.friction = r.get<double>();
+            m.rotates = r.get_bool();
+            m.angular_velocity = r.get_vec3();
             m.collision_sound = r.get_string();
             m.moving_sound = r.get_string();
             m.state.center = r.get_vec3();

@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <filesystem>
 #include <sstream>
 
@@ -53,6 +55,8 @@ TEST_CASE("animator info prints a document's settings, models and keyframes") {
     CHECK_THAT(r.out, Catch::Contains("ball: mesh sphere ("));
     CHECK_THAT(r.out, Catch::Contains("sphere.obj: "));
     CHECK_THAT(r.out, Catch::Contains("dynamics on, gravity on, mass 1"));
+    // drop.ani predates the rigid-body keys: the defaults.
+    CHECK_THAT(r.out, Catch::Contains("rigid body: restitution 1, friction 0, rotates off, angular velocity (0, 0, 0) rad/s"));
     CHECK_THAT(r.out, Catch::Contains("keyframes (1):"));
     CHECK_THAT(r.out, Catch::Contains("ball: center (0, 5, 0)"));
 }
@@ -133,7 +137,7 @@ TEST_CASE("animator bake writes a trace of every model at every step and every k
     REQUIRE(r.exit_code == 0);
     const auto rows = lines_of(test::read_file(dir / "trace.csv"));
     REQUIRE(!rows.empty());
-    CHECK(rows[0] == "t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz");
+    CHECK(rows[0] == "t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz,qw,qx,qy,qz,wx,wy,wz");
     // Times 0, 0.25, 0.4 (the second keyframe), 0.5, 0.75, 1: six samples of three models.
     CHECK(rows.size() == 1 + 6 * 3);
     // At the keyframe time the cube is exactly at its key, center (0.44, 2.92, 0), leaving it at
@@ -238,4 +242,110 @@ TEST_CASE("animator compare of the exact and the Bullet backend on the cradle ma
     const auto coarse = test::run_animator("compare " + cradle + " --until 2 --param step=0.5");
     CHECK(coarse.exit_code == 1);
     CHECK_THAT(coarse.out, Catch::Contains("step"));
+}
+
+TEST_CASE("animator info prints each model's rigid-body settings") {
+    const auto dir = test::fresh_dir("cli_info_body");
+    test::write_file(dir / "body.ani",
+                     "animator-ani 1\nmodel \"top\"\n  mesh \"cube\"\n  restitution 0.5\n  friction 0.75\n"
+                     "  rotates true\n  angular_velocity 0 -1.5 6.25\nend\nkeyframe 0\n"
+                     "  camera position 0 0 0 rotation 1 0 0 0 fov 50\n"
+                     "  state \"top\" center 0 0 0 angles 0 0 0 scale 1 1 1 turn 0 0 0\nend\n");
+    auto r = test::run_animator("info " + (dir / "body.ani").string());
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("top: mesh cube") &&
+                          Catch::Contains("    rigid body: restitution 0.5, friction 0.75, rotates on, "
+                                          "angular velocity (0, -1.5, 6.25) rad/s\n"));
+}
+
+TEST_CASE("animator bake --trace gives each model's world orientation and angular velocity") {
+    namespace fs = std::filesystem;
+    const fs::path dir = test::fresh_dir("cli_trace_turning");
+    // Linear keys: "spin" turns about Z from 0 to 90 degrees in 1 s; "arm", its child, is turned
+    // 90 degrees about its own X and keyed still; "tumble" turns about X (0 -> 60) and Z (0 -> 90).
+    test::write_file(dir / "turn.ani",
+                     "animator-ani 1\nsettings\n  max_time_ms 2000\n  interpolation \"interpolation.linear\"\nend\n"
+                     "model \"spin\"\n  mesh \"cube\"\nend\n"
+                     "model \"arm\"\n  mesh \"cube\"\n  parent \"spin\"\nend\n"
+                     "model \"tumble\"\n  mesh \"cube\"\nend\n"
+                     "keyframe 0\n  camera position 0 0 10 rotation 1 0 0 0 fov 50\n"
+                     "  state \"spin\" center 0 0 0 angles 0 0 0 scale 1 1 1 turn 0 0 0\n"
+                     "  state \"arm\" center 2 0 0 angles 90 0 0 scale 1 1 1 turn 0 0 0\n"
+                     "  state \"tumble\" center 5 0 0 angles 0 0 0 scale 1 1 1 turn 0 0 0\nend\n"
+                     "keyframe 1000\n"
+                     "  state \"spin\" center 0 0 0 angles 0 0 90 scale 1 1 1 turn 0 0 0\n"
+                     "  state \"arm\" center 2 0 0 angles 90 0 0 scale 1 1 1 turn 0 0 0\n"
+                     "  state \"tumble\" center 5 0 0 angles 60 0 90 scale 1 1 1 turn 0 0 0\nend\n");
+    const auto r = test::run_animator("bake " + (dir / "turn.ani").string() + " --until 1.5 --step 0.001 --trace " +
+                                      (dir / "trace.csv").string());
+    REQUIRE(r.exit_code == 0);
+    const auto rows = lines_of(test::read_file(dir / "trace.csv"));
+    REQUIRE(!rows.empty());
+    CHECK(rows[0] == "t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz,qw,qx,qy,qz,wx,wy,wz");
+    // [sample][model] -> q (w, x, y, z) and w.
+    struct Turn {
+        double q[4], w[3];
+    };
+    std::map<long, std::map<std::string, Turn>> at;
+    for (size_t i = 1; i < rows.size(); ++i) {
+        std::vector<std::string> f;
+        std::istringstream in(rows[i]);
+        for (std::string cell; std::getline(in, cell, ',');) f.push_back(cell);
+        REQUIRE(f.size() == 21);
+        Turn t{};
+        for (int k = 0; k < 4; ++k) t.q[k] = std::stod(f[14 + static_cast<size_t>(k)]);
+        for (int k = 0; k < 3; ++k) t.w[k] = std::stod(f[18 + static_cast<size_t>(k)]);
+        at[std::lround(std::stod(f[0]) * 1000.0)][f[1]] = t;
+    }
+    REQUIRE(at.size() == 1501);
+    const double pi = 3.14159265358979323846;
+    for (long k : {250L, 500L, 750L, 1250L}) {
+        CAPTURE(k);
+        const double t = static_cast<double>(k) / 1000.0;
+        // spin: q = (cos(theta/2), 0, 0, sin(theta/2)), theta = (pi/2) t until 1 s, then held;
+        // w = (0, 0, pi/2) while turning, 0 after.
+        const double theta = pi / 2 * std::min(t, 1.0), rate = t < 1.0 ? pi / 2 : 0.0;
+        const Turn &s = at[k]["spin"];
+        CHECK(s.q[0] == Approx(std::cos(theta / 2)).margin(1e-12));
+        CHECK(s.q[1] == Approx(0.0).margin(1e-12));
+        CHECK(s.q[2] == Approx(0.0).margin(1e-12));
+        CHECK(s.q[3] == Approx(std::sin(theta / 2)).margin(1e-12));
+        CHECK(s.w[0] == Approx(0.0).margin(1e-12));
+        CHECK(s.w[1] == Approx(0.0).margin(1e-12));
+        CHECK(s.w[2] == Approx(rate).margin(1e-12));
+        // arm: its parent's turn about Z followed by its own 90 degrees about X:
+        // qz * qx = (cz cx, cz sx, sz sx, sz cx) with cx = sx = sqrt(1/2); it turns with its parent.
+        const double cz = std::cos(theta / 2), sz = std::sin(theta / 2), h = std::sqrt(0.5);
+        const Turn &a = at[k]["arm"];
+        CHECK(a.q[0] == Approx(cz * h).margin(1e-12));
+        CHECK(a.q[1] == Approx(cz * h).margin(1e-12));
+        CHECK(a.q[2] == Approx(sz * h).margin(1e-12));
+        CHECK(a.q[3] == Approx(sz * h).margin(1e-12));
+        CHECK(a.w[2] == Approx(rate).margin(1e-12));
+    }
+    // tumble at 0.5 s: a = 30 degrees about X at 60 deg/s, c = 45 about Z at 90 deg/s. By hand,
+    // w = a' X + Rx(a) c' Z = (pi/3, -(pi/2) sin 30, (pi/2) cos 30).
+    const Turn &half = at[500]["tumble"];
+    CHECK(half.w[0] == Approx(pi / 3).margin(1e-12));
+    CHECK(half.w[1] == Approx(-pi / 4).margin(1e-12));
+    CHECK(half.w[2] == Approx(pi / 2 * std::sqrt(3.0) / 2).margin(1e-12));
+    // And everywhere inside the key span, w agrees with a central difference of the trace's own
+    // orientations: w = 2 (q(t+h) - q(t-h)) / (2h) q(t)* (vector part), error O(h^2) ~ 1e-6.
+    for (long k = 2; k <= 998; k += 4) {
+        CAPTURE(k);
+        const Turn &p = at[k + 1]["tumble"], &m = at[k - 1]["tumble"], &c = at[k]["tumble"];
+        double d[4];
+        for (int i = 0; i < 4; ++i) d[i] = (p.q[i] - m.q[i]) / 0.002;
+        // (d) * conj(c), vector part: d0 (-c_v) + c0 d_v + d_v x (-c_v)
+        const double cw = c.q[0], cx = -c.q[1], cy = -c.q[2], cz2 = -c.q[3];
+        const double vx = d[0] * cx + cw * d[1] + (d[2] * cz2 - d[3] * cy);
+        const double vy = d[0] * cy + cw * d[2] + (d[3] * cx - d[1] * cz2);
+        const double vz = d[0] * cz2 + cw * d[3] + (d[1] * cy - d[2] * cx);
+        CHECK(c.w[0] == Approx(2 * vx).margin(1e-5));
+        CHECK(c.w[1] == Approx(2 * vy).margin(1e-5));
+        CHECK(c.w[2] == Approx(2 * vz).margin(1e-5));
+        const double norm = std::sqrt(c.q[0] * c.q[0] + c.q[1] * c.q[1] + c.q[2] * c.q[2] + c.q[3] * c.q[3]);
+        CHECK(norm == Approx(1.0).margin(1e-12));
+        CHECK(c.q[0] >= 0.0);
+    }
 }

@@ -89,6 +89,13 @@ TEST_CASE("malformed .ani files fail with the file, the line and what was expect
         {"bool_yes", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  dynamics yes\nend\n", ":4: expected true or false for dynamics"},
         {"mass_zero", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  mass 0\nend\n", ":4: expected mass > 0"},
         {"mass_word", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  mass heavy\nend\n", ":4: expected a number for mass, got 'heavy'"},
+        {"restitution_high", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  restitution 1.5\nend\n", ":4: expected restitution in [0, 1], got '1.5'"},
+        {"restitution_nan", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  restitution nan\nend\n", ":4: expected a finite number for restitution"},
+        {"friction_negative", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  friction -0.1\nend\n", ":4: expected friction >= 0, got '-0.1'"},
+        {"friction_inf", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  friction inf\nend\n", ":4: expected a finite number for friction"},
+        {"rotates_yes", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  rotates yes\nend\n", ":4: expected true or false for rotates"},
+        {"angular_two", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  angular_velocity 1 2\nend\n", ":4: expected three numbers after 'angular_velocity'"},
+        {"angular_word", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  angular_velocity 1 fast 3\nend\n", ":4: expected a number for angular_velocity, got 'fast'"},
         {"no_mesh", std::string(kValidHeader) + "model \"b\"\n  mass 2\nend\n", ":2: model \"b\" has no 'mesh'"},
         {"unclosed_string", std::string(kValidHeader) + "model \"b\n", ":2: a string is not closed"},
         {"duplicate_model", std::string(kValidHeader) + model + model, ":5: a model named \"ball\" already exists"},
@@ -217,4 +224,33 @@ TEST_CASE("a document with a line the reader would refuse is not saved") {
                           Catch::Contains("would be longer than the 1048576 bytes a reader takes"));
     CHECK_FALSE(fs::exists(dir / "long.ani"));
     CHECK(temp_files_in(dir).empty());
+}
+
+TEST_CASE("a model's rigid-body keys: absent (older files) read as the defaults, given read exactly") {
+    const fs::path dir = test::fresh_dir("ani_body");
+    const std::string key0 = "keyframe 0\n  camera position 0 0 0 rotation 1 0 0 0 fov 50\n"
+                             "  state \"old\" center 0 0 0 angles 0 0 0 scale 1 1 1 turn 0 0 0\n"
+                             "  state \"new\" center 0 0 0 angles 0 0 0 scale 1 1 1 turn 0 0 0\nend\n";
+    const fs::path path = dir / "body.ani";
+    test::write_file(path, std::string(kValidHeader) + "model \"old\"\n  mesh \"sphere\"\n  dynamics true\nend\n" +
+                               "model \"new\"\n  mesh \"sphere\"\n  restitution 0.25\n  friction 1.5\n"
+                               "  rotates true\n  angular_velocity 0 -2.5 6.28\nend\n" + key0);
+    const Document doc = open_document(registry(), path).document;
+    REQUIRE(doc.models().size() == 2);
+    const Model &old = doc.models()[0], &now = doc.models()[1];
+    CHECK(old.restitution == 1.0); // the seed's elastic, frictionless world, turned by keys only
+    CHECK(old.friction == 0.0);
+    CHECK_FALSE(old.rotates);
+    CHECK(old.angular_velocity == glm::dvec3(0.0));
+    CHECK(now.restitution == 0.25);
+    CHECK(now.friction == 1.5);
+    CHECK(now.rotates);
+    CHECK(now.angular_velocity == glm::dvec3(0.0, -2.5, 6.28));
+    // The writer writes every key, the defaults too.
+    const fs::path again = dir / "again.ani";
+    save_document(registry(), doc, again);
+    const std::string text = test::read_file(again);
+    CHECK_THAT(text, Catch::Contains("model \"old\"\n") && Catch::Contains("  restitution 1\n  friction 0\n"
+                                                                           "  rotates false\n  angular_velocity 0 0 0\n"));
+    CHECK_THAT(text, Catch::Contains("  restitution 0.25\n  friction 1.5\n  rotates true\n  angular_velocity 0 -2.5 6.28\n"));
 }

@@ -58,6 +58,10 @@ SceneResult sample_scene() {
         m.gravity = true;
         m.mass = 2.5 * (i + 1);
         m.initial_velocity = {1, -1, 0.25};
+        m.restitution = 0.125 * (i + 1);
+        m.friction = 0.3 + i;
+        m.rotates = i % 2 == 1;
+        m.angular_velocity = {0.5 * i, -2, 6.28};
         m.collision_sound = "click";
         m.moving_sound = std::string("h\0m", 3); // any bytes
         m.state.center = {double(i), 2, 3};
@@ -203,6 +207,10 @@ TEST_CASE("scene wire: a scene survives encoding and decoding exactly") {
         CHECK(b.dynamics == a.dynamics);
         CHECK(b.mass == a.mass);
         CHECK(same_vec3(b.initial_velocity, a.initial_velocity));
+        CHECK(b.restitution == a.restitution);
+        CHECK(b.friction == a.friction);
+        CHECK(b.rotates == a.rotates);
+        CHECK(same_vec3(b.angular_velocity, a.angular_velocity));
         CHECK(b.moving_sound == a.moving_sound);
         CHECK(same_vec3(b.state.center, a.state.center));
         CHECK(same_vec3(b.state.scale, a.state.scale));

@@ -197,6 +197,16 @@ TEST_CASE("scene errors name the file and the line") {
          "duplicate.lua:3: a node named 'a' already exists (made on line 2)"},
         {"unknown_key", "local r = gr.node('r')\nr:set_physics{dynamic = true}\nreturn r\n",
          "unknown_key.lua:2: unknown key 'dynamic' in set_physics; expected dynamics, gravity, mass, velocity"},
+        {"bad_restitution", "local r = gr.node('r')\n\nr:set_physics{restitution = 1.5}\nreturn r\n",
+         "bad_restitution.lua:3: 'restitution' must be in [0.0, 1.0], got 1.5"},
+        {"bad_friction", "local r = gr.node('r')\nr:set_physics{friction = -0.25}\nreturn r\n",
+         "bad_friction.lua:2: 'friction' must be in [0.0, 1e+30], got -0.25"},
+        {"nan_friction", "local r = gr.node('r')\nr:set_physics{friction = 0/0}\nreturn r\n",
+         "nan_friction.lua:2: 'friction' must be a number"},
+        {"bad_rotates", "local r = gr.node('r')\nr:set_physics{rotates = 1}\nreturn r\n",
+         "bad_rotates.lua:2: 'rotates' must be true or false"},
+        {"bad_angular", "local r = gr.node('r')\nr:set_physics{angular_velocity = {1, 2}}\nreturn r\n",
+         "bad_angular.lua:2: angular_velocity must be a table of 3 numbers"},
         {"bad_mass", "local r = gr.node('r')\nr:set_physics{mass = -2}\nreturn r\n", "bad_mass.lua:2:"},
         {"bad_axis", "local r = gr.node('r')\nr:rotate('w', 10)\nreturn r\n", "bad_axis.lua:2: rotate's axis must be"},
         {"no_return", "local r = gr.node('r')\n", "the scene must return its root node"},
@@ -252,4 +262,28 @@ TEST_CASE("an unknown mesh is an error at the line that names it, in a scene and
 
     test::write_file(dir / "bad.ani", "animator-ani 1\nmodel \"t\"\n  mesh \"teapot\"\nend\n");
     CHECK_THROWS_WITH(open_document(env.plugins, dir / "bad.ani"), Catch::Contains("bad.ani:3: unknown mesh \"teapot\""));
+}
+
+TEST_CASE("set_physics sets a node's rigid-body settings; a node without them has the defaults") {
+    // Read through the isolated child, so the scene wire carries them both ways.
+    const Document doc = load("rigid", R"(
+local root = gr.node('root')
+local a = gr.mesh('sphere', 'a')
+a:set_physics{dynamics = true, restitution = 0.8, friction = 0.3, rotates = true, angular_velocity = {0, 0, 6.28}}
+root:add_child(a)
+local b = gr.mesh('cube', 'b')
+b:set_physics{dynamics = true, mass = 2}
+root:add_child(b)
+return root
+)");
+    const Model &a = doc.models()[static_cast<size_t>(doc.find_model("a"))];
+    const Model &b = doc.models()[static_cast<size_t>(doc.find_model("b"))];
+    CHECK(a.restitution == 0.8);
+    CHECK(a.friction == 0.3);
+    CHECK(a.rotates);
+    CHECK(a.angular_velocity == glm::dvec3(0.0, 0.0, 6.28));
+    CHECK(b.restitution == 1.0);
+    CHECK(b.friction == 0.0);
+    CHECK_FALSE(b.rotates);
+    CHECK(b.angular_velocity == glm::dvec3(0.0));
 }
