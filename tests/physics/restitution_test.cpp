@@ -1,5 +1,6 @@
 // physics.custom with restitution, friction and spin (issue 18), through the real timeline,
 // against closed forms derived in the comments.
+#include "io/document_io.hpp"
 #include "io/environment.hpp"
 #include "timeline/timeline.hpp"
 
@@ -34,19 +35,26 @@ glm::dvec3 vec(const ani_vec3 &v) {
     return {v.x, v.y, v.z};
 }
 
+// A scene the project ships in assets/scenes (each test's numbers are the scene's own).
+Document shipped_scene(const std::string &name) {
+    return open_document(env().plugins, test::source_dir() / "assets/scenes" / name).document;
+}
+
+// A model's state at t = 0.
+const ModelState &start_of(const Document &doc, int model) {
+    return *doc.keyframes().front().states[static_cast<size_t>(model)];
+}
+
 } // namespace
 
 TEST_CASE("a ball dropped with e = 0.8 bounces at the closed-form times and comes to rest at the "
           "accumulation time, then stays still for 1000 s") {
-    const double r = unit_radius(), h = 1.5, e = 0.8;
-    Document doc;
-    Settings s = doc.settings();
-    s.max_time_ms = 1100000;
-    doc.set_settings(s);
-    doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, 10.0));
-    Model ball = model("ball", "sphere", true, true);
-    ball.restitution = e; // the floor's 1: the pair takes the lower
-    doc.add_model(ball, placed({0.3, h, 0.2}));
+    // The scene (the floor keeps e = 1: the pair takes the lower, the ball's).
+    const Document doc = shipped_scene("restitution_drop.lua");
+    const double r = unit_radius(), h = start_of(doc, 1).center.y, e = doc.models()[1].restitution;
+    REQUIRE(doc.models()[0].restitution == 1.0);
+    REQUIRE(e == 0.8);
+    REQUIRE(doc.settings().max_time_ms >= 1001000);
     auto timeline = timeline_of(doc);
     timeline->bake(1000.0);
     // First impact after falling h - r: t0 = sqrt(2 (h - r) / g) at v0 = g t0. It leaves bounce
@@ -87,19 +95,15 @@ TEST_CASE("a ball dropped with e = 0.8 bounces at the closed-form times and come
 
 TEST_CASE("two spheres of unequal mass meeting obliquely with e = 0.5: the normal relative "
           "velocity reversed and halved, the tangential kept, momentum kept") {
-    const double r = unit_radius(), ma = 2.0, mb = 1.0, e = 0.5;
-    Document doc;
-    Settings s = doc.settings();
-    s.gravity = 0.0;
-    doc.set_settings(s);
-    Model a = model("a", "sphere", true, false), b = model("b", "sphere", true, false);
-    a.mass = ma;
-    b.mass = mb;
-    b.restitution = e;
-    a.initial_velocity = {3, 0, 0};
-    const glm::dvec3 pa(-5, 0.6 * r, 0), pb(0, 0, 0), va(3, 0, 0);
-    doc.add_model(a, placed(pa));
-    doc.add_model(b, placed(pb));
+    const Document doc = shipped_scene("oblique_spheres.lua");
+    REQUIRE(doc.settings().gravity == 0.0);
+    const double r = unit_radius(), ma = doc.models()[0].mass, mb = doc.models()[1].mass,
+                 e = std::min(doc.models()[0].restitution, doc.models()[1].restitution);
+    REQUIRE(ma != mb);
+    REQUIRE(e == 0.5);
+    const glm::dvec3 pa = start_of(doc, 0).center, pb = start_of(doc, 1).center,
+                     va = doc.models()[0].initial_velocity;
+    REQUIRE(doc.models()[1].initial_velocity == glm::dvec3(0.0));
     auto timeline = timeline_of(doc);
     timeline->bake(10.0);
     REQUIRE(timeline->events().size() == 1);
@@ -128,22 +132,23 @@ TEST_CASE("a spinning ball hitting a rough floor obliquely leaves with the hand-
     // w' = (2 r w - 5 v_x) / (7 r). Slipping (mu = 0.1): J_t = -mu J_n, v_x' = v_x - 0.3,
     // w' = w + r J_t / I = w - 5 (0.3) / (2 r).
     const double r = unit_radius() * 0.5;
-    for (const double mu : {1.0, 0.1}) {
+    const Document scene = shipped_scene("spinning_ball.lua");
+    {
+        const Model &ball = scene.models()[1];
+        REQUIRE(scene.settings().gravity == 0.0);
+        REQUIRE(scene.models()[0].friction == 1.0);
+        REQUIRE((ball.mass == 2.0 && ball.restitution == 0.5 && ball.rotates));
+        REQUIRE(ball.angular_velocity == glm::dvec3(0, 0, 4));
+        REQUIRE(ball.initial_velocity == glm::dvec3(1, -2, 0));
+        REQUIRE(start_of(scene, 1).center == glm::dvec3(0, 2, 0));
+        REQUIRE(start_of(scene, 1).scale == glm::dvec3(0.5));
+    }
+    for (const double mu : {1.0, 0.1}) { // the scene's floor, and one that lets it slip
         CAPTURE(mu);
-        Document doc;
-        Settings s = doc.settings();
-        s.gravity = 0.0;
-        doc.set_settings(s);
-        Model floor = model("floor", "plane", false, false);
+        Document doc = scene;
+        Model floor = doc.models()[0];
         floor.friction = mu;
-        doc.add_model(floor, placed({0, 0, 0}, 10.0));
-        Model ball = model("ball", "sphere", true, false);
-        ball.mass = 2.0;
-        ball.restitution = 0.5;
-        ball.rotates = true;
-        ball.angular_velocity = {0, 0, 4};
-        ball.initial_velocity = {1, -2, 0};
-        doc.add_model(ball, placed({0, 2, 0}, 0.5));
+        doc.set_model(0, floor);
         auto timeline = timeline_of(doc);
         timeline->bake(3.0);
         REQUIRE(timeline->events().size() == 1);
