@@ -910,9 +910,9 @@ void Panels::model_panel(EditorSession &session, float width, float height, floa
             "its two models (CTRL+click to type a value above 2).");
         if (mixed_checkbox("Rotates", m.rotates, mixed(ModelField::Rotates))) done = ModelField::Rotates;
         tip("Its contacts turn it (off: only its keys turn it, as in the seed).");
-        if (let_go(vector3("Angular velocity (rad/s)", m.angular_velocity, mixed(ModelField::AngularVelocity))))
+        if (let_go(vector3("Spin (rad/s)", m.angular_velocity, mixed(ModelField::AngularVelocity))))
             done = ModelField::AngularVelocity;
-        tip("How fast the model turns at t = 0, radians per second about the world X, Y and Z axes\n"
+        tip("Angular velocity: how fast the model turns at t = 0, radians per second about the world\nX, Y and Z axes "
             "(6.28 is one turn a second; drag a number, or CTRL+click to type).");
     }
     ImGui::PopItemWidth();
