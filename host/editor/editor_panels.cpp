@@ -894,6 +894,27 @@ void Panels::model_panel(EditorSession &session, float width, float height, floa
     std::string transform_error;
     if (transform_panel_.draw(session, transform_error) || !transform_error.empty())
         commit(transform_error.empty(), transform_error);
+    // Last, so that the sections above keep their places.
+    const bool body_open = ImGui::CollapsingHeader("Rigid body", ImGuiTreeNodeFlags_DefaultOpen);
+    tip("How the model's contacts take energy and turn it (docs/physics.md). A contact uses the lower\n"
+        "restitution and the higher friction of its two models. Click to fold.");
+    if (body_open) {
+        if (let_go(slider("Restitution", m.restitution, 0.0, 1.0, "%.3f", 0, mixed(ModelField::Restitution))))
+            done = ModelField::Restitution;
+        tip("The fraction of the normal speed a contact gives back, 0 to 1: 1 elastic (the default),\n"
+            "0 plastic. A contact uses the lower restitution of its two models (CTRL+click to type).");
+        if (let_go(slider("Friction", m.friction, 0.0, 2.0, "%.3f", ImGuiSliderFlags_Logarithmic, mixed(ModelField::Friction))))
+            done = ModelField::Friction;
+        tip("Coulomb's coefficient mu (no unit, >= 0; 0 frictionless, the default): the tangential force\n"
+            "of a contact is at most mu times its normal force. A contact uses the higher friction of\n"
+            "its two models (CTRL+click to type a value above 2).");
+        if (mixed_checkbox("Rotates", m.rotates, mixed(ModelField::Rotates))) done = ModelField::Rotates;
+        tip("Its contacts turn it (off: only its keys turn it, as in the seed).");
+        if (let_go(vector3("Spin (rad/s)", m.angular_velocity, mixed(ModelField::AngularVelocity))))
+            done = ModelField::AngularVelocity;
+        tip("Angular velocity: how fast the model turns at t = 0, radians per second about the world\nX, Y and Z axes "
+            "(6.28 is one turn a second; drag a number, or CTRL+click to type).");
+    }
     ImGui::PopItemWidth();
     ImGui::End();
     if (done) {

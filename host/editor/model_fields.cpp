@@ -25,6 +25,10 @@ template <class M, class F> auto with_field(ModelField field, M &m, F &&f) {
     case ModelField::RefractiveIndex: return f(m.refractive_index);
     case ModelField::CollisionSound: return f(m.collision_sound);
     case ModelField::MovingSound: return f(m.moving_sound);
+    case ModelField::Restitution: return f(m.restitution);
+    case ModelField::Friction: return f(m.friction);
+    case ModelField::Rotates: return f(m.rotates);
+    case ModelField::AngularVelocity: return f(m.angular_velocity);
     }
     throw DocumentError("unknown model field " + std::to_string(static_cast<int>(field)));
 }

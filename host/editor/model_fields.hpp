@@ -28,6 +28,11 @@ enum class ModelField {
     RefractiveIndex,
     CollisionSound,
     MovingSound,
+    // Rigid body (issue 18), after the others so that the earlier keep their values.
+    Restitution,
+    Friction,
+    Rotates,
+    AngularVelocity, // at t = 0, rad/s about world axes
 };
 
 // Copies `field` of `from` into `to`, and nothing else.

@@ -10,6 +10,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <limits>
+
 using namespace animator;
 using namespace animator::test;
 
@@ -309,4 +311,70 @@ TEST_CASE("a hidden model is still simulated: the bake, its collisions and the e
     CHECK(hit_floor);
     CHECK(hidden.document() == shown.document());
     CHECK_FALSE(hidden.dirty());
+}
+
+TEST_CASE("the rigid-body fields: each a multi-edit of one undo, mixed when they differ, bad values refused",
+          "[session][outliner]") {
+    Environment env;
+    EditorSession s(env);
+    std::string error;
+    REQUIRE(s.open(simple_lua(), error));
+    const int ball = index_of(s, "ball"), cube = index_of(s, "cube");
+    const std::set<int> both{ball, cube};
+    const Model b0 = model(s, "ball"), c0 = model(s, "cube");
+    // simple.lua sets none of them: the defaults, so none is mixed yet.
+    for (ModelField f : {ModelField::Restitution, ModelField::Friction, ModelField::Rotates, ModelField::AngularVelocity})
+        CHECK_FALSE(field_mixed(s.document(), both, f));
+
+    // The draft is the cube's with new rigid-body values; each field goes alone to both models.
+    Model draft = c0;
+    draft.restitution = 0.5;
+    draft.friction = 0.75;
+    draft.rotates = true;
+    draft.angular_velocity = {0.0, 0.0, 6.28};
+    draft.mass = 42.0; // not set by any of these edits
+    REQUIRE(s.set_field(both, ModelField::Restitution, draft, &error));
+    CHECK(model(s, "ball").restitution == 0.5);
+    CHECK(model(s, "cube").restitution == 0.5);
+    CHECK(model(s, "ball").friction == 0.0);
+    REQUIRE(s.set_field(both, ModelField::Friction, draft, &error));
+    REQUIRE(s.set_field(both, ModelField::Rotates, draft, &error));
+    REQUIRE(s.set_field(both, ModelField::AngularVelocity, draft, &error));
+    for (const char *name : {"ball", "cube"}) {
+        CAPTURE(name);
+        const Model &m = model(s, name);
+        CHECK(m.friction == 0.75);
+        CHECK(m.rotates);
+        CHECK(m.angular_velocity == glm::dvec3(0.0, 0.0, 6.28));
+    }
+    CHECK(model(s, "ball").mass == b0.mass);
+    CHECK(model(s, "ball").material == b0.material);
+    CHECK(model(s, "ball").dynamics == b0.dynamics);
+
+    // Set on one only, a field is mixed among the two.
+    Model one = draft;
+    one.friction = 1.25;
+    REQUIRE(s.set_field({ball}, ModelField::Friction, one, &error));
+    CHECK(field_mixed(s.document(), both, ModelField::Friction));
+    CHECK_FALSE(field_mixed(s.document(), both, ModelField::Restitution));
+
+    // Each was one edit: five undos give the models back as they were.
+    for (int i = 0; i < 5; ++i) REQUIRE(s.undo());
+    CHECK_FALSE(s.can_undo());
+    CHECK(model(s, "ball") == b0);
+    CHECK(model(s, "cube") == c0);
+
+    // Values the document refuses change no model and say why.
+    Model bad = draft;
+    bad.restitution = 1.5;
+    CHECK_FALSE(s.set_field(both, ModelField::Restitution, bad, &error));
+    CHECK_THAT(error, Catch::Contains("restitution"));
+    bad.friction = -0.1;
+    CHECK_FALSE(s.set_field(both, ModelField::Friction, bad, &error));
+    CHECK_THAT(error, Catch::Contains("friction"));
+    bad.angular_velocity = {0.0, std::numeric_limits<double>::infinity(), 0.0};
+    CHECK_FALSE(s.set_field(both, ModelField::AngularVelocity, bad, &error));
+    CHECK_THAT(error, Catch::Contains("angular velocity"));
+    CHECK(model(s, "ball") == b0);
+    CHECK_FALSE(s.can_undo());
 }
