@@ -158,7 +158,10 @@ TEST_CASE("a cancelled render stops early, leaves its frames and no zombie") {
     OutputJob job;
     REQUIRE(job.start(animator_exe(), render_arguments(r, snapshot.file())));
     const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(300);
-    while (job.poll() && job.frames_done() < 3 && std::chrono::steady_clock::now() < limit)
+    // "frame K of N" says a frame is drawn; its PNG is written behind it, later on a busy
+    // machine: cancel once one is on disk.
+    while (job.poll() && (job.frames_done() < 3 || count_pngs(r.out) == 0) &&
+           std::chrono::steady_clock::now() < limit)
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     REQUIRE(job.running());
     const pid_t pid = job.pid();
