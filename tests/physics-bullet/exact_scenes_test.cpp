@@ -208,7 +208,7 @@ TEST_CASE("a ball with restitution 0.8 on a floor of 1 bounces at t0 (1 + 2 e (1
     CHECK(custom.error < 1e-9);
     CHECK(custom.error2 < 1e-9);
     CHECK(custom.error3 < 1e-9);
-    // Bullet (measured: times 0.038, apexes 0.035, rest 0.42 at 1/60 s; 0.0084, 0.0049, 0.085 at
+    // Bullet (measured: times 0.038, apexes 0.15, rest 0.42 at 1/60 s; 0.0084, 0.0049, 0.085 at
     // 1/240 s): closer at 1/240 s than at 1/60 s.
     const Measured coarse = restitution_drop(kSteps[0]), fine = restitution_drop(kSteps[1]);
     INFO("bullet 1/60: " << coarse.error << ", " << coarse.error2 << ", " << coarse.error3
