@@ -26,6 +26,18 @@ struct Measured {
 //    relative apex error |y* - h| / h; error2: relative error of the mean bounce period against
 //    2 sqrt(2 (h - r) / G).
 Measured drop_on_plane(double dt, const std::string &backend = kBullet);
+// 1b. A ball (r = 0.5) with restitution 0.8 (the floor keeps 1: the lower counts) dropped from
+//    1.5 m (d = h - r = 1 m above its contact height) on a floor, baked 1 s past the accumulation
+//    time T = t0 (1 + e) / (1 - e), t0 = sqrt(2 d / G). error: largest relative error of the
+//    first kRestitutionBounces contact times (the timeline's events) against t_k = t0 (1 + 2 e
+//    (1 - e^k) / (1 - e)), k = 0, 1, ..., event k against t_k (a bounce not reported shifts the
+//    rest: large errors), or 1 when fewer are reported; error2: largest relative error of the
+//    first 5 apexes (the highest point between the exact t_(k-1) and t_k) against e^(2k) d above
+//    the contact height; error3: how far it is
+//    from resting on the floor after T, the larger of |height - r| (m) and |v| (m/s), at 1/100 s
+//    samples.
+constexpr int kRestitutionBounces = 8;
+Measured restitution_drop(double dt, const std::string &backend = kBullet);
 // 2. Two spheres (r = 0.5, masses 1 and 3) meeting without gravity: head-on (offset 0), oblique
 //    (offset 0.6 r) and slowly (relative speed 0.15 m/s, offset 0.3 r). error: largest velocity
 //    error after the contact over both, relative to the relative speed.
