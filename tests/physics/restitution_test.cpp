@@ -479,3 +479,44 @@ TEST_CASE("a cube sliding obliquely into a rough wall with e = 0.5 leaves with h
     CHECK(std::abs(v.z - (1.0 - mu * (1.0 + e) * 2.0)) < 1e-12);
     CHECK(timeline->rotations(1).empty());
 }
+
+TEST_CASE("a cube thrown onto a rough floor with e = 0.5 loses speed at each bounce by friction, "
+          "then slides on the floor at the speed the bounces left") {
+    // Level floor, mu = 0.1 (the floor's), e = 0.5 (the cube's), thrown at u = 3 m/s along x from
+    // height h. Bounce k meets the floor at normal speed e^k v0 and takes the normal impulse
+    // (1 + e) e^k v0 per unit mass; while it slips, friction takes mu times that off the speed
+    // along x (it does not turn: the slip is the centre's). All bounces together take
+    // mu (1 + e) v0 / (1 - e) = 1.76 < u, so it never sticks: it ends sliding at
+    // u - mu (1 + e) v0 / (1 - e), less what the bounces below the Zeno threshold would have
+    // taken, at most mu (1 + e) v_z / (1 - e) with v_z^2 / (2 g) <= 1e-9 max(1, |centre|).
+    const double h = 2.0, half = 0.25, e = 0.5, mu = 0.1, u = 3.0;
+    Document doc;
+    Model floor = model("floor", "plane", false, false);
+    floor.friction = mu;
+    doc.add_model(floor, placed({0, 0, 0}, glm::dvec3(100.0)));
+    Model cube = model("cube", "cube", true, true);
+    cube.restitution = e;
+    cube.initial_velocity = {u, 0, 0};
+    doc.add_model(cube, placed({0.3, h, -0.2}, glm::dvec3(half)));
+    auto timeline = timeline_of(doc);
+    timeline->bake(20.0);
+    const double t0 = std::sqrt(2.0 * (h - half) / G), v0 = G * t0;
+    const double rest = t0 * (1.0 + e) / (1.0 - e);
+    const double slide = u - mu * (1.0 + e) * v0 / (1.0 - e);
+    // Just after the first bounce: u - mu (1 + e) v0 along x, e v0 up.
+    const Frame first = timeline->evaluate(t0 + 1e-3);
+    CHECK(std::abs(first.models[1].velocity.x - (u - mu * (1.0 + e) * v0)) < 1e-12);
+    CHECK(std::abs(first.models[1].velocity.y - (e * v0 - G * 1e-3)) < 1e-9);
+    for (double t : {rest + 1e-3, 5.0, 20.0}) {
+        CAPTURE(t);
+        const Frame f = timeline->evaluate(t);
+        const double vz_max =
+            std::sqrt(2.0 * G * 1e-9 * std::max(1.0, glm::length(f.models[1].center)));
+        CHECK(f.models[1].center.y == Approx(half).epsilon(1e-12)); // on the floor, not through
+        CHECK(f.models[1].velocity.y == 0.0);
+        CHECK(f.models[1].velocity.x >= slide);
+        CHECK(f.models[1].velocity.x - slide <= mu * (1.0 + e) * vz_max / (1.0 - e));
+    }
+    CHECK(timeline->events().size() < 100);
+    CHECK(timeline->rotations(1).empty());
+}
