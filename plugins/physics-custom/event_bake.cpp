@@ -1801,8 +1801,8 @@ class EventBake {
         e.normal = ani(n);
         e.point = ani(contact.point);
         e.speed = std::max(0.0, -glm::dot(v, n));
-        // Off a model without Dynamics: a reflection; without Dynamics itself it stops. A sphere
-        // with restitution or friction: the contact impulse (sphere_response.inc).
+        // Off a model without Dynamics: a reflection; without Dynamics itself it stops. With
+        // restitution or friction: the contact impulse (sphere_response.inc, mesh_response.inc).
         if (!b.dynamics || !sphere_responds(b, scene_->models[o.model]))
             restart(b, t, reflect(v, n), !b.dynamics);
         else if (respond_to_obstacle(i, o, n, v, t)) {
@@ -1841,8 +1841,7 @@ class EventBake {
                         free.dynamics ? reflect_off_moving_wall(v_free, v_wall, n_free)
                                       : glm::dvec3(0.0),
                         !free.dynamics);
-        } else if (b.dynamics && o.dynamics && b.sphere && o.sphere &&
-                   sphere_responds(b, scene_->models[o.model])) {
+        } else if (b.dynamics && o.dynamics && sphere_responds(b, scene_->models[o.model])) {
             respond_to_sphere(b, v, o, vo, n, t);
         } else if (b.dynamics && o.dynamics) {
             const double ma = scene_->models[b.model].desc->mass,
@@ -1870,6 +1869,7 @@ class EventBake {
     }
 
 #include "sphere_response.inc"
+#include "mesh_response.inc"
 
     void report(const ani_collision_event &e) {
         auto finite = [](const ani_vec3 &v) {

@@ -365,3 +365,163 @@ TEST_CASE("an open mesh with Rotates on is refused naming the model; a cube with
               return l.find("'cube' has Rotates on, but physics.custom turns only spheres") != std::string::npos;
           }) == 1);
 }
+
+TEST_CASE("a cube dropped flat with e = 0.5 bounces at the closed-form times, comes to rest at the "
+          "accumulation time without turning, then stays still for 1000 s") {
+    // The cube mesh spans [-1, 1]: scaled 0.25, its bottom face is 0.25 below its center, and it
+    // does not turn (no Rotates): its centre moves as a ball's of radius 0.25 would, so the
+    // closed forms are the ball's (see the e = 0.8 ball above) with h - half for h - r.
+    const double h = 2.0, half = 0.25, e = 0.5;
+    Document doc;
+    Settings s = doc.settings();
+    s.max_time_ms = 1100000;
+    doc.set_settings(s);
+    doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, glm::dvec3(10.0)));
+    Model cube = model("cube", "cube", true, true);
+    cube.restitution = e;
+    doc.add_model(cube, placed({0.3, h, -0.2}, glm::dvec3(half)));
+    auto timeline = timeline_of(doc);
+    timeline->bake(1000.0);
+    const double t0 = std::sqrt(2.0 * (h - half) / G), v0 = G * t0;
+    const double rest = t0 * (1.0 + e) / (1.0 - e);
+    const auto &events = timeline->events();
+    REQUIRE(events.size() >= 10);
+    CHECK(events.size() < 100); // the bounces below the Zeno threshold are not followed
+    double worst_t = 0.0, worst_v = 0.0;
+    for (size_t k = 0; k < 10; ++k) {
+        const double ek = std::pow(e, static_cast<double>(k));
+        const double tk = t0 * (1.0 + 2.0 * e * (1.0 - ek) / (1.0 - e));
+        worst_t = std::max(worst_t, std::abs(events[k].t - tk));
+        worst_v = std::max(worst_v, std::abs(events[k].speed - ek * v0));
+        CHECK(std::abs(std::abs(events[k].normal.y) - 1.0) < 1e-12);
+    }
+    CAPTURE(worst_t, worst_v, events.size());
+    CHECK(worst_t < 1e-9);
+    CHECK(worst_v < 1e-9);
+    // Just after the first bounce it rises at e v0, straight up.
+    const Frame up = timeline->evaluate(t0 + 0.01);
+    CHECK(std::abs(up.models[1].velocity.y - (e * v0 - G * 0.01)) < 1e-9);
+    CHECK(std::abs(up.models[1].velocity.x) < 1e-15);
+    CHECK(std::abs(up.models[1].velocity.z) < 1e-15);
+    // At rest from the accumulation time, its bottom face exactly on the floor.
+    const ani_motion_segment *still = segment_at(*timeline, 1, rest + 1e-3);
+    REQUIRE(still);
+    CAPTURE(still->t0 - rest);
+    CHECK(std::abs(still->t0 - rest) < 1e-9);
+    CHECK(vec(still->v0) == glm::dvec3(0.0));
+    CHECK(vec(still->a) == glm::dvec3(0.0));
+    CHECK(still->p0.y == Approx(half).epsilon(1e-12));
+    CHECK(events.back().t < rest);
+    CHECK(timeline->rotations(1).empty());
+    const glm::dvec3 at_rest = timeline->evaluate(rest + 1e-3).models[1].center;
+    for (double t : {rest + 1.0, 10.0, 100.0, 567.89, 1000.0}) {
+        const Frame f = timeline->evaluate(t);
+        CHECK(f.models[1].center == at_rest); // bit for bit
+        CHECK(f.models[1].velocity == glm::dvec3(0.0));
+    }
+}
+
+TEST_CASE("two cubes of unequal mass meeting face to face with e = 0.5 leave with the velocities "
+          "of Newton's law, momentum kept") {
+    // Along x, a (mass ma, speed u) meets b (mass mb, at rest). Newton's law with the impulse
+    // j on b: ma va' + mb vb' = ma u and vb' - va' = e u, so vb' = (1 + e) ma u / (ma + mb) and
+    // va' = (ma - e mb) u / (ma + mb). Faces 0.25 from each centre: they touch when the centres
+    // are 0.5 apart, at t = (3 - 0.5) / u.
+    const double ma = 2.0, mb = 1.0, u = 3.0, e = 0.5, half = 0.25;
+    Document doc;
+    Settings s = doc.settings();
+    s.gravity = 0.0;
+    doc.set_settings(s);
+    Model a = model("a", "cube", true, false), b = model("b", "cube", true, false);
+    a.mass = ma;
+    b.mass = mb;
+    a.restitution = e; // b's 1: the pair takes the lower
+    a.initial_velocity = {u, 0, 0};
+    doc.add_model(a, placed({-3, 0, 0}, glm::dvec3(half)));
+    doc.add_model(b, placed({0, 0, 0}, glm::dvec3(half)));
+    auto timeline = timeline_of(doc);
+    timeline->bake(4.0);
+    REQUIRE(timeline->events().size() == 1);
+    CHECK(timeline->events()[0].t == Approx((3.0 - 2.0 * half) / u).epsilon(1e-11));
+    const Frame f = timeline->evaluate(4.0);
+    const glm::dvec3 va = f.models[0].velocity, vb = f.models[1].velocity;
+    CHECK(std::abs(va.x - (ma - e * mb) * u / (ma + mb)) < 1e-12);
+    CHECK(std::abs(vb.x - (1.0 + e) * ma * u / (ma + mb)) < 1e-12);
+    CHECK(std::abs((vb.x - va.x) - e * u) < 1e-12);
+    CHECK(std::abs(ma * va.x + mb * vb.x - ma * u) < 1e-12);
+    CHECK(glm::length(glm::dvec3(0.0, va.y, va.z)) < 1e-15);
+    CHECK(glm::length(glm::dvec3(0.0, vb.y, vb.z)) < 1e-15);
+    CHECK(timeline->rotations(0).empty());
+    CHECK(timeline->rotations(1).empty());
+}
+
+TEST_CASE("a cube sliding obliquely into a rough wall with e = 0.5 leaves with half its normal "
+          "speed and the slip friction took off") {
+    // No gravity. The cube (half side 0.25) moves at v = (2, 0, 1) toward a static wall whose
+    // face is the plane x = 2.9, with friction mu = 0.1 (the cube's 0: the pair takes the
+    // higher). Normal impulse per unit mass (1 + e) 2 = 3; friction at most mu 3 = 0.3 < 1, the
+    // slip along z, so it slips: v' = (-e 2, 0, 1 - 0.3) = (-1, 0, 0.7). Contact at
+    // t = (2.9 - 0.25) / 2.
+    const double e = 0.5, mu = 0.1, half = 0.25;
+    Document doc;
+    Settings s = doc.settings();
+    s.gravity = 0.0;
+    doc.set_settings(s);
+    Model wall = model("wall", "cube", false, false);
+    wall.friction = mu;
+    doc.add_model(wall, placed({3, 0, 0}, {0.1, 2, 2}));
+    Model cube = model("cube", "cube", true, false);
+    cube.restitution = e;
+    cube.initial_velocity = {2, 0, 1};
+    doc.add_model(cube, placed({0, 0, 0}, glm::dvec3(half)));
+    auto timeline = timeline_of(doc);
+    timeline->bake(3.0);
+    REQUIRE(timeline->events().size() == 1);
+    CHECK(timeline->events()[0].t == Approx((2.9 - half) / 2.0).epsilon(1e-11));
+    const glm::dvec3 v = timeline->evaluate(3.0).models[1].velocity;
+    CHECK(std::abs(v.x - (-e * 2.0)) < 1e-12);
+    CHECK(std::abs(v.y) < 1e-15);
+    CHECK(std::abs(v.z - (1.0 - mu * (1.0 + e) * 2.0)) < 1e-12);
+    CHECK(timeline->rotations(1).empty());
+}
+
+TEST_CASE("a cube thrown onto a rough floor with e = 0.5 loses speed at each bounce by friction, "
+          "then slides on the floor at the speed the bounces left") {
+    // Level floor, mu = 0.1 (the floor's), e = 0.5 (the cube's), thrown at u = 3 m/s along x from
+    // height h. Bounce k meets the floor at normal speed e^k v0 and takes the normal impulse
+    // (1 + e) e^k v0 per unit mass; while it slips, friction takes mu times that off the speed
+    // along x (it does not turn: the slip is the centre's). All bounces together take
+    // mu (1 + e) v0 / (1 - e) = 1.76 < u, so it never sticks: it ends sliding at
+    // u - mu (1 + e) v0 / (1 - e), less what the bounces below the Zeno threshold would have
+    // taken, at most mu (1 + e) v_z / (1 - e) with v_z^2 / (2 g) <= 1e-9 max(1, |centre|).
+    const double h = 2.0, half = 0.25, e = 0.5, mu = 0.1, u = 3.0;
+    Document doc;
+    Model floor = model("floor", "plane", false, false);
+    floor.friction = mu;
+    doc.add_model(floor, placed({0, 0, 0}, glm::dvec3(100.0)));
+    Model cube = model("cube", "cube", true, true);
+    cube.restitution = e;
+    cube.initial_velocity = {u, 0, 0};
+    doc.add_model(cube, placed({0.3, h, -0.2}, glm::dvec3(half)));
+    auto timeline = timeline_of(doc);
+    timeline->bake(20.0);
+    const double t0 = std::sqrt(2.0 * (h - half) / G), v0 = G * t0;
+    const double rest = t0 * (1.0 + e) / (1.0 - e);
+    const double slide = u - mu * (1.0 + e) * v0 / (1.0 - e);
+    // Just after the first bounce: u - mu (1 + e) v0 along x, e v0 up.
+    const Frame first = timeline->evaluate(t0 + 1e-3);
+    CHECK(std::abs(first.models[1].velocity.x - (u - mu * (1.0 + e) * v0)) < 1e-12);
+    CHECK(std::abs(first.models[1].velocity.y - (e * v0 - G * 1e-3)) < 1e-9);
+    for (double t : {rest + 1e-3, 5.0, 20.0}) {
+        CAPTURE(t);
+        const Frame f = timeline->evaluate(t);
+        const double vz_max =
+            std::sqrt(2.0 * G * 1e-9 * std::max(1.0, glm::length(f.models[1].center)));
+        CHECK(f.models[1].center.y == Approx(half).epsilon(1e-12)); // on the floor, not through
+        CHECK(f.models[1].velocity.y == 0.0);
+        CHECK(f.models[1].velocity.x >= slide);
+        CHECK(f.models[1].velocity.x - slide <= mu * (1.0 + e) * vz_max / (1.0 - e));
+    }
+    CHECK(timeline->events().size() < 100);
+    CHECK(timeline->rotations(1).empty());
+}
