@@ -19,14 +19,6 @@ using namespace animator::bullet_test;
 
 namespace {
 
-Document no_gravity() {
-    Document doc;
-    Settings s = doc.settings();
-    s.gravity = 0.0;
-    doc.set_settings(s);
-    return doc;
-}
-
 // The orientation the rotation segments of `model` give at t (the segment covering t, turned by
 // its constant angular velocity), and whether one covers it.
 bool orientation_at(const Timeline &t, int model, double time, glm::dquat *q) {

@@ -26,6 +26,8 @@ std::vector<std::string> take_log();
 // A timeline of `doc` with `backend` ("physics.bullet" or "physics.custom"), meshes loaded.
 std::unique_ptr<Timeline> timeline_of(const Document &doc,
                                       const std::string &backend = "physics.bullet");
+// An empty document whose gravity is 0.
+Document no_gravity();
 // The document with physics.bullet's parameter `param` set.
 Document with_param(Document doc, const std::string &param, double value);
 

@@ -25,14 +25,6 @@ bool logged(const std::vector<std::string> &lines, const std::string &a,
     });
 }
 
-Document no_gravity() {
-    Document doc;
-    Settings s = doc.settings();
-    s.gravity = 0.0;
-    doc.set_settings(s);
-    return doc;
-}
-
 Document long_document() {
     Document doc;
     Settings s = doc.settings();

@@ -37,6 +37,14 @@ std::unique_ptr<Timeline> timeline_of(const Document &doc, const std::string &ba
     return t;
 }
 
+Document no_gravity() {
+    Document doc;
+    Settings s = doc.settings();
+    s.gravity = 0.0;
+    doc.set_settings(s);
+    return doc;
+}
+
 Document with_param(Document doc, const std::string &param, double value) {
     Settings s = doc.settings();
     s.params["physics.bullet"][param] = {value, 0.0, 0.0, 0.0};

@@ -21,14 +21,6 @@ glm::dvec3 vec(const ani_vec3 &v) {
     return {v.x, v.y, v.z};
 }
 
-Document no_gravity() {
-    Document doc;
-    Settings s = doc.settings();
-    s.gravity = 0.0;
-    doc.set_settings(s);
-    return doc;
-}
-
 // Bakes and times.
 template <class F> Measured timed_bake(Timeline &t, double until, F &&then) {
     Measured m;
