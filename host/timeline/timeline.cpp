@@ -57,15 +57,6 @@ struct BakeContext {
 };
 
 // Euler angles (degrees in [0, 360), the documents' X-Y-Z convention) of a rotation segment at t.
-// The world orientation of a rotation segment at t: q0 followed by a turn about w.
-glm::dquat orientation_at(const ani_rotation_segment &s, double t) {
-    const glm::dquat q0(s.q0.w, s.q0.x, s.q0.y, s.q0.z);
-    const glm::dvec3 w(s.w.x, s.w.y, s.w.z);
-    const double speed = glm::length(w);
-    const glm::dquat turn = speed > 0.0 ? glm::angleAxis(speed * (t - s.t0), w / speed) : glm::dquat(1.0, 0.0, 0.0, 0.0);
-    return glm::normalize(turn * q0);
-}
-
 glm::dvec3 angles_at(const ani_rotation_segment &s, double t) {
     const glm::dmat4 m = glm::mat4_cast(orientation_at(s, t));
     double x = 0.0, y = 0.0, z = 0.0;
@@ -79,6 +70,14 @@ glm::dvec3 angles_at(const ani_rotation_segment &s, double t) {
 }
 
 } // namespace
+
+glm::dquat orientation_at(const ani_rotation_segment &s, double t) {
+    const glm::dquat q0(s.q0.w, s.q0.x, s.q0.y, s.q0.z);
+    const glm::dvec3 w(s.w.x, s.w.y, s.w.z);
+    const double speed = glm::length(w);
+    const glm::dquat turn = speed > 0.0 ? glm::angleAxis(speed * (t - s.t0), w / speed) : glm::dquat(1.0, 0.0, 0.0, 0.0);
+    return glm::normalize(turn * q0);
+}
 
 Timeline::Timeline(const Document &doc, PluginRegistry &plugins, const std::string &backend)
     : doc_(doc), plugins_(plugins), interpolators_(Interpolators::load(plugins, doc)),

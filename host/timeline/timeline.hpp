@@ -8,6 +8,8 @@
 #include "document/document_view.hpp"
 #include "timeline/keyed_motion.hpp"
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <functional>
 #include <limits>
 #include <map>
@@ -31,6 +33,9 @@ struct BakeStats {
     double seconds_baked = 0.0; // simulated time covered by all bake calls
     std::map<std::string, double> backend_counts; // the backend's own counts, summed by name
 };
+
+// The world orientation of a rotation segment at t: q0 followed by a turn of |w| (t - t0) about w.
+glm::dquat orientation_at(const ani_rotation_segment &s, double t);
 
 class Timeline {
   public:
@@ -83,13 +88,13 @@ class Timeline {
     const BakeStats &stats() const { return stats_; }
     const std::string &backend_id() const { return physics_->info().id; }
     const KeyedMotion &keyed() const { return *keyed_; }
+    // The backend's rotation segment that turns the model at t, if one does.
+    const ani_rotation_segment *rotation_at(int model, double t) const;
 
   private:
     void truncate(double from);
     ani_body_state state_at(int model, double t) const;
     const ani_motion_segment *segment_at(int model, double t) const;
-    // The backend's rotation segment that turns the model at t, if one does.
-    const ani_rotation_segment *rotation_at(int model, double t) const;
     void run_bake(double from, double until, const std::function<bool(double)> &progress);
 
     Document doc_;

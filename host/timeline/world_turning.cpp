@@ -1,6 +1,5 @@
 #include "timeline/world_turning.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace animator {
@@ -8,13 +7,6 @@ namespace animator {
 namespace {
 
 const glm::dvec3 kX{1.0, 0.0, 0.0}, kY{0.0, 1.0, 0.0}, kZ{0.0, 0.0, 1.0};
-
-// The backend's segment turning the model at t, as Timeline::rotation_at finds it.
-const ani_rotation_segment *segment_at(const std::vector<ani_rotation_segment> &turns, double t) {
-    const auto r = std::upper_bound(turns.begin(), turns.end(), t,
-                                    [](double time, const ani_rotation_segment &x) { return time < x.t0; });
-    return r != turns.begin() && t <= (r - 1)->t1 ? &*(r - 1) : nullptr;
-}
 
 // The keyed rotation R = Rx(a) Ry(b) Rz(c) in the parent's frame, and its angular velocity
 // there. From R' R^T = [w]x for a product A B C: w = a' e_x + A (b' e_y) + A B (c' e_z), exact
@@ -45,12 +37,9 @@ std::vector<Turning> world_turnings(const Timeline &timeline, const Frame &frame
         for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
             const size_t m = *it;
             Turning &o = out[m];
-            if (const ani_rotation_segment *s = segment_at(timeline.rotations(static_cast<int>(m)), t)) {
-                const glm::dvec3 w(s->w.x, s->w.y, s->w.z);
-                const double speed = glm::length(w);
-                const glm::dquat q0(s->q0.w, s->q0.x, s->q0.y, s->q0.z);
-                o.q = speed > 0.0 ? glm::angleAxis(speed * (t - s->t0), w / speed) * q0 : q0;
-                o.w = w;
+            if (const ani_rotation_segment *s = timeline.rotation_at(static_cast<int>(m), t)) {
+                o.q = orientation_at(*s, t);
+                o.w = glm::dvec3(s->w.x, s->w.y, s->w.z);
             } else {
                 o = keyed(frame.models[m]);
                 if (models[m].parent >= 0) {
