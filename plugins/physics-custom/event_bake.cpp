@@ -13,8 +13,10 @@
 #include "polynomial.hpp"
 #include "response.hpp"
 #include "scene_print.hpp"
+#include "simultaneous_contact.hpp"
 #include "spin.hpp"
 #include "time_of_impact.hpp"
+#include "turning_contact.hpp"
 #include "zeno.hpp"
 
 #include <animator/plugin_cpp.hpp>
@@ -98,12 +100,26 @@ struct Body {
     Material material;             // restitution, friction, turning (issue 18)
     Spin spin;                  // a free sphere that rotates: its orientation and angular velocity
     double settles_at = kNever; // put on its support by the Zeno rule: the accumulation time
+    // A model that is not a sphere and turns from its contacts once free (Rotates on; a
+    // spherical top whose centre of mass is its origin, such as a cube; check_turning): its
+    // vertices scaled as its keys leave it (about its centre of mass, which its origin is), the
+    // farthest of them, its inverse moment of inertia, and its keys' scale, which its turn
+    // (spin) is applied after.
+    bool turns = false;
+    std::vector<glm::dvec3> turning_vertices;
+    double turning_reach = 0.0;
+    double inv_inertia = 0.0;
+    glm::dmat3 scale{1.0};
 
     bool keyed() const { return mode == Mode::kKeyed; }
     bool free_sphere() const { return sphere && mode == Mode::kFree; }
+    // Turning from its contacts now (free after its last key): its pose is its spin's.
+    bool turning() const { return turns && spin.on; }
     bool still() const {
-        return mode == Mode::kFree && (motion == ANI_MOTION_REST ||
-                                       (path.v == glm::dvec3(0.0) && path.a == glm::dvec3(0.0)));
+        return mode == Mode::kFree &&
+               (motion == ANI_MOTION_REST ||
+                (path.v == glm::dvec3(0.0) && path.a == glm::dvec3(0.0))) &&
+               (!turning() || spin.w == glm::dvec3(0.0));
     }
 };
 
@@ -146,7 +162,8 @@ struct Predicted {
     int other = -1;             // the other body, or the obstacle
     uint64_t other_version = 0; // the other body's version when predicted
     Contact contact;
-    Exit exit; // for kCell
+    std::vector<glm::dvec3> points; // a turning model's: every point touching with the contact
+    Exit exit;                      // for kCell
 };
 
 Predicted predicted(double t, EventKind kind, int other = -1, uint64_t other_version = 0,
@@ -311,7 +328,8 @@ class EventBake {
             const std::optional<double> radius =
                 sphere_radius(i, free_now ? t_begin_ : keyed_until);
             if (solid && (movable || keyed_here)) {
-                check_turning(i, radius.has_value());
+                const bool turns =
+                    check_turning(i, radius.has_value(), free_now ? t_begin_ : span.end);
                 is_body_.back() = true;
                 Body b;
                 b.model = i;
@@ -322,6 +340,7 @@ class EventBake {
                 b.dynamics = d.dynamics != 0;
                 b.material = material;
                 b.keys_end = free_now ? t_begin_ : span.end;
+                if (turns) set_turning(b, b.keys_end);
                 bodies_.push_back(b);
                 Body &body = bodies_.back();
                 if (released) {
@@ -555,7 +574,7 @@ class EventBake {
         b.settles_at = kNever;
         start_spin(b, t);
         b.shape.reset();
-        if (!b.sphere && t >= b.keys_end) { // its keys no longer turn or scale it
+        if (!b.sphere && !b.turns && t >= b.keys_end) { // its keys no longer turn or scale it
             const ani_model_state state = keyed_state(*scene_, b.model, t, nullptr);
             b.shape =
                 build_shape(b.model, ani(glm::dvec3(0.0)), linear_part(state), glm::dvec3(0.0));
@@ -649,7 +668,8 @@ class EventBake {
         glm::dvec3 v;
         const ani_model_state s = keyed_state(*scene_, b.model, t, &v);
         Pose p;
-        p.linear = linear_part(s);
+        p.linear = b.turning() ? glm::dmat3(glm::mat3_cast(b.spin.at(t))) * b.scale
+                               : linear_part(s);
         if (b.keyed()) {
             p.center = vec(s.center);
             p.velocity = v;
@@ -737,6 +757,9 @@ class EventBake {
     double point_speed(const Body &b, double t, double dt) const {
         if (b.free_sphere())
             return glm::length(b.path.velocity(t - b.t0)) + glm::length(b.path.a) * dt;
+        if (b.turning()) // its centre's speed, and |w| times its reach from its centre of mass
+            return glm::length(b.path.velocity(t - b.t0)) + glm::length(b.path.a) * dt +
+                   glm::length(b.spin.w) * b.turning_reach;
         const double h = std::max(1e-6, dt);
         const Pose p = pose(b, t), q = pose(b, t + h);
         const double reach = b.sphere ? 0.0 : b.reach;
@@ -749,6 +772,8 @@ class EventBake {
     // The velocity of the material point of body b at `point` at time t (a keyed model turning
     // or scaling moves each of its points differently).
     glm::dvec3 point_velocity(const Body &b, const glm::dvec3 &point, double t) const {
+        if (b.turning())
+            return b.path.velocity(t - b.t0) + glm::cross(b.spin.w, point - b.path.at(t - b.t0));
         if (!b.keyed()) return b.path.velocity(t - b.t0); // free: it translates
         const Pose p = pose(b, t);
         if (b.sphere) return p.velocity;
@@ -1052,7 +1077,8 @@ class EventBake {
                 collide_bodies(i, other, seen.contact, t);
                 if (predicted_.size() == bodies_.size()) predict(other, t);
             } else {
-                collide_obstacle(i, obstacles_[static_cast<size_t>(-1 - other)], seen.contact, t);
+                collide_obstacle(i, obstacles_[static_cast<size_t>(-1 - other)], seen.contact, {},
+                                 t);
             }
         } else if (along <= still && glm::dot(pull, n) < 0.0 && !o) {
             // Pressed into a static model with no speed: held where it is.
@@ -1353,6 +1379,14 @@ class EventBake {
         for (size_t o = 0; o < obstacles_.size(); ++o) {
             if (b.ignored_obstacles > 0 && is_ignored(i, -1 - static_cast<int>(o))) continue;
             const Obstacle &ob = obstacles_[o];
+            if (b.turning()) {
+                // Resting or sliding on it without turning: it leaves it by predict_leave.
+                if (b.support == static_cast<int>(o) && b.spin.w == glm::dvec3(0.0)) continue;
+                ++tested;
+                predict_turning_obstacle(i, o, now, limit, next);
+                if (next.kind == EventKind::kObstacle && next.t - now < limit) limit = next.t - now;
+                continue;
+            }
             if (!b.free_sphere()) {
                 ++tested;
                 if (auto c = advance(i, -1, static_cast<int>(o), now, limit)) {
@@ -1509,8 +1543,9 @@ class EventBake {
     // normal and pulled into it, rests or slides on the flat region of that face's plane.
     bool settle_on(int i, int o, const glm::dvec3 &n, double t) {
         Body &b = bodies_[static_cast<size_t>(i)];
-        if (!b.shape || b.support >= 0 || b.motion == ANI_MOTION_REST ||
-            !(glm::dot(b.free_a, n) < 0.0))
+        // (A turning model settles only while it does not turn.)
+        if (!(b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))) || b.support >= 0 ||
+            b.motion == ANI_MOTION_REST || !(glm::dot(b.free_a, n) < 0.0))
             return false;
         const Obstacle &ob = obstacles_[static_cast<size_t>(o)];
         const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
@@ -1539,8 +1574,9 @@ class EventBake {
         held.support_edges = support_boundary(ob, held);
         if (held.support_edges.empty()) return false;
         held.support_feet.clear();
-        const double size = std::max(1.0, glm::length(b.shape->bounds().hi - b.shape->bounds().lo));
-        for (const glm::dvec3 &corner : b.shape->vertices)
+        const std::vector<glm::dvec3> corners = placed_vertices(b, t);
+        const double size = std::max(1.0, 2.0 * body_size(b));
+        for (const glm::dvec3 &corner : corners)
             if (std::abs(glm::dot(n, placed_c + corner) - held.support_d) <= 1e-9 * size)
                 held.support_feet.push_back(corner);
         if (held.support_feet.empty()) return false;
@@ -1680,7 +1716,17 @@ class EventBake {
     double body_size(const Body &b) const {
         if (b.sphere) return b.radius;
         if (b.shape) return 0.5 * glm::length(b.shape->bounds().hi - b.shape->bounds().lo);
+        if (b.turns) return b.turning_reach;
         return b.reach;
+    }
+
+    // The vertices of a free model that is not a sphere, relative to its centre, as placed at t.
+    std::vector<glm::dvec3> placed_vertices(const Body &b, double t) const {
+        if (b.shape) return b.shape->vertices;
+        const glm::dmat3 turn = glm::dmat3(glm::mat3_cast(b.spin.at(t)));
+        std::vector<glm::dvec3> out;
+        for (const glm::dvec3 &v : b.turning_vertices) out.push_back(turn * v);
+        return out;
     }
 
     void set_prediction(int i, const Predicted &p) {
@@ -1753,7 +1799,8 @@ class EventBake {
                     ignore(i, -1 - event.other, now);
                 break;
             }
-            collide_obstacle(i, obstacles_[static_cast<size_t>(event.other)], event.contact, now);
+            collide_obstacle(i, obstacles_[static_cast<size_t>(event.other)], event.contact,
+                             event.points, now);
             break;
         case EventKind::kRelease:
             unignore(i, event.other, now);
@@ -1789,7 +1836,8 @@ class EventBake {
         ++count_.releases;
     }
 
-    void collide_obstacle(int i, const Obstacle &o, const Contact &contact, double t) {
+    void collide_obstacle(int i, const Obstacle &o, const Contact &contact,
+                          const std::vector<glm::dvec3> &points, double t) {
         Body &b = bodies_[static_cast<size_t>(i)];
         if (b.keyed()) release(i, t);
         const glm::dvec3 n = contact.normal;
@@ -1801,6 +1849,18 @@ class EventBake {
         e.normal = ani(n);
         e.point = ani(contact.point);
         e.speed = std::max(0.0, -glm::dot(v, n));
+        if (b.turning()) { // turning_response.inc: the speed of the touching point
+            e.speed = std::max(0.0, -glm::dot(point_velocity(b, contact.point, t), n));
+            if (!b.dynamics)
+                restart(b, t, glm::dvec3(0.0), true);
+            else if (respond_turning_to_obstacle(i, o, contact, points, t)) {
+                report(e); // resting from the Zeno bounces' accumulation time
+                return;
+            }
+            after_contact(i, t);
+            report(e);
+            return;
+        }
         // Off a model without Dynamics: a reflection; without Dynamics itself it stops. With
         // restitution or friction: the contact impulse (sphere_response.inc, mesh_response.inc).
         if (!b.dynamics || !sphere_responds(b, scene_->models[o.model]))
@@ -1816,6 +1876,25 @@ class EventBake {
     void collide_bodies(int i, int j, const Contact &contact, double t) {
         Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
         const glm::dvec3 n = contact.normal;
+        if (b.turning() || o.turning()) { // turning_response.inc
+            const ImpulseBody ib = impulse_body(b, contact.point, t),
+                              io = impulse_body(o, contact.point, t);
+            const bool b_wall = b.keyed(), o_wall = o.keyed();
+            ani_collision_event e{};
+            e.t = t;
+            e.a = b.model;
+            e.b = o.model;
+            e.normal = ani(n);
+            e.point = ani(contact.point);
+            e.speed = std::max(0.0, -glm::dot(point_velocity_of(ib) - point_velocity_of(io), n));
+            if (b_wall) release(i, t);
+            if (o_wall) release(j, t);
+            respond_turning_pair(b, ib, b_wall, o, io, o_wall, n, t);
+            after_contact(i, t);
+            after_contact(j, t);
+            report(e);
+            return;
+        }
         // A keyed body is a wall of infinite mass moving as its keys say, for the free body it
         // meets: that one reflects off it with the relative velocity (physics.md).
         const glm::dvec3 v = point_velocity(b, contact.point, t),
@@ -1870,6 +1949,7 @@ class EventBake {
 
 #include "sphere_response.inc"
 #include "mesh_response.inc"
+#include "turning_response.inc"
 
     void report(const ani_collision_event &e) {
         auto finite = [](const ani_vec3 &v) {
@@ -1907,21 +1987,77 @@ class EventBake {
     }
 
     // A model that `rotates` must be able to: its mesh closed (it turns about its centre of mass,
-    // which an open mesh has not). physics.custom turns spheres so far; any other model with
-    // Rotates on moves without turning, and the log says so once per bake.
-    void check_turning(uint32_t i, bool sphere) {
+    // which an open mesh has not). physics.custom turns spheres, and other models whose three
+    // principal moments are equal (spherical tops: a cube, a regular polyhedron) with their
+    // centre of mass at their origin, as their keys scale them at `t` (where they become free):
+    // true for those. Any other model with Rotates on moves without turning, and the log says so
+    // once per bake.
+    bool check_turning(uint32_t i, bool sphere, double t) {
         const ani_physics_model &m = scene_->models[i];
-        if (!ANI_MODEL_DESC_HAS_BODY(m.desc) || !m.desc->rotates || !m.desc->dynamics) return;
+        if (!ANI_MODEL_DESC_HAS_BODY(m.desc) || !m.desc->rotates || !m.desc->dynamics) return false;
         std::string why;
         if (!m.mesh->is_sphere && !is_closed(*m.mesh, &why))
             throw ani::Failure(ANI_ERR_INVALID_ARGUMENT,
                                std::string("model '") + name_of(m) +
                                    "' cannot rotate: its mesh is not closed (" + why +
                                    "); turn Rotates off or close the mesh");
-        if (!sphere && t_begin_ == 0.0)
+        if (sphere) return false; // its spin: sphere_response.inc
+        const TurningShape shape = turning_shape(i, t);
+        const glm::dvec3 moments = shape.mass.principal_moments;
+        const bool top = moments.z - moments.x <= 1e-9 * moments.z;
+        const bool centred =
+            glm::length(shape.mass.center_of_mass) <= 1e-9 * std::max(shape.reach, 1e-300);
+        if (top && centred) return true;
+        if (t_begin_ == 0.0)
             log_warning(std::string("model '") + name_of(m) +
-                        "' has Rotates on, but physics.custom turns only spheres so far: it "
-                        "moves without turning (physics.bullet turns it)");
+                        "' has Rotates on, but physics.custom turns only spheres and models "
+                        "whose three principal moments are equal with their centre of mass at "
+                        "their origin (a cube) so far: it moves without turning (physics.bullet "
+                        "turns it)");
+        return false;
+    }
+
+    // A model's mesh scaled as its keys leave it at t, as a uniform solid of its mass.
+    struct TurningShape {
+        std::vector<glm::dvec3> vertices;
+        MassProperties mass;
+        double reach = 0.0;
+        glm::dmat3 scale{1.0};
+    };
+    TurningShape turning_shape(uint32_t i, double t) const {
+        const ani_physics_model &m = scene_->models[i];
+        const double mass = m.desc->mass;
+        if (!(mass > 0.0) || !std::isfinite(mass))
+            throw ani::Failure(ANI_ERR_INVALID_ARGUMENT,
+                               std::string("model '") + name_of(m) +
+                                   "' needs a finite mass > 0 to rotate");
+        TurningShape shape;
+        const ani_vec3 s = keyed_state(*scene_, i, t, nullptr).scale;
+        shape.scale = glm::dmat3(glm::scale(glm::dmat4(1.0), vec(s)));
+        std::vector<double> positions;
+        for (uint32_t k = 0; k < m.mesh->vertex_count; ++k) {
+            const glm::dvec3 p = shape.scale * vertex(*m.mesh, k);
+            shape.vertices.push_back(p);
+            shape.reach = std::max(shape.reach, glm::length(p));
+            positions.insert(positions.end(), {p.x, p.y, p.z});
+        }
+        ani_mesh_view scaled = *m.mesh;
+        scaled.positions = positions.data();
+        scaled.is_sphere = 0;
+        shape.mass = mass_properties(scaled, mass);
+        return shape;
+    }
+
+    // Body b turns from its contacts once free after its last key (at keys_end).
+    void set_turning(Body &b, double keys_end) {
+        TurningShape shape = turning_shape(b.model, keys_end);
+        b.turns = true;
+        b.turning_vertices = std::move(shape.vertices);
+        b.turning_reach = shape.reach;
+        b.scale = shape.scale;
+        // A spherical top: one moment about every axis (their mean, equal to rounding).
+        const glm::dvec3 moments = shape.mass.principal_moments;
+        b.inv_inertia = 3.0 / (moments.x + moments.y + moments.z);
     }
 
     void log_warning(const std::string &message) {

@@ -78,4 +78,34 @@ ImpulseResult contact_impulse(const ImpulseBody &a, const ImpulseBody &b, const 
     return out;
 }
 
+ImpulseResult contact_impulse_of(const ImpulseBody &a, const ImpulseBody &b, const glm::dvec3 &n,
+                                 double normal, double mu) {
+    ImpulseResult out;
+    glm::dvec3 p = normal * n;
+    const glm::dmat3 k = k_of(a) + k_of(b);
+    // The slip once the normal impulse has acted, and the tangential impulse that stops it: u_t +
+    // (K P_t)_t = 0 within the tangent plane (a 2 x 2 system in a basis of it).
+    const glm::dvec3 u = point_velocity_of(a) - point_velocity_of(b) + k * p;
+    const glm::dvec3 slip = u - glm::dot(u, n) * n;
+    if (mu > 0.0 && slip != glm::dvec3(0.0)) {
+        const glm::dvec3 t1 = slip / glm::length(slip), t2 = glm::cross(n, t1);
+        const double k11 = glm::dot(t1, k * t1), k12 = glm::dot(t1, k * t2),
+                     k21 = glm::dot(t2, k * t1), k22 = glm::dot(t2, k * t2);
+        const double det = k11 * k22 - k12 * k21, s1 = -glm::length(slip);
+        glm::dvec3 stop(0.0);
+        if (det > 0.0) stop = ((k22 * s1) / det) * t1 + ((-k21 * s1) / det) * t2;
+        if (det > 0.0 && glm::length(stop) <= mu * normal) {
+            p += stop;
+            out.sticks = true;
+        } else {
+            p -= (mu * normal) * t1;
+        }
+    }
+    out.impulse = p;
+    out.normal = normal;
+    apply(a, p, out.va, out.wa);
+    apply(b, -p, out.vb, out.wb);
+    return out;
+}
+
 } // namespace physics_custom

@@ -44,6 +44,13 @@ struct ImpulseResult {
 ImpulseResult contact_impulse(const ImpulseBody &a, const ImpulseBody &b, const glm::dvec3 &n,
                               double e, double mu);
 
+// The same with the normal impulse given (> 0: several points pushing at once,
+// simultaneous_contact.hpp): `normal` along n on a, and Coulomb friction at the point: the
+// tangential impulse that stops the slip if it is within mu times the normal one, otherwise mu
+// times it against the slip's direction at the start.
+ImpulseResult contact_impulse_of(const ImpulseBody &a, const ImpulseBody &b, const glm::dvec3 &n,
+                                 double normal, double mu);
+
 // The contact's values from the two models' (physics.md): the lower restitution, the higher
 // friction.
 inline double combined_restitution(double ea, double eb) {

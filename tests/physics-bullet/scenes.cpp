@@ -1,6 +1,7 @@
 #include "scenes.hpp"
 
 #include "bullet_support.hpp"
+#include "cube_drop.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -83,6 +84,41 @@ Measured drop_on_plane(double dt, const std::string &backend) {
             } else {
                 m.error2 = 1.0;
             }
+        });
+    });
+}
+
+Measured tumbling_cube(double dt, const std::string &backend) {
+    return worst_phase([&](double phase) {
+        const glm::dvec3 angles(30.0, 0.0, 20.0); // the scene's: turned about x, then about z
+        const double half = 0.5, mass = 1.0;
+        double below = 0.0; // the lowest corner, below the centre
+        for (const glm::dvec3 &p : cube_drop::corners(half))
+            below = std::max(below, -(cube_drop::turn_of(angles) * p).y);
+        // About 1.19 m above the floor, placed so the corner reaches it `phase` of a step later.
+        const double t1 = std::sqrt(2.0 * 1.19 / G) + phase * dt;
+        const glm::dvec3 center(0.0, 0.5 * G * t1 * t1 + below, 0.0);
+        const cube_drop::Drop exact = cube_drop::drop(center, angles, half, mass, G);
+        Document doc;
+        doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, glm::dvec3(10.0)));
+        Model cube = model("cube", "cube", true, true);
+        cube.mass = mass;
+        cube.rotates = true;
+        doc.add_model(cube, placed(center, glm::dvec3(half), angles));
+        auto t = timeline_of(with_param(doc, "step", dt), backend);
+        const double at = exact.t2 + 0.1;
+        return timed_bake(*t, exact.t2 + 0.5, [&](Measured &m) {
+            const auto &events = t->events();
+            m.error = events.empty() ? 1.0 : std::abs(events[0].t - exact.t1) / exact.t1;
+            m.error2 = events.size() < 2 ? 1.0 : std::abs(events[1].t - exact.t2) / exact.t2;
+            const Frame f = t->evaluate(at);
+            const ani_rotation_segment *turn = t->rotation_at(1, at);
+            const glm::dvec3 v = f.models[1].velocity, w = turn ? vec(turn->w) : glm::dvec3(0.0);
+            const double e0 = mass * G * center.y;
+            const double energy = 0.5 * mass * glm::dot(v, v) +
+                                  0.5 * exact.inertia * glm::dot(w, w) +
+                                  mass * G * f.models[1].center.y;
+            m.error3 = std::abs(energy - e0) / e0;
         });
     });
 }

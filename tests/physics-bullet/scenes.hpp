@@ -38,6 +38,13 @@ Measured drop_on_plane(double dt, const std::string &backend = kBullet);
 //    samples.
 constexpr int kRestitutionBounces = 8;
 Measured restitution_drop(double dt, const std::string &backend = kBullet);
+// 1c. A cube (side 1, 1 kg) dropped corner first on a floor with Rotates on, e = 1, mu = 0
+//    (assets/scenes/tumbling_cube.lua's, its corner about 1.19 m up), against tests/cube_drop.hpp:
+//    error: relative error of the first contact time (closed form); error2: relative error of
+//    the second contact time (its own root finding); 1 when fewer contacts are reported;
+//    error3: relative error of the kinetic plus potential energy 0.1 s after the second contact.
+//    Baked to 0.5 s after the second contact.
+Measured tumbling_cube(double dt, const std::string &backend = kBullet);
 // 2. Two spheres (r = 0.5, masses 1 and 3) meeting without gravity: head-on (offset 0), oblique
 //    (offset 0.6 r) and slowly (relative speed 0.15 m/s, offset 0.3 r). error: largest velocity
 //    error after the contact over both, relative to the relative speed.

@@ -1,0 +1,149 @@
+// physics.custom: models that are not spheres turning from their contacts (issue 18), through
+// the real timeline, against closed forms and an independent root finding written here.
+#include "io/document_io.hpp"
+#include "timeline/timeline.hpp"
+
+#include "cube_drop.hpp"
+#include "scene_support.hpp"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+using namespace animator;
+using namespace physics_test;
+
+namespace {
+
+Document shipped_scene(const std::string &name) {
+    return open_document(env().plugins, test::source_dir() / "assets/scenes" / name).document;
+}
+
+glm::dvec3 vec(const ani_vec3 &v) {
+    return {v.x, v.y, v.z};
+}
+
+// The motion and rotation segments that start at t (just after an event there).
+const ani_motion_segment &segment_from(const Timeline &t, int model, double time) {
+    for (const auto &s : t.segments(model))
+        if (s.t0 == time) return s;
+    FAIL("no motion segment starts at " << time);
+    throw 0;
+}
+const ani_rotation_segment &rotation_from(const Timeline &t, int model, double time) {
+    for (const auto &s : t.rotations(model))
+        if (s.t0 == time) return s;
+    FAIL("no rotation segment starts at " << time);
+    throw 0;
+}
+
+} // namespace
+
+TEST_CASE("a cube dropped corner first with Rotates on, e = 1, mu = 0: its first two impacts at "
+          "the times of an independent root finding, energy and momentum kept") {
+    const Document doc = shipped_scene("tumbling_cube.lua");
+    const ModelState &start = *doc.keyframes().front().states[1];
+    const Model &cube = doc.models()[1];
+    REQUIRE(cube.rotates);
+    REQUIRE(cube.restitution == 1.0);
+    REQUIRE(cube.friction == 0.0);
+    REQUIRE(start.scale == glm::dvec3(0.5)); // side s = 1
+    const double m = cube.mass;
+    // The drop worked out independently (tests/cube_drop.hpp): the first impact in closed form,
+    // its impulse by hand, the second impact by its own root finding.
+    const cube_drop::Drop drop = cube_drop::drop(start.center, start.angles, 0.5, m, G);
+    const double inertia = drop.inertia;
+    auto timeline = timeline_of(doc);
+    timeline->bake(3.0);
+    const auto &events = timeline->events();
+    REQUIRE(events.size() >= 2);
+    CAPTURE(events[0].t - drop.t1);
+    CHECK(std::abs(events[0].t - drop.t1) < 1e-9);
+    const ani_motion_segment &after = segment_from(*timeline, 1, events[0].t);
+    const ani_rotation_segment &turn = rotation_from(*timeline, 1, events[0].t);
+    CHECK(glm::length(vec(after.v0) - drop.v1) < 1e-9);
+    CHECK(glm::length(vec(turn.w) - drop.w1) < 1e-9);
+    CAPTURE(events[1].t - drop.t2);
+    CHECK(std::abs(events[1].t - drop.t2) < 1e-9);
+    const glm::dvec3 w1 = drop.w1;
+
+    // Energy (translation, rotation, height) and the momentum along the floor, after each.
+    const double e0 = m * G * start.center.y;
+    for (size_t k = 0; k < 2; ++k) {
+        const ani_motion_segment &seg = segment_from(*timeline, 1, events[k].t);
+        const ani_rotation_segment &rot = rotation_from(*timeline, 1, events[k].t);
+        const glm::dvec3 v = vec(seg.v0), w = vec(rot.w);
+        const double energy =
+            0.5 * m * glm::dot(v, v) + 0.5 * inertia * glm::dot(w, w) + m * G * seg.p0.y;
+        CAPTURE(k, energy - e0);
+        CHECK(std::abs(energy - e0) < 1e-9 * e0);
+        CHECK(std::abs(v.x) < 1e-12);
+        CHECK(std::abs(v.z) < 1e-12);
+    }
+    // Angular momentum about the touching point is kept through the second impact (the floor's
+    // impulse acts there): L = m (c - p) x v + I w.
+    const double t = events[1].t;
+    const glm::dvec3 p = vec(events[1].point);
+    const ani_motion_segment &before = segment_from(*timeline, 1, events[0].t),
+                             &later = segment_from(*timeline, 1, t);
+    const double dt = t - before.t0;
+    const glm::dvec3 c_before =
+                         vec(before.p0) + vec(before.v0) * dt + 0.5 * vec(before.a) * dt * dt,
+                     v_before = vec(before.v0) + vec(before.a) * dt;
+    const glm::dvec3 l_before = m * glm::cross(c_before - p, v_before) + inertia * w1,
+                     l_after = m * glm::cross(vec(later.p0) - p, vec(later.v0)) +
+                               inertia * vec(rotation_from(*timeline, 1, t).w);
+    CAPTURE(l_before.x, l_before.y, l_before.z, l_after.x, l_after.y, l_after.z);
+    CHECK(glm::length(l_after - l_before) < 1e-9 * glm::length(l_before));
+}
+
+TEST_CASE("a cube with Rotates on landing flat with e = 0.5 does not turn at all and comes to "
+          "rest at the closed-form time") {
+    const Document doc = shipped_scene("cube_landing_flat.lua");
+    const ModelState &start = *doc.keyframes().front().states[1];
+    const double e = doc.models()[1].restitution, half = start.scale.x, h = start.center.y;
+    REQUIRE(doc.models()[1].rotates);
+    REQUIRE(e == 0.5);
+    REQUIRE(half == 0.25);
+    auto timeline = timeline_of(doc);
+    timeline->bake(1000.0);
+    // Its centre moves as a ball's of radius `half` (restitution_test.cpp derives these).
+    const double t0 = std::sqrt(2.0 * (h - half) / G), v0 = G * t0;
+    const double rest = t0 * (1.0 + e) / (1.0 - e);
+    const auto &events = timeline->events();
+    REQUIRE(events.size() >= 10);
+    CHECK(events.size() < 100);
+    double worst_t = 0.0, worst_v = 0.0;
+    for (size_t k = 0; k < 10; ++k) {
+        const double ek = std::pow(e, static_cast<double>(k));
+        worst_t = std::max(worst_t,
+                           std::abs(events[k].t - t0 * (1.0 + 2.0 * e * (1.0 - ek) / (1.0 - e))));
+        worst_v = std::max(worst_v, std::abs(events[k].speed - ek * v0));
+    }
+    CAPTURE(worst_t, worst_v);
+    CHECK(worst_t < 1e-9);
+    CHECK(worst_v < 1e-9);
+    // No rotation at all: every rotation segment keeps its start orientation, at w = 0 exactly.
+    REQUIRE_FALSE(timeline->rotations(1).empty());
+    for (const auto &r : timeline->rotations(1)) {
+        CHECK(vec(r.w) == glm::dvec3(0.0));
+        CHECK(std::abs(std::abs(r.q0.w) - 1.0) == 0.0);
+    }
+    // Resting from the accumulation time, its bottom face on the floor, still to 1000 s.
+    const ani_motion_segment *still = nullptr;
+    for (const auto &s : timeline->segments(1))
+        if (s.t0 <= rest + 1e-3 && rest + 1e-3 <= s.t1) still = &s;
+    REQUIRE(still);
+    CAPTURE(still->t0 - rest);
+    CHECK(std::abs(still->t0 - rest) < 1e-9);
+    CHECK(vec(still->v0) == glm::dvec3(0.0));
+    CHECK(still->p0.y == Approx(half).epsilon(1e-12));
+    const glm::dvec3 at_rest = timeline->evaluate(rest + 1e-3).models[1].center;
+    for (double t : {rest + 1.0, 100.0, 1000.0}) {
+        const Frame f = timeline->evaluate(t);
+        CHECK(f.models[1].center == at_rest);
+        CHECK(f.models[1].velocity == glm::dvec3(0.0));
+        CHECK(f.models[1].angles == glm::dvec3(0.0));
+    }
+}
