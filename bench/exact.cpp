@@ -100,7 +100,7 @@ void run_exact(const Options &o) {
          {{"1st contact time (relative)", &M::error},
           {"2nd contact time (relative)", &M::error2},
           {"energy after (relative)", &M::error3}},
-         "cube side 1 dropped corner first, Rotates on, e 1, mu 0"},
+         "cube side 1 dropped corner first, Rotates on, e 1, mu 0 (Bullet's margin 0.001)"},
         {"oblique",
          [](double dt, const std::string &b) { return bt::two_spheres(dt, 0.6, 2.0, -1.0, b); },
          {{"velocity (relative)", &M::error}},

@@ -116,7 +116,7 @@ class Bake;
 bool same_options(const BakeOptions &a, const BakeOptions &b) {
     return a.step == b.step && a.solver_iterations == b.solver_iterations && a.ccd == b.ccd &&
            a.rotate_on_contact == b.rotate_on_contact && a.friction == b.friction &&
-           a.restitution == b.restitution;
+           a.restitution == b.restitution && a.margin == b.margin;
 }
 
 // Dispatches like Bullet's, then lets the bake drop the contacts of pairs it ignores.
@@ -622,7 +622,7 @@ class Bake {
                                    std::string("model '") + name_of(scene_->models[i]) +
                                        "' has a mesh without area (every triangle is degenerate)");
             if (info.convex && !room)
-                shape = hull_shape(mesh, scale);
+                shape = hull_shape(mesh, scale, options_.margin);
             else
                 shape = triangle_shape(mesh, scale, moving);
         }

@@ -21,6 +21,7 @@ struct BakeOptions {
     bool rotate_on_contact = false;
     double friction = 0.0;
     double restitution = 1.0;
+    double margin = 0.04; // the collision margin of convex hulls (m), at most 0.2 x inner radius
 };
 
 // What a bake has said in the log (the overlapping pairs, models lower first, to when it found

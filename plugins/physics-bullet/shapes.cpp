@@ -209,8 +209,9 @@ std::unique_ptr<Shape> sphere_shape(double radius) {
 
 // A convex hull keeps Bullet's collision margin outside its points; with few face planes the
 // hull is shrunk by the margin first, so its faces stay where the mesh's are (only its edges and
-// corners are rounded by the margin).
-std::unique_ptr<Shape> hull_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale) {
+// corners are rounded by the margin: `largest`, at most a fifth of its inner radius).
+std::unique_ptr<Shape> hull_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale,
+                                  double largest) {
     auto s = std::make_unique<Shape>();
     s->kind = ShapeKind::kHull;
     s->scale = scale;
@@ -225,7 +226,7 @@ std::unique_ptr<Shape> hull_shape(const ani_mesh_view &mesh, const glm::dvec3 &s
     s->inner = std::max(0.0, inradius);
     auto hull = std::make_unique<btConvexHullShape>();
     if (planes.size() <= 40 && inradius > 0.0) {
-        const double margin = std::min(0.04, 0.2 * inradius);
+        const double margin = std::min(largest, 0.2 * inradius);
         for (const glm::dvec3 &p : shrunk_corners(planes, margin, s->reach))
             hull->addPoint(btVector3(p.x, p.y, p.z), false);
         if (hull->getNumPoints() >= 4)
@@ -235,7 +236,7 @@ std::unique_ptr<Shape> hull_shape(const ani_mesh_view &mesh, const glm::dvec3 &s
     }
     if (hull->getNumPoints() == 0) {
         for (const glm::dvec3 &p : v) hull->addPoint(btVector3(p.x, p.y, p.z), false);
-        s->margin = std::min(0.04, 1e-3 * s->reach);
+        s->margin = std::min(largest, 1e-3 * s->reach);
     }
     hull->setMargin(s->margin);
     hull->recalcLocalAabb();

@@ -61,7 +61,8 @@ struct Shape {
 };
 
 std::unique_ptr<Shape> sphere_shape(double radius);
-std::unique_ptr<Shape> hull_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale);
+std::unique_ptr<Shape> hull_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale,
+                                  double margin = 0.04);
 std::unique_ptr<Shape> triangle_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale,
                                       bool moving);
 

@@ -204,7 +204,7 @@ TEST_CASE("a ball with restitution 0.8 on a floor of 1 bounces at t0 (1 + 2 e (1
     // physics.custom solves each flight in closed form: exact but for rounding.
     const Measured custom = restitution_drop(kSteps[0], "physics.custom");
     INFO("custom: times " << custom.error << ", apexes " << custom.error2 << ", rest "
-                                   << custom.error3 << ", events " << custom.events);
+                          << custom.error3 << ", events " << custom.events);
     CHECK(custom.error < 1e-9);
     CHECK(custom.error2 < 1e-9);
     CHECK(custom.error3 < 1e-9);
@@ -212,13 +212,41 @@ TEST_CASE("a ball with restitution 0.8 on a floor of 1 bounces at t0 (1 + 2 e (1
     // 1/240 s): closer at 1/240 s than at 1/60 s.
     const Measured coarse = restitution_drop(kSteps[0]), fine = restitution_drop(kSteps[1]);
     INFO("bullet 1/60: " << coarse.error << ", " << coarse.error2 << ", " << coarse.error3
-                                  << ", events " << coarse.events);
-    INFO("bullet 1/240: " << fine.error << ", " << fine.error2 << ", " << fine.error3
-                                   << ", events " << fine.events);
+                         << ", events " << coarse.events);
+    INFO("bullet 1/240: " << fine.error << ", " << fine.error2 << ", " << fine.error3 << ", events "
+                          << fine.events);
     CHECK(fine.error < coarse.error);
     CHECK(fine.error2 < coarse.error2);
     CHECK(coarse.error < 1.0);
     CHECK(fine.error3 < coarse.error3);
     CHECK(coarse.error < 1.0); // 1 would mean fewer than kRestitutionBounces contacts reported
     CHECK(coarse.error2 < 1.0);
+}
+
+TEST_CASE("a cube dropped corner first with Rotates on: physics.custom meets the independent "
+          "solution, and Bullet's error is bounded by its collision margin",
+          "[turning]") {
+    // tests/cube_drop.hpp: the first contact in closed form, the second by its own root finding.
+    const Measured custom = tumbling_cube(kSteps[0], "physics.custom");
+    INFO("custom: 1st " << custom.error << ", 2nd " << custom.error2 << ", energy "
+                        << custom.error3);
+    CHECK(custom.error < 1e-12);
+    CHECK(custom.error2 < 1e-12);
+    CHECK(custom.error3 < 1e-12);
+    // Bullet with a margin of 0.001 m (measured: first contact 1.8e-4, 2.5e-4, 2.6e-4 relative
+    // at 1/60, 1/240 and 1/1000 s, the margin's rounding of the corner; energy 5.1e-3, 1.4e-3,
+    // 3.1e-4): the energy converges with the step, the contact times to the margin's bound.
+    double energy_before = 1.0;
+    for (double dt : kSteps) {
+        const Measured m = tumbling_cube(dt);
+        INFO("bullet " << dt << ": 1st " << m.error << ", 2nd " << m.error2 << ", energy "
+                       << m.error3);
+        CHECK(m.error < 1e-3);
+        CHECK(m.error2 < 1e-2);
+        CHECK(m.error3 < energy_before);
+        energy_before = m.error3;
+    }
+    CHECK(energy_before < 1e-3);
+    // Its own margin, 0.04 m, rounds the corners: the cube lands about 1% late.
+    CHECK(tumbling_cube(kSteps[1], kBullet, 0.04).error > 5e-3);
 }

@@ -88,7 +88,7 @@ Measured drop_on_plane(double dt, const std::string &backend) {
     });
 }
 
-Measured tumbling_cube(double dt, const std::string &backend) {
+Measured tumbling_cube(double dt, const std::string &backend, double margin) {
     return worst_phase([&](double phase) {
         const glm::dvec3 angles(30.0, 0.0, 20.0); // the scene's: turned about x, then about z
         const double half = 0.5, mass = 1.0;
@@ -105,7 +105,7 @@ Measured tumbling_cube(double dt, const std::string &backend) {
         cube.mass = mass;
         cube.rotates = true;
         doc.add_model(cube, placed(center, glm::dvec3(half), angles));
-        auto t = timeline_of(with_param(doc, "step", dt), backend);
+        auto t = timeline_of(with_param(with_param(doc, "step", dt), "margin", margin), backend);
         const double at = exact.t2 + 0.1;
         return timed_bake(*t, exact.t2 + 0.5, [&](Measured &m) {
             const auto &events = t->events();
@@ -143,7 +143,8 @@ Measured restitution_drop(double dt, const std::string &backend) {
             // Contact k (from 0) comes after the first fall t0 and k flights of 2 t0 e^j, j = 1..k.
             m.error = events.size() < static_cast<size_t>(kRestitutionBounces) ? 1.0 : 0.0;
             auto contact_time = [&](size_t k) {
-                return t0 * (1.0 + 2.0 * e * (1.0 - std::pow(e, static_cast<double>(k))) / (1.0 - e));
+                return t0 *
+                       (1.0 + 2.0 * e * (1.0 - std::pow(e, static_cast<double>(k))) / (1.0 - e));
             };
             for (size_t k = 0; k < events.size() && k < static_cast<size_t>(kRestitutionBounces);
                  ++k) {
@@ -161,7 +162,9 @@ Measured restitution_drop(double dt, const std::string &backend) {
                 for (const ani_motion_segment &s : t->segments(1)) {
                     if (s.t1 <= from || s.t0 >= to) continue;
                     const double a = std::max(s.t0, from) - s.t0, b = std::min(s.t1, to) - s.t0;
-                    auto y = [&](double at) { return s.p0.y + s.v0.y * at + 0.5 * s.a.y * at * at; };
+                    auto y = [&](double at) {
+                        return s.p0.y + s.v0.y * at + 0.5 * s.a.y * at * at;
+                    };
                     top = std::max({top, y(a), y(b)});
                     if (s.a.y != 0.0) {
                         const double at = -s.v0.y / s.a.y;
@@ -306,7 +309,8 @@ Measured thin_wall(double dt, double speed, bool ccd, const std::string &backend
         ball.initial_velocity = {-speed, 0, 0};
         const double x0 = 1.0 + phase * dt * speed;
         doc.add_model(ball, placed({x0, 0.1, 0.1}, glm::dvec3(0.1)));
-        auto t = timeline_of(with_param(with_param(doc, "step", dt), "ccd", ccd ? 1.0 : 0.0), backend);
+        auto t =
+            timeline_of(with_param(with_param(doc, "step", dt), "ccd", ccd ? 1.0 : 0.0), backend);
         const double hit = (x0 - r) / speed;
         const double until = hit + 2.0 * dt;
         return timed_bake(*t, until, [&](Measured &m) {
