@@ -5,6 +5,8 @@
 
 namespace physics_custom::bake {
 
+// ---- pairs that overlap when they start to collide (physics.md) -------------------------
+
 // Finds the pairs with body i that overlap at t (at the start, when i becomes free inside
 // another, or when its keys take it back inside one) and treats each as touching.
 void EventBake::find_overlaps(int i, double t) {

@@ -71,7 +71,7 @@ glm::dvec3 EventBake::point_velocity(const Body &b, const glm::dvec3 &point, dou
            (2.0 * h);
 }
 
-// ---- overlaps at the start -------------------------------------------------------------
+// ---- gaps, and overlaps at the start -------------------------------------------------
 
 double EventBake::gap_between(const Body &a, const Body &b, double t, Contact *contact) const {
     if (!a.sphere && !b.sphere) return mesh_gap(a, b, t, contact);
