@@ -1,0 +1,591 @@
+// The event-driven bake's time of impact (physics.md, "Where the code is"): the gaps between
+// bodies and obstacles, conservative advancement, and each body's earliest predicted event
+// (predict). Relies on time_of_impact.hpp, mesh_contact.hpp, mesh_distance.hpp and
+// turning_contact.hpp for the mathematics, and on bake_broad_phase.cpp for the candidates.
+#include "event_bake_detail.hpp"
+
+namespace physics_custom::bake {
+
+// The nearest point of a mesh body (at pose p) to q.
+glm::dvec3 EventBake::nearest_on_mesh(const Body &b, const Pose &p, const glm::dvec3 &q) const {
+    const ani_mesh_view &mesh = mesh_of(b);
+    glm::dvec3 best = p.center;
+    double best_d = kNever;
+    for (uint32_t k = 0; k < mesh.triangle_count; ++k) {
+        const uint32_t *tri = mesh.triangles + 3 * static_cast<size_t>(k);
+        const glm::dvec3 c = closest_point_on_triangle(
+            q, p.center + p.linear * vertex(mesh, tri[0]),
+            p.center + p.linear * vertex(mesh, tri[1]), p.center + p.linear * vertex(mesh, tri[2]));
+        const double d = glm::length(q - c);
+        if (d < best_d) {
+            best_d = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
+glm::dvec3 EventBake::nearest_on_obstacle(const Obstacle &o, const glm::dvec3 &q) const {
+    glm::dvec3 best = o.center;
+    double best_d = kNever;
+    for (size_t k = 0; k + 2 < o.corners.size(); k += 3) {
+        const glm::dvec3 c =
+            closest_point_on_triangle(q, o.corners[k], o.corners[k + 1], o.corners[k + 2]);
+        const double d = glm::length(q - c);
+        if (d < best_d) {
+            best_d = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
+// How fast any point of a body can move around time t, from its pose and one a moment
+// later (the speed of its center plus the rate of its rotation and scale times its reach).
+double EventBake::point_speed(const Body &b, double t, double dt) const {
+    if (b.free_sphere()) return glm::length(b.path.velocity(t - b.t0)) + glm::length(b.path.a) * dt;
+    if (b.turning()) // its centre's speed, and |w| times its reach from its centre of mass
+        return glm::length(b.path.velocity(t - b.t0)) + glm::length(b.path.a) * dt +
+               glm::length(b.spin.w) * b.turning_reach;
+    const double h = std::max(1e-6, dt);
+    const Pose p = pose(b, t), q = pose(b, t + h);
+    const double reach = b.sphere ? 0.0 : b.reach;
+    const double turning = frobenius(q.linear - p.linear) / h * reach;
+    const double speed = std::max(glm::length(p.velocity), glm::length(q.velocity)) + turning;
+    // Keyed motion is known only by evaluation: a margin for its changes within the step.
+    return b.keyed() ? 1.5 * speed + 1e-12 : speed + glm::length(b.path.a) * dt;
+}
+
+// The velocity of the material point of body b at `point` at time t (a keyed model turning
+// or scaling moves each of its points differently).
+glm::dvec3 EventBake::point_velocity(const Body &b, const glm::dvec3 &point, double t) const {
+    if (b.turning())
+        return b.path.velocity(t - b.t0) + glm::cross(b.spin.w, point - b.path.at(t - b.t0));
+    if (!b.keyed()) return b.path.velocity(t - b.t0); // free: it translates
+    const Pose p = pose(b, t);
+    if (b.sphere) return p.velocity;
+    const glm::dvec3 local = glm::inverse(p.linear) * (point - p.center);
+    const double h = 1e-6 * std::max(1.0, std::abs(t));
+    const Pose before = pose(b, t - h), after = pose(b, t + h);
+    return ((after.center + after.linear * local) - (before.center + before.linear * local)) /
+           (2.0 * h);
+}
+
+// ---- gaps, and overlaps at the start -------------------------------------------------
+
+double EventBake::gap_between(const Body &a, const Body &b, double t, Contact *contact) const {
+    if (!a.sphere && !b.sphere) return mesh_gap(a, b, t, contact);
+    const Body &s = a.sphere ? a : b, &o = a.sphere ? b : a;
+    const Pose ps = pose(s, t), po = pose(o, t);
+    glm::dvec3 nearest;
+    double gap;
+    const double rs = radius_at(s, ps);
+    if (o.sphere) {
+        const double ro = radius_at(o, po);
+        nearest = po.center + (glm::length(ps.center - po.center) > 0.0
+                                   ? glm::normalize(ps.center - po.center) * ro
+                                   : glm::dvec3(0.0));
+        gap = glm::length(ps.center - po.center) - rs - ro;
+    } else {
+        const double reach = o.reach * frobenius(po.linear);
+        const double far = glm::length(ps.center - po.center) - rs - reach;
+        // While far apart, the bounding spheres' gap is a lower bound that is enough.
+        if (far > 0.25 * (rs + reach) && !contact) return far;
+        nearest = nearest_on_mesh(o, po, ps.center);
+        gap = glm::length(ps.center - nearest) - rs;
+    }
+    if (contact) {
+        glm::dvec3 n = ps.center - nearest;
+        n = glm::length(n) > 0.0 ? glm::normalize(n) : glm::dvec3(0, 1, 0);
+        if (&s != &a) n = -n; // from b towards a
+        contact->normal = n;
+        contact->point = nearest;
+        contact->t = t;
+    }
+    return gap;
+}
+
+// Two models that are not spheres: the distance between their surfaces.
+double EventBake::mesh_gap(const Body &a, const Body &b, double t, Contact *contact) const {
+    const Pose pa = pose(a, t), pb = pose(b, t);
+    const double ra = a.reach * frobenius(pa.linear), rb = b.reach * frobenius(pb.linear);
+    const double far = glm::length(pa.center - pb.center) - ra - rb;
+    if (far > 0.25 * (ra + rb) && !contact) return far;
+    glm::dvec3 on_a, on_b, n;
+    const double gap = mesh_distance(placed(a, pa), placed(b, pb), on_a, on_b, n);
+    if (contact) fill_contact(on_a, on_b, n, t, contact);
+    return gap;
+}
+
+void EventBake::fill_contact(const glm::dvec3 &on_a, const glm::dvec3 &on_b, const glm::dvec3 &n,
+                             double t, Contact *contact) {
+    contact->normal = n;
+    contact->point = 0.5 * (on_a + on_b);
+    contact->t = t;
+}
+
+double EventBake::gap_to_obstacle(const Body &b, const Obstacle &o, double t,
+                                  Contact *contact) const {
+    const Pose p = pose(b, t);
+    if (!b.sphere) {
+        const double reach = b.reach * frobenius(p.linear);
+        const double far = glm::length(p.center - o.center) - reach - o.radius;
+        if (far > 0.25 * (reach + o.radius) && !contact) return far;
+        glm::dvec3 on_a, on_b, n;
+        const double gap = mesh_distance(placed(b, p), placed(o), on_a, on_b, n);
+        if (contact) fill_contact(on_a, on_b, n, t, contact);
+        return gap;
+    }
+    const glm::dvec3 c = p.center;
+    const double r = radius_at(b, p);
+    const double far = glm::length(c - o.center) - r - o.radius;
+    if (far > 0.25 * (r + o.radius) && !contact) return far;
+    const glm::dvec3 nearest = nearest_on_obstacle(o, c);
+    if (contact) {
+        const glm::dvec3 n = c - nearest;
+        contact->normal = glm::length(n) > 0.0 ? glm::normalize(n) : glm::dvec3(0, 1, 0);
+        contact->point = nearest;
+        contact->t = t;
+    }
+    return glm::length(c - nearest) - r;
+}
+
+// A sphere's radius at a pose: a keyed sphere's scale may change under its keys.
+double EventBake::radius_at(const Body &b, const Pose &p) const {
+    if (!b.keyed()) return b.radius;
+    return scene_->models[b.model].mesh->bound_radius * frobenius(p.linear) / std::sqrt(3.0);
+}
+
+// Whether a sphere is closer to an obstacle than `gap` (negative: overlapping by more).
+bool EventBake::within_obstacle(const Body &b, const Obstacle &o, double t, double gap) const {
+    if (!b.sphere) return false;
+    if (b.free_sphere()) {
+        const glm::dvec3 c = b.path.at(t - b.t0);
+        if (glm::length(c - o.center) > b.radius + o.radius + gap) return false;
+        for (size_t k = 0; k + 2 < o.corners.size(); k += 3)
+            if (glm::length(c - closest_point_on_triangle(c, o.corners[k], o.corners[k + 1],
+                                                          o.corners[k + 2])) < b.radius + gap)
+                return true;
+        return false;
+    }
+    return gap_to_obstacle(b, o, t) < gap;
+}
+
+bool EventBake::within_body(const Body &a, const Body &b, double t, double gap) const {
+    if (!a.sphere && !b.sphere) return false;
+    if (a.free_sphere() && b.free_sphere())
+        return glm::length(a.path.at(t - a.t0) - b.path.at(t - b.t0)) < a.radius + b.radius + gap;
+    return gap_between(a, b, t) < gap;
+}
+
+// Overlapping: closer than touching (which allows for the single precision of meshes).
+bool EventBake::overlaps_obstacle(const Body &b, const Obstacle &o, double t) const {
+    return within_obstacle(b, o, t, -touching(b));
+}
+
+bool EventBake::overlaps_body(const Body &a, const Body &b, double t) const {
+    return within_body(a, b, t, -touching(a) - touching(b));
+}
+
+// Apart: farther than touching, so that a pair left alone is not met again at once.
+bool EventBake::apart_from_obstacle(const Body &b, const Obstacle &o, double t) const {
+    // A model that is not a sphere has no distance to an obstacle here: the pair it grazed
+    // is left alone while it moves a quarter of its size.
+    if (!b.sphere) return t >= b.grazed_until;
+    return !within_obstacle(b, o, t, touching(b));
+}
+
+bool EventBake::apart_from_body(const Body &a, const Body &b, double t) const {
+    return !within_body(a, b, t, touching(a) + touching(b));
+}
+
+// A contact met with no speed along its normal (a sphere rolling over the rim of a table,
+// grazing an edge) is not a collision: reflecting would change nothing and find the same
+// contact again at once. The pair is left alone until they are apart.
+bool EventBake::grazing(const glm::dvec3 &relative_velocity, const glm::dvec3 &n) {
+    return -glm::dot(relative_velocity, n) <= 1e-9 * std::max(1.0, glm::length(relative_velocity));
+}
+
+// Meshes are read in single precision, so a sphere placed on a face can be inside it by a
+// few 1e-8 of its radius: that much is touching, not overlapping.
+double EventBake::touching(const Body &b) {
+    return 1e-6 * b.radius;
+}
+
+// How close counts as touching for conservative advancement: a trillionth of the size.
+double EventBake::tolerance(const Body &b) {
+    return 1e-12 * std::max(1.0, b.sphere ? b.radius : b.reach);
+}
+
+// ---- predictions -----------------------------------------------------------------------
+
+// Predicts body i's earliest event after `now`: leaving or resuming its keys, leaving its
+// cell, meeting a body or an obstacle, or separating from one it overlapped.
+void EventBake::predict(int i, double now) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    Predicted next;
+    if (b.keyed())
+        next = predicted(b.keys_end, EventKind::kActivation);
+    else if (b.resume_at < kNever)
+        next = predicted(b.resume_at, EventKind::kResume);
+    if (b.settles_at < next.t) next = predicted(b.settles_at, EventKind::kSettle);
+    if (!b.active) {
+        set_prediction(i, next);
+        return;
+    }
+    ++count_.predictions;
+    if (b.ignored_obstacles > 0 || b.overlapped_obstacles > 0) recheck_obstacles(i, now, next);
+    if (b.still() && b.sphere) { // still spheres are met, they do not meet: the movers predict
+        set_prediction(i, next);
+        return;
+    }
+    double limit = std::min(horizon_, next.t) - now;
+    if (b.in_grid)
+        if (auto exit = first_exit(from_now(b, now), grid_->bounds(b.cell), limit)) {
+            limit = exit->t;
+            next = predicted(now + exit->t, EventKind::kCell);
+            next.exit = *exit;
+        }
+    std::size_t tested = 0;
+    for_candidates(i, [&](int j) {
+        const Body &o = bodies_[static_cast<size_t>(j)];
+        if (!o.active) return;
+        if (!is_ignored(i, j)) {
+            ++tested;
+            std::optional<Contact> c;
+            if (b.free_sphere() && o.free_sphere()) {
+                double rb = b.radius, ro = o.radius;
+                radii_against(i, j, rb, ro);
+                c = sphere_sphere(from_now(b, now), rb, from_now(o, now), ro, limit);
+            } else if (b.shape && o.shape) {
+                if (!(b.still() && o.still()))
+                    c = mesh_pair(*b.shape, from_now(b, now), *o.shape, from_now(o, now), limit);
+            } else if (!(b.still() && o.still()))
+                c = advance(i, j, -1, now, limit); // may find them overlapping, and ignore them
+            if (c) {
+                next = predicted(now + c->t, EventKind::kBody, j, o.version, *c);
+                limit = c->t;
+            }
+        }
+        if (is_ignored(i, j) || is_overlapped(i, j)) predict_release(i, j, now, limit, next);
+    });
+    count_.done += tested;
+    count_.skipped += (bodies_.size() - 1) - tested;
+    if (b.support >= 0) predict_leave(i, now, limit, next);
+    if (b.shape)
+        predict_mesh_obstacles(i, now, limit, next); // exact: it translates
+    else
+        predict_obstacles(i, now, limit, next); // spheres exact; keyed models by advancement
+    if (b.ignored_obstacles > 0 || b.overlapped_obstacles > 0) recheck_obstacles(i, now, next);
+    // Nothing within the window: it looks again at its end.
+    if (next.t > horizon_) next = predicted(horizon_, EventKind::kRecheck);
+    set_prediction(i, next);
+}
+
+// Two overlapping bodies: the moment they are apart again.
+void EventBake::predict_release(int i, int j, double now, double &limit, Predicted &next) {
+    const Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
+    std::optional<double> s;
+    if (b.free_sphere() && o.free_sphere()) {
+        // |d|^2 - R^2 turns non-negative.
+        const Path path = from_now(b, now), other = from_now(o, now);
+        const glm::dvec3 d = path.p - other.p, e = path.v - other.v, h = 0.5 * (path.a - other.a);
+        const double reach = b.radius + o.radius + touching(b) + touching(o);
+        Quartic gap = {glm::dot(d, d) - reach * reach, 2.0 * glm::dot(d, e),
+                       glm::dot(e, e) + 2.0 * glm::dot(d, h), 2.0 * glm::dot(e, h), glm::dot(h, h)};
+        for (double &c : gap) c = -c;
+        s = first_contact(gap, 0.0, limit);
+    } else if (apart_from_body(b, o, now)) {
+        s = 0.0;
+    } else {
+        // Looked at again after either has moved a quarter of the smaller size.
+        const double size = std::min(b.sphere ? b.radius : b.reach, o.sphere ? o.radius : o.reach);
+        const double speed = point_speed(b, now, 0.0) + point_speed(o, now, 0.0);
+        if (speed > 0.0) s = std::min(limit, 0.25 * size / speed);
+    }
+    if (s && now + *s < next.t) {
+        next = predicted(now + *s, EventKind::kRelease, j);
+        limit = *s;
+    }
+}
+
+// Conservative advancement (keyed_contact.hpp) between body i and body j, or obstacle
+// `obstacle` when j < 0, over [now, now + limit]. Returns the contact, times from now.
+std::optional<Contact> EventBake::advance(int i, int j, int obstacle, double now, double limit) {
+    const Body &b = bodies_[static_cast<size_t>(i)];
+    const Body *o = j >= 0 ? &bodies_[static_cast<size_t>(j)] : nullptr;
+    const Obstacle *ob = obstacle >= 0 ? &obstacles_[static_cast<size_t>(obstacle)] : nullptr;
+    Approach approach;
+    approach.gap = [&](double t) { return o ? gap_between(b, *o, t) : gap_to_obstacle(b, *ob, t); };
+    approach.closing_speed = [&](double t, double dt) {
+        return point_speed(b, t, dt) + (o ? point_speed(*o, t, dt) : 0.0);
+    };
+    const double tol = std::max(tolerance(b), o ? tolerance(*o) : 0.0);
+    const ApproachOutcome out = advance_to_contact(approach, now, now + limit, tol);
+    ++count_.advancements;
+    switch (out.kind) {
+    case ApproachOutcome::kContact: {
+        Contact c;
+        if (o)
+            gap_between(b, *o, out.t, &c);
+        else
+            gap_to_obstacle(b, *ob, out.t, &c);
+        c.t = out.t - now;
+        return c;
+    }
+    case ApproachOutcome::kOverlapping: {
+        // Found inside each other by the advancement (keys that put it there): left alone
+        // until apart, and said once.
+        const int other = o ? j : -1 - obstacle;
+        Contact c;
+        const double gap = o ? gap_between(b, *o, out.t, &c) : gap_to_obstacle(b, *ob, out.t, &c);
+        report_overlap(i, other, out.t, -gap, c.normal);
+        OverlapRecord record;
+        record.model_a = b.model;
+        record.model_b = model_of(other);
+        record.since = out.t;
+        memory_.add(record);
+        ignore(i, other, out.t);
+        return std::nullopt;
+    }
+    case ApproachOutcome::kUndecided:
+        // Too long within a hair of each other: look again from there.
+        if (out.t > now) {
+            Contact c;
+            c.t = out.t - now;
+            c.normal = glm::dvec3(0.0);
+            return c;
+        }
+        return std::nullopt;
+    case ApproachOutcome::kNone:
+        break;
+    }
+    return std::nullopt;
+}
+
+void EventBake::predict_obstacles(int i, double now, double limit, Predicted &next) {
+    const Body &b = bodies_[static_cast<size_t>(i)];
+    std::size_t tested = 0;
+    for (size_t o = 0; o < obstacles_.size(); ++o) {
+        if (b.ignored_obstacles > 0 && is_ignored(i, -1 - static_cast<int>(o))) continue;
+        const Obstacle &ob = obstacles_[o];
+        if (b.turning()) {
+            // Resting or sliding on it without turning: it leaves it by predict_leave.
+            if (b.support == static_cast<int>(o) && b.spin.w == glm::dvec3(0.0)) continue;
+            ++tested;
+            predict_turning_obstacle(i, o, now, limit, next);
+            if (next.kind == EventKind::kObstacle && next.t - now < limit) limit = next.t - now;
+            continue;
+        }
+        if (!b.free_sphere()) {
+            ++tested;
+            if (auto c = advance(i, -1, static_cast<int>(o), now, limit)) {
+                next = predicted(now + c->t, EventKind::kObstacle, static_cast<int>(o), 0, *c);
+                limit = c->t;
+            }
+            continue;
+        }
+        const Path path = from_now(b, now);
+        const double r = radius_against(i, static_cast<int>(o)); // less while overlapping
+        // Broad phase: the swept sphere must reach the obstacle's bounding sphere.
+        const Path fixed{ob.center, glm::dvec3(0.0), glm::dvec3(0.0)};
+        if (!(glm::length(path.p - ob.center) <= r + ob.radius) &&
+            !sphere_sphere(path, r, fixed, ob.radius, limit))
+            continue;
+        // Each triangle only if the swept sphere's box reaches the triangle's box.
+        Box reach = swept_box(path, limit);
+        reach.lo -= glm::dvec3(r);
+        reach.hi += glm::dvec3(r);
+        const bool on_it = b.support == static_cast<int>(o);
+        for (size_t k = 0; k + 2 < ob.corners.size(); k += 3) {
+            if (!reach.overlaps(ob.boxes[k / 3])) continue;
+            if (on_it && in_support_plane(b, ob, k / 3)) continue; // it slides on these
+            ++tested;
+            if (auto c = sphere_triangle(path, r, ob.corners[k], ob.corners[k + 1],
+                                         ob.corners[k + 2], limit)) {
+                next = predicted(now + c->t, EventKind::kObstacle, static_cast<int>(o), 0, *c);
+                limit = c->t;
+            }
+        }
+    }
+    count_.done += tested;
+    count_.skipped += triangle_count_ - std::min(tested, triangle_count_);
+}
+
+// The seed's mesh-mesh tests (mesh_contact.hpp), counted.
+std::optional<Contact> EventBake::mesh_pair(const MeshShape &a, const Path &pa, const MeshShape &b,
+                                            const Path &pb, double limit) {
+    PairStats stats;
+    auto c = mesh_mesh(a, pa, b, pb, limit, &stats);
+    count_.mesh_tests += stats.primitive_tests;
+    return c;
+}
+
+// A free model that is not a sphere against the static models.
+void EventBake::predict_mesh_obstacles(int i, double now, double limit, Predicted &next) {
+    const Body &b = bodies_[static_cast<size_t>(i)];
+    if (b.still()) return;
+    const Path path = from_now(b, now), fixed{};
+    for (size_t o = 0; o < obstacles_.size(); ++o) {
+        if (b.ignored_obstacles > 0 && is_ignored(i, -1 - static_cast<int>(o))) continue;
+        // While it overlaps the obstacle, it is tested moved out by its depth (touching).
+        const glm::dvec3 shift = shift_against(i, static_cast<int>(o));
+        const Path moved{path.p + shift, path.v, path.a};
+        if (auto c =
+                mesh_pair(*b.shape, moved, shape_facing(obstacles_[o], moved.p), fixed, limit)) {
+            c->point -= shift;
+            next = predicted(now + c->t, EventKind::kObstacle, static_cast<int>(o), 0, *c);
+            limit = c->t;
+        }
+    }
+}
+
+// A closed static mesh is solid from outside; for a model inside it (a box in a cube used
+// as a room) it is a room, its faces met from within.
+const MeshShape &EventBake::shape_facing(const Obstacle &o, const glm::dvec3 &p) const {
+    if (!o.shape->closed || !inside(o, p)) return *o.shape;
+    if (!o.room) {
+        std::vector<std::array<uint32_t, 3>> reversed = o.shape->triangles;
+        for (auto &t : reversed) std::swap(t[1], t[2]);
+        o.room = std::make_shared<const MeshShape>(
+            MeshShape::build(o.shape->vertices, std::move(reversed)));
+    }
+    return *o.room;
+}
+
+// Whether p is inside a closed obstacle: a ray from it crosses its surface an odd number of
+// times (in a direction that no axis-aligned edge or face of a generated mesh lies along).
+bool EventBake::inside(const Obstacle &o, const glm::dvec3 &p) {
+    const Box box = o.shape->bounds();
+    if (p.x < box.lo.x || p.y < box.lo.y || p.z < box.lo.z || p.x > box.hi.x || p.y > box.hi.y ||
+        p.z > box.hi.z)
+        return false;
+    const glm::dvec3 ray = glm::normalize(glm::dvec3(1.0, 0.0137, 0.0291)) *
+                           (2.0 * glm::length(box.hi - box.lo) + 1.0);
+    int crossings = 0;
+    for (size_t k = 0; k + 2 < o.corners.size(); k += 3) {
+        // Both faces of the triangle: the seed's test is one-sided.
+        if (ray_triangle(p, ray, o.corners[k], o.corners[k + 1], o.corners[k + 2]) ||
+            ray_triangle(p, ray, o.corners[k], o.corners[k + 2], o.corners[k + 1]))
+            ++crossings;
+    }
+    return crossings % 2 == 1;
+}
+
+// A body overlapping an obstacle is checked again after it has moved by a fraction of its
+// radius (or at its next event, if sooner), and collides with it again once apart.
+void EventBake::recheck_obstacles(int i, double now, Predicted &next) {
+    const Body &b = bodies_[static_cast<size_t>(i)];
+    for (size_t o = 0; o < obstacles_.size(); ++o)
+        if (is_ignored(i, -1 - static_cast<int>(o)) && apart_from_obstacle(b, obstacles_[o], now))
+            unignore(i, -1 - static_cast<int>(o), now);
+    for (size_t o = 0; o < obstacles_.size() && b.overlapped_obstacles > 0; ++o)
+        if (is_overlapped(i, -1 - static_cast<int>(o)) &&
+            apart_after_overlap(i, static_cast<int>(o), now))
+            unoverlap(i, -1 - static_cast<int>(o), now);
+    if ((b.ignored_obstacles == 0 && b.overlapped_obstacles == 0) || b.still()) return;
+    const double wait = recheck_after(b, now);
+    if (wait < kNever && now + wait < next.t) next = predicted(now + wait, EventKind::kRecheck);
+}
+
+// How long a body takes to move a quarter of its size (about), to look again at an obstacle
+// it overlaps or grazed.
+double EventBake::recheck_after(const Body &b, double now) const {
+    const double size = body_size(b);
+    const double speed = point_speed(b, now, 0.0) + std::sqrt(glm::length(b.path.a) * size);
+    return speed > 0.0 ? 0.25 * size / speed : kNever;
+}
+
+void EventBake::set_prediction(int i, const Predicted &p) {
+    predicted_[static_cast<size_t>(i)] = p;
+    queue_->set(static_cast<size_t>(i), p.t);
+}
+
+// ---- turning models: their time of impact (their response: bake_response.cpp) -----------
+
+// The path of turning body b from `now`, times from now (turning_contact.hpp's form).
+TurningPath EventBake::turning_path(const Body &b, double now) const {
+    TurningPath path;
+    path.c0 = b.path.at(now - b.t0);
+    path.v = b.path.velocity(now - b.t0);
+    path.a = b.path.a;
+    path.q0 = b.spin.at(now);
+    path.w = b.spin.w;
+    return path;
+}
+
+TurningMesh EventBake::turning_mesh(const Body &b) const {
+    const ani_mesh_view &mesh = mesh_of(b);
+    return {b.turning_vertices.data(),
+            b.turning_vertices.size(),
+            mesh.triangles,
+            mesh.triangle_count,
+            b.edges.data(),
+            b.edges.size()};
+}
+
+// A turning body against a static model: the first contact within [now, now + limit] at which
+// it moves into the obstacle. A contact found where every point within the contact slack
+// moves away (just after a bounce, as it leaves) is passed: the search goes on a step later,
+// a step in which no point can close the slack (at most 1,000 times; then the contact is
+// reported, and handle() leaves the pair alone until apart).
+void EventBake::predict_turning_obstacle(int i, size_t o, double now, double limit,
+                                         Predicted &next) {
+    const Body &b = bodies_[static_cast<size_t>(i)];
+    const Obstacle &ob = obstacles_[o];
+    const TurningPath path = turning_path(b, now);
+    // Broad phase: the centre cannot come nearer the obstacle's bounding sphere than it is
+    // by more than it travels.
+    const double travel = glm::length(path.v) * limit + 0.5 * glm::length(path.a) * limit * limit;
+    if (glm::length(path.c0 - ob.center) - b.turning_reach - ob.radius > travel) return;
+    const TurningMesh mesh = turning_mesh(b);
+    const TurningMesh soup{ob.shape->vertices.data(),
+                           ob.shape->vertices.size(),
+                           ob.shape->triangles.empty() ? nullptr : &ob.shape->triangles[0][0],
+                           ob.shape->triangles.size(),
+                           ob.shape->edges.data(),
+                           ob.shape->edges.size()};
+    constexpr double kSlack = 1e-9; // turning_contact.hpp's contact slack (m)
+    double from = 0.0;
+    TurningContact c;
+    for (int tries = 0;; ++tries) {
+        c = turning_mesh_contact(mesh, path, soup, TurningPath{}, from, limit);
+        count_.mesh_tests += static_cast<std::size_t>(c.steps) + 1;
+        outward(c, path);
+        if (!(c.found() && tries < 1000 && !approaching(b, c, now + c.t))) break;
+        const double speed = point_speed(b, now + c.t, 1e-6);
+        if (!(speed > 0.0)) return;                        // nothing moves: nothing to meet
+        from = c.t + std::min(1e-6, 0.5 * kSlack / speed); // the bound holds for 1e-6 s
+        if (from >= limit) return;
+    }
+    if (c.kind == TurningContact::kInvalid)
+        throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
+                                               name_of(scene_->models[b.model]) +
+                                               "' would turn to a value that is not finite");
+    if (c.kind == TurningContact::kNone || now + c.t >= next.t) return;
+    Contact contact;
+    contact.t = c.t;
+    contact.point = c.point;
+    // Undecided: looked at again from there (a zero normal).
+    contact.normal = c.found() ? c.normal : glm::dvec3(0.0);
+    next = predicted(now + c.t, EventKind::kObstacle, static_cast<int>(o), 0, contact);
+    next.points = c.found() ? c.points : std::vector<glm::dvec3>{};
+}
+
+// The normal of a contact with a static model points from it towards the body's centre (for a
+// contact found as they leave each other, turning_mesh_contact orients it by their motion).
+void EventBake::outward(TurningContact &c, const TurningPath &path) {
+    if (c.found() && glm::dot(c.normal, path.center(c.t) - c.point) < 0.0) c.normal = -c.normal;
+}
+
+// Whether any point of a contact found at `now` moves into the obstacle.
+bool EventBake::approaching(const Body &b, const TurningContact &c, double now) const {
+    const double still = 1e-12 * std::max(1.0, point_speed(b, now, 0.0));
+    std::vector<glm::dvec3> points = c.points;
+    if (points.empty()) points.push_back(c.point);
+    for (const glm::dvec3 &p : points)
+        if (glm::dot(point_velocity(b, p, now), c.normal) < -still) return true;
+    return false;
+}
+
+} // namespace physics_custom::bake

@@ -1,0 +1,407 @@
+// The event-driven bake's response to a contact (physics.md, "Where the code is"): release from
+// the keys, the seed's reflections (response.hpp), and the responses with restitution, friction
+// and turning (impulse.hpp, simultaneous_contact.hpp), in three sections: spheres, models that
+// are not spheres, and models that turn.
+#include "event_bake_detail.hpp"
+
+namespace physics_custom::bake {
+
+// A keyed body that collides is released from its keys (physics.md): free from the contact
+// until its next key, with the velocity its keys gave it, or at rest without Dynamics.
+void EventBake::release(int i, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    emit_keyed(b.model, b.keyed_from, t);
+    unfile(i);
+    const ani_body_state start = leaving_keys(b.model, t);
+    activate(b, t, start);
+    if (!b.dynamics) stop(b);
+    b.resume_at = next_key(b.model, t);
+    file(i, t);
+    ++count_.releases;
+}
+
+void EventBake::collide_obstacle(int i, const Obstacle &o, const Contact &contact,
+                                 const std::vector<glm::dvec3> &points, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    if (b.keyed()) release(i, t);
+    const glm::dvec3 n = contact.normal;
+    const glm::dvec3 v = b.path.velocity(t - b.t0);
+    ani_collision_event e{};
+    e.t = t;
+    e.a = b.model;
+    e.b = o.model;
+    e.normal = ani(n);
+    e.point = ani(contact.point);
+    e.speed = std::max(0.0, -glm::dot(v, n));
+    if (b.turning()) { // a turning model: the speed of the touching point
+        e.speed = std::max(0.0, -glm::dot(point_velocity(b, contact.point, t), n));
+        if (!b.dynamics)
+            restart(b, t, glm::dvec3(0.0), true);
+        else if (respond_turning_to_obstacle(i, o, contact, points, t)) {
+            report(e); // resting from the Zeno bounces' accumulation time
+            return;
+        }
+        after_contact(i, t);
+        report(e);
+        return;
+    }
+    // Off a model without Dynamics: a reflection; without Dynamics itself it stops. With
+    // restitution or friction: the contact impulse (the sections below).
+    if (!b.dynamics || !sphere_responds(b, scene_->models[o.model]))
+        restart(b, t, reflect(v, n), !b.dynamics);
+    else if (respond_to_obstacle(i, o, n, v, t)) {
+        report(e); // resting from the Zeno bounces' accumulation time
+        return;
+    }
+    after_contact(i, t);
+    report(e);
+}
+
+void EventBake::collide_bodies(int i, int j, const Contact &contact, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
+    const glm::dvec3 n = contact.normal;
+    if (b.turning() || o.turning()) { // the turning models' section below
+        const ImpulseBody ib = impulse_body(b, contact.point, t),
+                          io = impulse_body(o, contact.point, t);
+        const bool b_wall = b.keyed(), o_wall = o.keyed();
+        ani_collision_event e{};
+        e.t = t;
+        e.a = b.model;
+        e.b = o.model;
+        e.normal = ani(n);
+        e.point = ani(contact.point);
+        e.speed = std::max(0.0, -glm::dot(point_velocity_of(ib) - point_velocity_of(io), n));
+        if (b_wall) release(i, t);
+        if (o_wall) release(j, t);
+        respond_turning_pair(b, ib, b_wall, o, io, o_wall, n, t);
+        after_contact(i, t);
+        after_contact(j, t);
+        report(e);
+        return;
+    }
+    // A keyed body is a wall of infinite mass moving as its keys say, for the free body it
+    // meets: that one reflects off it with the relative velocity (physics.md).
+    const glm::dvec3 v = point_velocity(b, contact.point, t),
+                     vo = point_velocity(o, contact.point, t);
+    const bool b_wall = b.keyed() && !o.keyed(), o_wall = o.keyed() && !b.keyed();
+    if (b.keyed()) release(i, t);
+    if (o.keyed()) release(j, t);
+    ani_collision_event e{};
+    e.t = t;
+    e.a = b.model;
+    e.b = o.model;
+    e.normal = ani(n);
+    e.point = ani(contact.point);
+    e.speed = std::max(0.0, -glm::dot(v - vo, n));
+    if (b_wall || o_wall) {
+        Body &free = b_wall ? o : b;
+        const glm::dvec3 v_free = b_wall ? vo : v, v_wall = b_wall ? v : vo,
+                         n_free = b_wall ? -n : n;
+        if (free.dynamics && sphere_responds(free, scene_->models[(b_wall ? b : o).model]))
+            respond_to_wall(free, v_free, v_wall, n_free, (b_wall ? b : o).material, t);
+        else
+            restart(free, t,
+                    free.dynamics ? reflect_off_moving_wall(v_free, v_wall, n_free)
+                                  : glm::dvec3(0.0),
+                    !free.dynamics);
+    } else if (b.dynamics && o.dynamics && sphere_responds(b, scene_->models[o.model])) {
+        respond_to_sphere(b, v, o, vo, n, t);
+    } else if (b.dynamics && o.dynamics) {
+        const double ma = scene_->models[b.model].desc->mass,
+                     mb = scene_->models[o.model].desc->mass;
+        const auto [va, vb] = elastic_exchange(ma, v, mb, vo, n);
+        restart(b, t, va, false);
+        restart(o, t, vb, false);
+    } else {
+        // A model without Dynamics stops at the contact; one with Dynamics reflects off it as
+        // off a wall moving at its velocity then.
+        if (b.dynamics && sphere_responds(b, scene_->models[o.model]))
+            respond_to_wall(b, v, vo, n, o.material, t);
+        else
+            restart(b, t, b.dynamics ? reflect_off_moving_wall(v, vo, n) : glm::dvec3(0.0),
+                    !b.dynamics);
+        if (o.dynamics && sphere_responds(o, scene_->models[b.model]))
+            respond_to_wall(o, vo, v, -n, b.material, t);
+        else
+            restart(o, t, o.dynamics ? reflect_off_moving_wall(vo, v, -n) : glm::dvec3(0.0),
+                    !o.dynamics);
+    }
+    after_contact(i, t);
+    after_contact(j, t);
+    report(e);
+}
+
+// Spheres: how a free sphere responds to a contact
+// when the pair's restitution or friction is not the seed's (issue 18), and the turning of a
+// sphere that `rotates` (start_spin, turn, emit_spin: bake_bodies.cpp). The contact impulse itself
+// is impulse.hpp's; the Zeno rule is zeno.hpp's. With e = 1 and mu = 0 the seed's reflections
+// (response.hpp) stay in use, bit for bit.
+
+// ---- restitution, friction and spin ----------------------------------------------------
+
+// Whether a body meets the model with something other than the seed's elastic,
+// frictionless reflection (a model that is not a sphere: the next section).
+bool EventBake::sphere_responds(const Body &b, const ani_physics_model &other) const {
+    if (!b.sphere) return mesh_responds(b, other);
+    const Material mo = material_of(*other.desc);
+    return combined_restitution(b.material.restitution, mo.restitution) != 1.0 ||
+           combined_friction(b.material.friction, mo.friction) != 0.0;
+}
+
+// A free sphere as the impulse module sees it: its contact point at -radius n from its
+// centre (n from the other body toward it).
+ImpulseBody EventBake::sphere_body(const Body &b, double mass, const glm::dvec3 &v,
+                                   const glm::dvec3 &n) {
+    ImpulseBody a;
+    a.inv_mass = 1.0 / mass;
+    if (b.spin.on) a.inv_inertia = glm::dmat3(sphere_inverse_inertia(mass, b.radius));
+    a.v = v;
+    a.w = b.spin.on ? b.spin.w : glm::dvec3(0.0);
+    a.r = -b.radius * n;
+    return a;
+}
+
+// Off a static model: the impulse against infinite mass, and the Zeno rule (zeno.hpp) for a
+// ball whose bounces on a face have become too small to follow. True when it was put on
+// the face (resting or sliding from the accumulation time).
+bool EventBake::respond_to_obstacle(int i, const Obstacle &o, const glm::dvec3 &n,
+                                    const glm::dvec3 &v, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    const Material mo = material_of(*scene_->models[o.model].desc);
+    const double e = combined_restitution(b.material.restitution, mo.restitution),
+                 mu = combined_friction(b.material.friction, mo.friction);
+    const ImpulseBody a = sphere_body(b, 1.0, v, n); // against infinite mass: any mass
+    const ImpulseResult r = contact_impulse(a, ImpulseBody{}, n, e, mu);
+    const double vn = glm::dot(r.va, n), g_n = -glm::dot(b.free_a, n);
+    const glm::dvec3 c = b.path.at(t - b.t0), v_t = r.va - vn * n;
+    if (zeno_settles(vn, g_n, e, std::max(1.0, glm::length(c)))) {
+        // On the face it must have nothing left to rub: no friction, or no slip of the
+        // touching point and either no speed along the face or nothing pulling it along
+        // (rolling on a level face at constant speed needs no friction; on a slope it would).
+        ImpulseBody after = a;
+        after.v = r.va;
+        after.w = r.wa;
+        const glm::dvec3 u = point_velocity_of(after), slip = u - glm::dot(u, n) * n;
+        const glm::dvec3 a_t = b.free_a - glm::dot(b.free_a, n) * n;
+        const double still = 1e-12 * std::max(1.0, glm::length(v));
+        // (A model that is not a sphere slides on at the speed along the face it has:
+        // the next section.)
+        if (!b.sphere || mu == 0.0 ||
+            (glm::length(slip) <= still && (glm::length(v_t) <= still || a_t == glm::dvec3(0.0)))) {
+            restart(b, t, glm::length(v_t) <= still && mu != 0.0 ? glm::dvec3(0.0) : v_t, false);
+            if (b.spin.on) turn(b, t, r.wa);
+            if (settle_after_bounces(i, o, n, t)) {
+                b.settles_at = zeno_accumulation(t, vn, g_n, e);
+                return true;
+            }
+        }
+    }
+    restart(b, t, r.va, false);
+    if (b.spin.on) turn(b, t, r.wa);
+    return false;
+}
+
+// Off a keyed model (infinite mass) moving at v_wall where they touch, or off a free model
+// without Dynamics, as off a wall moving at its velocity.
+void EventBake::respond_to_wall(Body &b, const glm::dvec3 &v, const glm::dvec3 &v_wall,
+                                const glm::dvec3 &n, const Material &wall, double t) {
+    const double e = combined_restitution(b.material.restitution, wall.restitution),
+                 mu = combined_friction(b.material.friction, wall.friction);
+    ImpulseBody w;
+    w.v = v_wall;
+    const ImpulseResult r = contact_impulse(sphere_body(b, 1.0, v, n), w, n, e, mu);
+    restart(b, t, r.va, false);
+    if (b.spin.on) turn(b, t, r.wa);
+}
+
+// Two free spheres with Dynamics: the impulse between their masses (n from o toward b).
+void EventBake::respond_to_sphere(Body &b, const glm::dvec3 &v, Body &o, const glm::dvec3 &vo,
+                                  const glm::dvec3 &n, double t) {
+    const double ma = scene_->models[b.model].desc->mass, mb = scene_->models[o.model].desc->mass;
+    for (const Body *x : {&b, &o}) {
+        const double m = x == &b ? ma : mb;
+        if (!(m > 0.0) || !std::isfinite(m))
+            throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
+                                                   name_of(scene_->models[x->model]) +
+                                                   "' needs a finite mass > 0 to collide");
+    }
+    const double e = combined_restitution(b.material.restitution, o.material.restitution),
+                 mu = combined_friction(b.material.friction, o.material.friction);
+    const ImpulseResult r =
+        contact_impulse(sphere_body(b, ma, v, n), sphere_body(o, mb, vo, -n), n, e, mu);
+    restart(b, t, r.va, false);
+    restart(o, t, r.vb, false);
+    if (b.spin.on) turn(b, t, r.wa);
+    if (o.spin.on) turn(o, t, r.wb);
+}
+
+// Models that are not spheres: how a free model
+// that is not a sphere responds to a contact when the pair's restitution or friction is not the
+// seed's (issue 18), while it moves without turning (a model that turns: the last section): it
+// is then, for the impulse module, a body of zero inverse inertia: the normal relative velocity of
+// the centres becomes -e times it, and Coulomb friction takes at most mu times the normal impulse
+// off their tangential relative velocity, never more than stops it. The sphere section's responses
+// do exactly that for it (its contact offset does not matter without inertia); this section adds
+// what differs: which models take that path, and where the Zeno rule puts one on its support (the
+// flat region of the face it met, settle_on, instead of try_settle's sphere test). Unlike a sphere,
+// it is put there even while it still slips (mu > 0): it slides on from then at the speed along the
+// face it has, without the friction of the bounces too small to follow (at most mu (1 + e) v / (1 -
+// e) for normal speed v, below 1e-4 m/s at the threshold); following them would leave it bouncing
+// ever lower instead. With e = 1 and mu = 0 the seed's reflections stay in use, bit for bit.
+
+// Whether a model that is not a sphere meets the other with something other than the seed's
+// elastic, frictionless reflection.
+bool EventBake::mesh_responds(const Body &b, const ani_physics_model &other) const {
+    if (b.sphere || b.spin.on) return false; // a turning one: the last section
+    const Material mo = material_of(*other.desc);
+    return combined_restitution(b.material.restitution, mo.restitution) != 1.0 ||
+           combined_friction(b.material.friction, mo.friction) != 0.0;
+}
+
+// The Zeno rule puts body i on the face of obstacle o it has just met with normal n (from the
+// face toward it): a sphere by its own test, another model on the flat region of that face's
+// plane, touching it with the vertices that lie in it.
+bool EventBake::settle_after_bounces(int i, const Obstacle &o, const glm::dvec3 &n, double t) {
+    if (bodies_[static_cast<size_t>(i)].sphere) return try_settle(i, t);
+    return settle_on(i, static_cast<int>(&o - obstacles_.data()), n, t);
+}
+
+// Models that are not spheres and turn from their contacts (issue 18; check_turning says which).
+// Between events such a body's centre of mass (its origin) follows its parabola and it turns at
+// constant angular velocity (a spherical top: no torque, so w stays), both closed forms. Its time
+// of impact with a static model is turning_contact.hpp's conservative advancement (certified: never
+// past the true time, short of it by 1e-13 s at most); against other bodies it is the generic
+// advancement (advance()) over its turning pose. At an impact every point touching at once
+// shares the impulse (simultaneous_contact.hpp), applied by impulse.hpp with friction at their
+// centre of pressure.
+
+// ---- turning models: their response (their time of impact: bake_prediction.cpp) -----------
+
+// Where a turning body touches, as offsets from its centre of mass: each touching point that
+// is one of its vertices (within the slack) exactly as its pose places that vertex, so that
+// the corners of a face landing flat are exactly symmetric about its centre.
+std::vector<glm::dvec3>
+EventBake::contact_offsets(const Body &b, const std::vector<glm::dvec3> &points, double t) const {
+    const glm::dvec3 c = b.path.at(t - b.t0);
+    const glm::dmat3 turn = glm::dmat3(glm::mat3_cast(b.spin.at(t)));
+    std::vector<glm::dvec3> offsets;
+    for (const glm::dvec3 &p : points) {
+        glm::dvec3 best = p - c;
+        double nearest = 1e-9;
+        for (const glm::dvec3 &v : b.turning_vertices) {
+            const glm::dvec3 r = turn * v;
+            const double d = glm::length(p - (c + r));
+            if (d <= nearest) {
+                nearest = d;
+                best = r;
+            }
+        }
+        offsets.push_back(best);
+    }
+    return offsets;
+}
+
+// A body as the impulse module sees it at point `point` (t): a turning model or a sphere
+// that rotates with its inverse inertia; a keyed model, or one without Dynamics, of infinite
+// mass moving as it does there.
+ImpulseBody EventBake::impulse_body(const Body &b, const glm::dvec3 &point, double t) const {
+    ImpulseBody x;
+    if (b.keyed() || !b.dynamics) {
+        x.v = point_velocity(b, point, t);
+        return x;
+    }
+    const double m = scene_->models[b.model].desc->mass;
+    if (!(m > 0.0) || !std::isfinite(m))
+        throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
+                                               name_of(scene_->models[b.model]) +
+                                               "' needs a finite mass > 0 to collide");
+    x.inv_mass = 1.0 / m;
+    x.v = b.path.velocity(t - b.t0);
+    x.r = point - b.path.at(t - b.t0);
+    if (b.turning()) {
+        x.inv_inertia = glm::dmat3(b.inv_inertia);
+        x.w = b.spin.w;
+    } else if (b.sphere && b.spin.on) {
+        x.inv_inertia = glm::dmat3(sphere_inverse_inertia(m, b.radius));
+        x.w = b.spin.w;
+    }
+    return x;
+}
+
+// A turning body meets static model o at `points` (world space; at least the contact's
+// point) with normal n: the impulse of the pair's restitution and friction at the points'
+// centre of pressure. The Zeno rule puts it on the face when its bounces there have become
+// too small to follow and it does not turn (a box landing flat). True when it was put there.
+bool EventBake::respond_turning_to_obstacle(int i, const Obstacle &o, const Contact &contact,
+                                            const std::vector<glm::dvec3> &points, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    const Material mo = material_of(*scene_->models[o.model].desc);
+    const double e = combined_restitution(b.material.restitution, mo.restitution),
+                 mu = combined_friction(b.material.friction, mo.friction);
+    const glm::dvec3 n = contact.normal, c = b.path.at(t - b.t0);
+    ImpulseBody a = impulse_body(b, contact.point, t);
+    const std::vector<glm::dvec3> offsets =
+        contact_offsets(b, points.empty() ? std::vector<glm::dvec3>{contact.point} : points, t);
+    std::vector<glm::dvec3> at;
+    for (const glm::dvec3 &r : offsets) at.push_back(c + r);
+    // One point: its impulse. Several: their impulses together, at their centre of pressure.
+    ImpulseResult r;
+    std::optional<SimultaneousImpulse> together;
+    if (offsets.size() > 1)
+        together = simultaneous_impulse(a, c, ImpulseBody{}, glm::dvec3(0.0), at, n, e);
+    if (together) {
+        a.r = together->centre - c;
+        // Within rounding of straight below the centre of mass (a face landing flat: the
+        // touching points' coordinates leave 1e-14 of their size), exactly below it, so that
+        // it gets no spin from rounding.
+        const glm::dvec3 across = a.r - glm::dot(a.r, n) * n;
+        if (glm::length(across) <= 1e-12 * b.turning_reach) a.r = glm::dot(a.r, n) * n;
+        r = contact_impulse_of(a, ImpulseBody{}, n, together->normal, mu);
+    } else { // the point that moves into it fastest
+        a.r = offsets[0];
+        for (const glm::dvec3 &r_k : offsets)
+            if (glm::dot(b.path.velocity(t - b.t0) + glm::cross(b.spin.w, r_k), n) <
+                glm::dot(point_velocity_of(a), n))
+                a.r = r_k;
+        r = contact_impulse(a, ImpulseBody{}, n, e, mu);
+    }
+    restart(b, t, r.va, false);
+    const double vn = glm::dot(r.va, n), g_n = -glm::dot(b.free_a, n),
+                 scale = std::max(1.0, glm::length(c));
+    // The Zeno rule, for a model that does not turn, or turns so slowly that no point of it
+    // moves as fast as the bounces too small to follow (then it stops turning).
+    if (zeno_settles(vn, g_n, e, scale) &&
+        glm::length(r.wa) * b.turning_reach <= std::sqrt(2.0 * g_n * kZenoHeight * scale)) {
+        turn(b, t, glm::dvec3(0.0));
+        if (settle_after_bounces(i, o, n, t)) {
+            b.settles_at = zeno_accumulation(t, vn, g_n, e);
+            return true;
+        }
+    }
+    turn(b, t, r.wa);
+    return false;
+}
+
+// Two bodies, one or both turning, meet with normal n (from o towards b): the impulse between
+// them, ib and io as impulse_body() saw them before a keyed one was released (a keyed model
+// is a wall of infinite mass moving as its keys say; one without Dynamics is too, and stops
+// there, as the seed's do).
+void EventBake::respond_turning_pair(Body &b, const ImpulseBody &ib, bool b_wall, Body &o,
+                                     const ImpulseBody &io, bool o_wall, const glm::dvec3 &n,
+                                     double t) {
+    const double e = combined_restitution(b.material.restitution, o.material.restitution),
+                 mu = combined_friction(b.material.friction, o.material.friction);
+    const ImpulseResult r = contact_impulse(ib, io, n, e, mu);
+    for (Body *x : {&b, &o}) {
+        const bool first = x == &b;
+        if (first ? b_wall : o_wall) continue; // released from its keys, moving as they did
+        if (!x->dynamics) {
+            restart(*x, t, glm::dvec3(0.0), true);
+            continue;
+        }
+        restart(*x, t, first ? r.va : r.vb, false);
+        if (x->spin.on) turn(*x, t, first ? r.wa : r.wb);
+    }
+}
+
+} // namespace physics_custom::bake

@@ -1,0 +1,213 @@
+// The event-driven bake's rest manager (physics.md, "Where the code is"): a body put on the flat
+// part of a static model (resting or sliding), where it leaves that support, and what a contact
+// does to it. Relies on zeno.hpp for the Zeno rule and bake_prediction.cpp for the gaps.
+#include "event_bake_detail.hpp"
+
+namespace physics_custom::bake {
+
+// ---- resting and sliding on static models ---------------------------------------------
+
+bool EventBake::in_support_plane(const Body &b, const Obstacle &o, size_t k) {
+    return glm::dot(o.normals[k], b.support_n) > 1.0 - 1e-9 &&
+           std::abs(o.offsets[k] - b.support_d) <= 1e-9 * (1.0 + std::abs(b.support_d));
+}
+
+// A free sphere touching the face of a static model, not moving into or out of it, with its
+// acceleration not pulling it away, rests or slides on it: the face holds it up (the part of
+// its acceleration into the face is cancelled) until it slides off the flat region the face
+// belongs to. Without this a ball placed on a floor under gravity would meet the floor with
+// zero speed at every instant.
+bool EventBake::try_settle(int i, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    if (!b.free_sphere() || b.support >= 0 || b.motion == ANI_MOTION_REST) return false;
+    const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
+    const double tol = touching(b);
+    for (size_t o = 0; o < obstacles_.size(); ++o) {
+        const Obstacle &ob = obstacles_[o];
+        if (glm::length(c - ob.center) > b.radius + ob.radius + tol) continue;
+        if (b.ignored_obstacles > 0 && is_ignored(i, -1 - static_cast<int>(o))) continue;
+        const double r = radius_against(i, static_cast<int>(o)); // less while overlapping
+        Box near{c - glm::dvec3(r + tol), c + glm::dvec3(r + tol)};
+        for (size_t k = 0; k < ob.boxes.size(); ++k) {
+            const glm::dvec3 n = ob.normals[k];
+            if (n == glm::dvec3(0.0) || !near.overlaps(ob.boxes[k])) continue;
+            const double h =
+                glm::dot(n, c) - ob.offsets[k]; // height of the center above the face's plane
+            if (std::abs(h - r) > tol) continue;
+            const glm::dvec3 q = closest_point_on_triangle(
+                c, ob.corners[3 * k], ob.corners[3 * k + 1], ob.corners[3 * k + 2]);
+            if (glm::length((c - q) - h * n) > tol)
+                continue; // nearest to an edge or a corner, not the face
+            if (glm::dot(b.free_a, n) > 0.0) continue; // pulled away from it
+            if (std::abs(glm::dot(v, n)) > 1e-9 * std::max(1.0, glm::length(v)))
+                continue; // bouncing
+            Body held = b;
+            held.t0 = t;
+            held.path =
+                Path{c - (h - r) * n, v - glm::dot(v, n) * n, b.free_a - glm::dot(b.free_a, n) * n};
+            held.support = static_cast<int>(o);
+            held.support_n = n;
+            held.support_d = ob.offsets[k];
+            held.support_edges = support_boundary(ob, held);
+            held.support_feet = {-r * n};
+            if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t))))
+                continue; // on the rim of the flat region, on its way off
+            close_segment(b, t);
+            held.motion = ANI_MOTION_FREE;
+            ++held.version;
+            b = std::move(held);
+            return true;
+        }
+    }
+    return false;
+}
+
+// A free model that is not a sphere, meeting a face of a static model with no speed along its
+// normal and pulled into it, rests or slides on the flat region of that face's plane.
+bool EventBake::settle_on(int i, int o, const glm::dvec3 &n, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    // (A turning model settles only while it does not turn.)
+    if (!(b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))) || b.support >= 0 ||
+        b.motion == ANI_MOTION_REST || !(glm::dot(b.free_a, n) < 0.0))
+        return false;
+    const Obstacle &ob = obstacles_[static_cast<size_t>(o)];
+    const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
+    // Where its tests against the obstacle place it: moved out by its depth while it
+    // overlaps it (held at that depth).
+    const glm::dvec3 placed_c = c + shift_against(i, o);
+    // The face: one of the obstacle's, in the plane through the contact with normal n.
+    int face = -1;
+    for (size_t k = 0; k < ob.normals.size() && face < 0; ++k)
+        if (glm::dot(ob.normals[k], n) > 1.0 - 1e-9) face = static_cast<int>(k);
+    if (face < 0) return false;
+    Body held = b;
+    held.support = o;
+    held.support_n = n;
+    // Of the faces facing that way, the plane the body touches: the nearest below its center.
+    double best = kNever;
+    for (size_t k = 0; k < ob.normals.size(); ++k)
+        if (glm::dot(ob.normals[k], n) > 1.0 - 1e-9) {
+            const double below = glm::dot(n, placed_c) - ob.offsets[k];
+            if (below >= 0.0 && below < best) {
+                best = below;
+                held.support_d = ob.offsets[k];
+            }
+        }
+    if (!(best < kNever)) return false;
+    held.support_edges = support_boundary(ob, held);
+    if (held.support_edges.empty()) return false;
+    held.support_feet.clear();
+    const std::vector<glm::dvec3> corners = placed_vertices(b, t);
+    const double size = std::max(1.0, 2.0 * body_size(b));
+    for (const glm::dvec3 &corner : corners)
+        if (std::abs(glm::dot(n, placed_c + corner) - held.support_d) <= 1e-9 * size)
+            held.support_feet.push_back(corner);
+    if (held.support_feet.empty()) return false;
+    held.t0 = t;
+    held.path = Path{c, v - glm::dot(v, n) * n, b.free_a - glm::dot(b.free_a, n) * n};
+    if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t)))) return false;
+    close_segment(b, t);
+    held.motion = ANI_MOTION_FREE;
+    ++held.version;
+    b = std::move(held);
+    return true;
+}
+
+// The edges that bound the flat region of an obstacle in a body's support plane: those of
+// its triangles in that plane that only one of them has, with their outward normal.
+std::vector<std::array<glm::dvec3, 3>> EventBake::support_boundary(const Obstacle &o,
+                                                                   const Body &b) {
+    auto less = [](const glm::dvec3 &x, const glm::dvec3 &y) {
+        return x.x != y.x ? x.x < y.x : x.y != y.y ? x.y < y.y : x.z < y.z;
+    };
+    struct Edge {
+        glm::dvec3 a, b, third;
+        int count;
+    };
+    std::vector<Edge> edges;
+    for (size_t k = 0; k < o.boxes.size(); ++k) {
+        if (!in_support_plane(b, o, k)) continue;
+        for (int e = 0; e < 3; ++e) {
+            glm::dvec3 p = o.corners[3 * k + static_cast<size_t>(e)],
+                       q = o.corners[3 * k + static_cast<size_t>((e + 1) % 3)];
+            if (less(q, p)) std::swap(p, q);
+            edges.push_back({p, q, o.corners[3 * k + static_cast<size_t>((e + 2) % 3)], 1});
+        }
+    }
+    std::sort(edges.begin(), edges.end(), [&](const Edge &x, const Edge &y) {
+        return less(x.a, y.a) || (x.a == y.a && less(x.b, y.b));
+    });
+    std::vector<std::array<glm::dvec3, 3>> boundary;
+    for (size_t k = 0; k < edges.size();) {
+        size_t same = k + 1;
+        while (same < edges.size() && edges[same].a == edges[k].a && edges[same].b == edges[k].b)
+            ++same;
+        if (same == k + 1) {
+            const Edge &e = edges[k];
+            glm::dvec3 m = glm::normalize(glm::cross(e.b - e.a, b.support_n));
+            if (glm::dot(m, e.third - e.a) > 0.0) m = -m; // away from the triangle
+            boundary.push_back({e.a, e.b, m});
+        }
+        k = same;
+    }
+    return boundary;
+}
+
+// When the last of the points it touches the support with leaves the flat region, within
+// [now, now + limit]. (A model that cannot turn tips over nothing: it is held until it is
+// wholly past the rim.)
+std::optional<double> EventBake::leaves_support(const Body &b, double now, double limit) const {
+    const Path c = from_now(b, now);
+    std::optional<double> last;
+    for (const glm::dvec3 &foot : b.support_feet) {
+        const Path p{c.p + foot, c.v, c.a};
+        std::optional<double> first;
+        for (const auto &[ea, eb, m] : b.support_edges) {
+            const auto s =
+                upward_root(glm::dot(m, p.p - ea), glm::dot(m, p.v), 0.5 * glm::dot(m, p.a), limit);
+            if (!s || (first && *s >= *first)) continue;
+            const glm::dvec3 e = eb - ea;
+            const double along = glm::dot(p.at(*s) - ea, e) / glm::dot(e, e);
+            if (along < -1e-9 || along > 1.0 + 1e-9)
+                continue; // it passes the line beyond this edge
+            first = s;
+        }
+        if (!first) return std::nullopt; // this one stays on within the window
+        last = last ? std::max(*last, *first) : *first;
+    }
+    return last;
+}
+
+void EventBake::predict_leave(int i, double now, double limit, Predicted &next) {
+    if (auto s = leaves_support(bodies_[static_cast<size_t>(i)], now, limit);
+        s && now + *s < next.t)
+        next = predicted(now + *s, EventKind::kLeave);
+}
+
+// Nothing holds it up any more: its own acceleration again.
+void EventBake::unsupport(Body &b, double t) {
+    if (b.support < 0) return;
+    const glm::dvec3 v = b.path.velocity(t - b.t0);
+    close_segment(b, t);
+    b.path = Path{b.path.at(t - b.t0), v, b.free_a};
+    b.t0 = t;
+    b.support = -1;
+    b.support_edges.clear();
+    b.support_feet.clear();
+    b.settles_at = kNever;
+    ++b.version;
+}
+
+// After a contact: a body knocked off its support loses it; one that comes to slide on a
+// face gains one.
+void EventBake::after_contact(int i, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    if (b.support >= 0) {
+        const glm::dvec3 v = b.path.velocity(t - b.t0);
+        if (std::abs(glm::dot(v, b.support_n)) > 1e-9 * std::max(1.0, glm::length(v)))
+            unsupport(b, t);
+    }
+    try_settle(i, t);
+}
+
+} // namespace physics_custom::bake

@@ -1,0 +1,432 @@
+// The internals of the event-driven bake (event_bake.hpp is its interface; physics.md, "Where the
+// code is"): the bodies and obstacles, the predicted events, and the class EventBake, whose
+// member functions are defined by stage in event_bake.cpp and bake_*.cpp. Private to the plugin.
+#pragma once
+
+#include "event_bake.hpp"
+
+#include "event_queue.hpp"
+#include "free_motion.hpp"
+#include "grid.hpp"
+#include "impulse.hpp"
+#include "keyed_contact.hpp"
+#include "mass_properties.hpp"
+#include "material.hpp"
+#include "mesh_contact.hpp"
+#include "mesh_distance.hpp"
+#include "overlap_memory.hpp"
+#include "polynomial.hpp"
+#include "response.hpp"
+#include "scene_print.hpp"
+#include "simultaneous_contact.hpp"
+#include "spin.hpp"
+#include "time_of_impact.hpp"
+#include "turning_contact.hpp"
+#include "zeno.hpp"
+
+#include <animator/plugin_cpp.hpp>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtx/euler_angles.hpp>
+#include <glm/mat3x3.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace physics_custom::bake {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+
+inline glm::dvec3 vec(const ani_vec3 &v) {
+    return {v.x, v.y, v.z};
+}
+inline ani_vec3 ani(const glm::dvec3 &v) {
+    return {v.x, v.y, v.z};
+}
+
+inline const char *name_of(const ani_physics_model &m) {
+    return m.desc && m.desc->name ? m.desc->name : "?";
+}
+
+// A model that takes part in collisions and moves: a sphere (Dynamics or Gravity on), or any
+// model with a mesh while its keys drive it (a moving wall). Over the bake a body is keyed (its
+// keys move it), free (a closed-form segment), or waiting (keyed, but with nothing to collide).
+struct Body {
+    enum class Mode { kKeyed, kFree };
+    uint32_t model = 0;
+    bool sphere = false; // the seed's sphere special case; otherwise the model's triangles
+    double radius = 0.0; // for a sphere: its radius when free
+    double reach = 0.0;  // the farthest a vertex is from the model's origin, in model space
+    std::vector<std::array<uint32_t, 2>> edges; // not a sphere: its mesh's edges, each once
+    bool dynamics = false;
+    Mode mode = Mode::kFree;
+    bool active = false;      // free and colliding, or keyed and colliding
+    double keys_end = kNever; // when its last key passes (then it is free)
+    double resume_at =
+        kNever;              // released from its keys at a contact: the next key, where they resume
+    double keyed_from = 0.0; // start of the current keyed stretch (to report it)
+    double t0 = 0.0;         // start of the current free segment
+    Path path;               // free: center(t) = path.at(t - t0)
+    int motion = ANI_MOTION_FREE;
+    uint64_t version =
+        0; // counts the changes of path: events predicted against an older one are stale
+    bool in_grid = false; // free spheres only
+    Cell cell{};
+    int ignored_obstacles = 0;    // obstacles it overlapped and does not collide with until apart
+    int overlapped_obstacles = 0; // obstacles it overlapped and touches at that depth until apart
+    glm::dvec3 free_a{0.0};       // its acceleration when nothing holds it up (gravity, or none)
+    // Resting or sliding on a flat part of a static model: that model, the plane of the face
+    // (n . x = d), and the boundary of the flat region it is on (edge start, end, and outward
+    // normal in the plane), where it leaves the support.
+    int support = -1;
+    glm::dvec3 support_n{0.0};
+    // A model that is not a sphere, free after its last key: its triangles, turned and scaled as
+    // its last key left them, relative to its center (the seed's mesh-mesh tests).
+    std::shared_ptr<const MeshShape> shape;
+    double support_d = 0.0;
+    std::vector<std::array<glm::dvec3, 3>> support_edges;
+    // Where it touches the support, relative to its center: a sphere's lowest point, or the
+    // vertices of a mesh in the support's plane. It leaves the support when all have left it.
+    std::vector<glm::dvec3> support_feet;
+    double grazed_until = -kNever; // not a sphere: when the obstacles it grazed count again
+    Material material;             // restitution, friction, turning (issue 18)
+    Spin spin;                  // a free sphere that rotates: its orientation and angular velocity
+    double settles_at = kNever; // put on its support by the Zeno rule: the accumulation time
+    // A model that is not a sphere and turns from its contacts once free (Rotates on; a
+    // spherical top whose centre of mass is its origin, such as a cube; check_turning): its
+    // vertices scaled as its keys leave it (about its centre of mass, which its origin is), the
+    // farthest of them, its inverse moment of inertia, and its keys' scale, which its turn
+    // (spin) is applied after.
+    bool turns = false;
+    std::vector<glm::dvec3> turning_vertices;
+    double turning_reach = 0.0;
+    double inv_inertia = 0.0;
+    glm::dmat3 scale{1.0};
+
+    bool keyed() const { return mode == Mode::kKeyed; }
+    bool free_sphere() const { return sphere && mode == Mode::kFree; }
+    // Turning from its contacts now (free after its last key): its pose is its spin's.
+    bool turning() const { return turns && spin.on; }
+    bool still() const {
+        return mode == Mode::kFree &&
+               (motion == ANI_MOTION_REST ||
+                (path.v == glm::dvec3(0.0) && path.a == glm::dvec3(0.0))) &&
+               (!turning() || spin.w == glm::dvec3(0.0));
+    }
+};
+
+// The triangles of a static model, in world space, with their bounding sphere.
+struct Obstacle {
+    uint32_t model = 0;
+    std::vector<glm::dvec3> corners;        // 3 per triangle
+    std::vector<Box> boxes;                 // 1 per triangle
+    std::vector<glm::dvec3> normals;        // 1 per triangle, unit (0 for a triangle without area)
+    std::vector<double> offsets;            // 1 per triangle: its plane is normal . x = offset
+    std::shared_ptr<const MeshShape> shape; // in world space, for the mesh-mesh tests
+    // A closed mesh turned inside out: a room, for the models inside it (built when needed).
+    mutable std::shared_ptr<const MeshShape> room;
+    glm::dvec3 center{0.0};
+    double radius = 0.0;
+};
+
+// Where a body is and how it is placed at one time: world = center + linear * model-space point.
+struct Pose {
+    glm::dvec3 center{0.0}, velocity{0.0};
+    glm::dmat3 linear{1.0};
+};
+
+// A body's earliest predicted event.
+enum class EventKind {
+    kNone,
+    kActivation,
+    kResume,
+    kBody,
+    kObstacle,
+    kCell,
+    kRelease,
+    kRecheck,
+    kLeave,
+    kSettle
+};
+struct Predicted {
+    double t = kNever;
+    EventKind kind = EventKind::kNone;
+    int other = -1;             // the other body, or the obstacle
+    uint64_t other_version = 0; // the other body's version when predicted
+    Contact contact;
+    std::vector<glm::dvec3> points; // a turning model's: every point touching with the contact
+    Exit exit;                      // for kCell
+};
+
+inline Predicted predicted(double t, EventKind kind, int other = -1, uint64_t other_version = 0,
+                           const Contact &contact = {}) {
+    Predicted p;
+    p.t = t;
+    p.kind = kind;
+    p.other = other;
+    p.other_version = other_version;
+    p.contact = contact;
+    return p;
+}
+
+// Bodies from which on the grid pays for its cell crossings.
+constexpr std::size_t kGridFrom = 16;
+
+inline glm::dmat3 linear_part(const ani_model_state &s) {
+    return glm::dmat3(glm::eulerAngleXYZ(glm::radians(s.angles.x), glm::radians(s.angles.y),
+                                         glm::radians(s.angles.z))) *
+           glm::dmat3(glm::scale(glm::dmat4(1.0), vec(s.scale)));
+}
+
+inline bool uniform(const ani_vec3 &s) {
+    return s.x == s.y && s.y == s.z && s.x > 0.0;
+}
+
+inline ani_model_state keyed_state(const ani_physics_scene &scene, uint32_t m, double t,
+                                   glm::dvec3 *velocity) {
+    ani_model_state state{};
+    ani_vec3 v{};
+    if (scene.evaluate_keyed(scene.host_context, m, t, &state, &v) != ANI_OK)
+        throw ani::Failure(ANI_ERR_FAILED, std::string("cannot evaluate the keys of model '") +
+                                               name_of(scene.models[m]) + "'");
+    if (velocity) *velocity = vec(v);
+    return state;
+}
+
+inline double frobenius(const glm::dmat3 &m) {
+    double sum = 0.0;
+    for (int c = 0; c < 3; ++c) sum += glm::dot(m[c], m[c]);
+    return std::sqrt(sum);
+}
+
+class EventBake {
+  public:
+    // The event loop (event_bake.cpp).
+    EventBake(const ani_physics_scene &scene, double t_begin, double t_end,
+              const ani_bake_sink &sink, const ani_host *host, const BakeOptions &options,
+              OverlapMemory &memory);
+    void run();
+    bool continues(const ani_physics_scene &scene, double t_begin,
+                   const BakeOptions &options) const;
+    void resume(const ani_physics_scene &scene, double t_end, const ani_bake_sink &sink);
+
+  private:
+    // The types the stages share. An overlap found (bake_overlaps.cpp): the contact there (the
+    // normal from the other towards the body) and how deep they are into each other along it.
+    struct Seen {
+        Contact contact;
+        double depth = 0.0;
+    };
+    // A model's mesh scaled as its keys leave it at t, as a uniform solid of its mass.
+    struct TurningShape {
+        std::vector<glm::dvec3> vertices;
+        MassProperties mass;
+        double reach = 0.0;
+        glm::dmat3 scale{1.0};
+    };
+
+    // The event loop, continued (event_bake.cpp).
+    void set_horizon();
+    void advance_to_end();
+    void handle(int i, const Predicted &event, double now);
+    void report(const ani_collision_event &e);
+    void report_counts();
+    void log_warning(const std::string &message);
+
+    // Bodies, their poses, mass properties and turning; the reported segments (bake_bodies.cpp).
+    void classify();
+    void emit_unmoved(uint32_t i);
+    bool keys_hold_still(uint32_t i, double last) const;
+    ani_body_state start_of(uint32_t i, double t);
+    double next_key(uint32_t i, double t) const;
+    std::optional<double> sphere_radius(uint32_t i, double t);
+    void add_obstacle(uint32_t i, double t);
+    std::shared_ptr<const MeshShape> build_shape(uint32_t i, const ani_vec3 &center,
+                                                 const glm::dmat3 &linear,
+                                                 const glm::dvec3 &origin) const;
+    void activate(Body &b, double t, const ani_body_state &start);
+    static void stop(Body &b);
+    ani_body_state leaving_keys(uint32_t i, double t);
+    void emit(const ani_motion_segment &s);
+    void emit_keyed(uint32_t i, double t0, double t1);
+    void emit_free(uint32_t i, const ani_body_state &start, double free_at);
+    void close_segment(Body &b, double t);
+    void restart(Body &b, double t, const glm::dvec3 &velocity, bool stop);
+    Path from_now(const Body &b, double now) const;
+    Pose pose(const Body &b, double t) const;
+    const ani_mesh_view &mesh_of(const Body &b) const;
+    glm::dvec3 vertex(const ani_mesh_view &mesh, uint32_t k) const;
+    PlacedMesh placed(const Body &b, const Pose &p) const;
+    static PlacedMesh placed(const Obstacle &o);
+    static double mesh_reach(const ani_mesh_view &mesh);
+    static glm::dvec3 acceleration(const Body &b);
+    double body_size(const Body &b) const;
+    std::vector<glm::dvec3> placed_vertices(const Body &b, double t) const;
+    void start_spin(Body &b, double t);
+    void turn(Body &b, double t, const glm::dvec3 &w);
+    void emit_spin(const Body &b, double t);
+    bool check_turning(uint32_t i, bool sphere, double t);
+    TurningShape turning_shape(uint32_t i, double t) const;
+    void set_turning(Body &b, double keys_end);
+
+    // The broad phase (bake_broad_phase.cpp; for_candidates, a template, below the class).
+    void build_broad_phase();
+    void file(int i, double t);
+    void unfile(int i);
+    template <class F> void for_candidates(int i, F &&f) const;
+
+    // Time of impact: gaps, advancement, predictions (bake_prediction.cpp).
+    glm::dvec3 nearest_on_mesh(const Body &b, const Pose &p, const glm::dvec3 &q) const;
+    glm::dvec3 nearest_on_obstacle(const Obstacle &o, const glm::dvec3 &q) const;
+    double point_speed(const Body &b, double t, double dt) const;
+    glm::dvec3 point_velocity(const Body &b, const glm::dvec3 &point, double t) const;
+    double gap_between(const Body &a, const Body &b, double t, Contact *contact = nullptr) const;
+    double mesh_gap(const Body &a, const Body &b, double t, Contact *contact) const;
+    static void fill_contact(const glm::dvec3 &on_a, const glm::dvec3 &on_b, const glm::dvec3 &n,
+                             double t, Contact *contact);
+    double gap_to_obstacle(const Body &b, const Obstacle &o, double t,
+                           Contact *contact = nullptr) const;
+    double radius_at(const Body &b, const Pose &p) const;
+    bool within_obstacle(const Body &b, const Obstacle &o, double t, double gap) const;
+    bool within_body(const Body &a, const Body &b, double t, double gap) const;
+    bool overlaps_obstacle(const Body &b, const Obstacle &o, double t) const;
+    bool overlaps_body(const Body &a, const Body &b, double t) const;
+    bool apart_from_obstacle(const Body &b, const Obstacle &o, double t) const;
+    bool apart_from_body(const Body &a, const Body &b, double t) const;
+    static bool grazing(const glm::dvec3 &relative_velocity, const glm::dvec3 &n);
+    static double touching(const Body &b);
+    static double tolerance(const Body &b);
+    void predict(int i, double now);
+    void predict_release(int i, int j, double now, double &limit, Predicted &next);
+    std::optional<Contact> advance(int i, int j, int obstacle, double now, double limit);
+    void predict_obstacles(int i, double now, double limit, Predicted &next);
+    std::optional<Contact> mesh_pair(const MeshShape &a, const Path &pa, const MeshShape &b,
+                                     const Path &pb, double limit);
+    void predict_mesh_obstacles(int i, double now, double limit, Predicted &next);
+    const MeshShape &shape_facing(const Obstacle &o, const glm::dvec3 &p) const;
+    static bool inside(const Obstacle &o, const glm::dvec3 &p);
+    void recheck_obstacles(int i, double now, Predicted &next);
+    double recheck_after(const Body &b, double now) const;
+    void set_prediction(int i, const Predicted &p);
+    TurningPath turning_path(const Body &b, double now) const;
+    TurningMesh turning_mesh(const Body &b) const;
+    void predict_turning_obstacle(int i, size_t o, double now, double limit, Predicted &next);
+    static void outward(TurningContact &c, const TurningPath &path);
+    bool approaching(const Body &b, const TurningContact &c, double now) const;
+
+    // Pairs that overlap when they start to collide (bake_overlaps.cpp).
+    void find_overlaps(int i, double t);
+    std::optional<Seen> overlap_with_obstacle(const Body &b, const Obstacle &o, double t) const;
+    void meet_overlap(int i, int other, const Seen &seen, double t);
+    void treat_as_touching(int i, int other, const OverlapRecord &record);
+    void report_overlap(int i, int other, double t, double depth, const glm::dvec3 &normal);
+    static std::string short_number(double x);
+    uint32_t model_of(int other) const;
+    bool is_overlapped(int a, int b) const;
+    const OverlapRecord *overlap_of(int a, int b) const;
+    double radius_against(int i, int o) const;
+    glm::dvec3 shift_against(int i, int o) const;
+    void radii_against(int i, int j, double &ri, double &rj) const;
+    bool apart_after_overlap(int i, int o, double t) const;
+    void unoverlap(int i, int other, double t);
+    static std::pair<int, int> pair_key(int a, int b);
+    void ignore(int i, int other, double t);
+    void unignore(int i, int other, double t);
+    void forget_ignored(int i, double t);
+    bool is_ignored(int a, int b) const;
+
+    // The response to a contact (bake_response.cpp).
+    void release(int i, double t);
+    void collide_obstacle(int i, const Obstacle &o, const Contact &contact,
+                          const std::vector<glm::dvec3> &points, double t);
+    void collide_bodies(int i, int j, const Contact &contact, double t);
+    bool sphere_responds(const Body &b, const ani_physics_model &other) const;
+    static ImpulseBody sphere_body(const Body &b, double mass, const glm::dvec3 &v,
+                                   const glm::dvec3 &n);
+    bool respond_to_obstacle(int i, const Obstacle &o, const glm::dvec3 &n, const glm::dvec3 &v,
+                             double t);
+    void respond_to_wall(Body &b, const glm::dvec3 &v, const glm::dvec3 &v_wall,
+                         const glm::dvec3 &n, const Material &wall, double t);
+    void respond_to_sphere(Body &b, const glm::dvec3 &v, Body &o, const glm::dvec3 &vo,
+                           const glm::dvec3 &n, double t);
+    bool mesh_responds(const Body &b, const ani_physics_model &other) const;
+    bool settle_after_bounces(int i, const Obstacle &o, const glm::dvec3 &n, double t);
+    std::vector<glm::dvec3> contact_offsets(const Body &b, const std::vector<glm::dvec3> &points,
+                                            double t) const;
+    ImpulseBody impulse_body(const Body &b, const glm::dvec3 &point, double t) const;
+    bool respond_turning_to_obstacle(int i, const Obstacle &o, const Contact &contact,
+                                     const std::vector<glm::dvec3> &points, double t);
+    void respond_turning_pair(Body &b, const ImpulseBody &ib, bool b_wall, Body &o,
+                              const ImpulseBody &io, bool o_wall, const glm::dvec3 &n, double t);
+
+    // The rest manager: supports, settling, leaving (bake_rest.cpp).
+    static bool in_support_plane(const Body &b, const Obstacle &o, size_t k);
+    bool try_settle(int i, double t);
+    bool settle_on(int i, int o, const glm::dvec3 &n, double t);
+    static std::vector<std::array<glm::dvec3, 3>> support_boundary(const Obstacle &o,
+                                                                   const Body &b);
+    std::optional<double> leaves_support(const Body &b, double now, double limit) const;
+    void predict_leave(int i, double now, double limit, Predicted &next);
+    void unsupport(Body &b, double t);
+    void after_contact(int i, double t);
+
+    // The data, shared by every stage.
+    const ani_physics_scene *scene_; // this call's (the host builds it anew for each)
+    double t_begin_, t_end_;
+    const ani_bake_sink *sink_;
+    const ani_host *host_;
+    BakeOptions options_;
+    glm::dvec3 gravity_;
+    std::vector<Body> bodies_;
+    std::vector<Obstacle> obstacles_;
+    std::size_t triangle_count_ = 0;
+    std::unique_ptr<UniformGrid> grid_; // with many bodies
+    std::vector<int> outside_;          // active bodies not in the grid (all of them without one)
+    std::unique_ptr<EventQueue> queue_;
+    std::vector<Predicted> predicted_; // each body's earliest event
+    // Pairs left alone until they are apart: overlapping keyed models, grazing contacts. Keys:
+    // (body, other body) with the lower first, or (body, -1 - obstacle).
+    std::set<std::pair<int, int>> ignored_;
+    // Pairs that overlapped and touch at that depth until apart (physics.md), same keys.
+    std::map<std::pair<int, int>, OverlapRecord> overlaps_;
+    std::set<std::pair<int, int>> reported_; // overlaps said in this slice
+    OverlapMemory &memory_;                  // overlaps found by the earlier slices of the bake
+    struct {
+        std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0,
+                    collisions = 0, advancements = 0, releases = 0, mesh_tests = 0;
+    } count_;
+    std::size_t reports_ = 0;
+    std::array<double, 9> counted_{}; // the counts reported by the earlier slices
+    std::vector<bool> is_body_;       // per model: a body (the others are reported each slice)
+    double horizon_ = 0.0;            // how far predictions look
+    ScenePrint fingerprint_;          // the scene the bake goes on with
+};
+
+// Calls f(j) for every active body that body i could meet: its grid neighbours and the
+// bodies outside the grid, or every body when i itself is outside.
+template <class F> void EventBake::for_candidates(int i, F &&f) const {
+    const Body &b = bodies_[static_cast<size_t>(i)];
+    if (b.in_grid) {
+        grid_->for_neighbours(b.cell, [&](uint32_t j) {
+            if (static_cast<int>(j) != i) f(static_cast<int>(j));
+        });
+        for (int j : outside_)
+            if (j != i) f(j);
+    } else {
+        for (size_t j = 0; j < bodies_.size(); ++j)
+            if (static_cast<int>(j) != i && bodies_[j].active) f(static_cast<int>(j));
+    }
+}
+
+} // namespace physics_custom::bake
