@@ -152,7 +152,10 @@ void EventBake::handle(int i, const Predicted &event, double now) {
     }
     case EventKind::kObstacle:
         if (event.contact.normal == glm::dvec3(0.0)) break;
-        if (grazing(point_velocity(b, event.contact.point, now), event.contact.normal)) {
+        // (A turning model always responds: it leaves at least at the microcollision speed,
+        // bake_response.cpp, so it is never left inside a static model.)
+        if (!b.turning() &&
+            grazing(point_velocity(b, event.contact.point, now), event.contact.normal)) {
             if (!settle_on(i, event.other, event.contact.normal, now))
                 ignore(i, -1 - event.other, now);
             break;

@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace physics_custom {
@@ -25,6 +26,29 @@ glm::dmat3 cross(const glm::dvec3 &r) {
 glm::dmat3 k_of(const ImpulseBody &b) {
     const glm::dmat3 rx = cross(b.r);
     return b.inv_mass * glm::dmat3(1.0) - rx * b.inv_inertia * rx;
+}
+
+// The impulse p with its friction (its part beyond the frictionless p0) scaled down, if need
+// be, so that the pair's kinetic energy does not grow: the change for an impulse P at the
+// point is u.P + P.K P / 2 (u the relative velocity before), a quadratic in the fraction s of
+// the friction part, not positive at s = 0 (p0 alone keeps or loses energy for e <= 1); the
+// largest s <= 1 where it is not positive. Stronge's caveat (impulse.hpp): for a contact point
+// off the line through the centres, slipping, the Newton + Coulomb impulse can create energy.
+glm::dvec3 without_work(const glm::dvec3 &p, const glm::dvec3 &p0, const glm::dvec3 &u,
+                        const glm::dmat3 &k) {
+    const glm::dvec3 f = p - p0;
+    const double a = 0.5 * glm::dot(f, k * f), b = glm::dot(f, u) + glm::dot(f, k * p0),
+                 c = glm::dot(p0, u) + 0.5 * glm::dot(p0, k * p0);
+    if (a + b + c <= 0.0) return p; // no energy gained
+    double s = 0.0;
+    if (a > 0.0) {
+        const double d = b * b - 4.0 * a * c;
+        s = d >= 0.0 ? (-b + std::sqrt(d)) / (2.0 * a) : 0.0;
+    } else if (b > 0.0) {
+        s = -c / b;
+    }
+    s = std::min(1.0, std::max(0.0, s * (1.0 - 1e-12)));
+    return p0 + s * f;
 }
 
 void apply(const ImpulseBody &b, const glm::dvec3 &p, glm::dvec3 &v, glm::dvec3 &w) {
@@ -70,12 +94,24 @@ ImpulseResult contact_impulse(const ImpulseBody &a, const ImpulseBody &b, const 
             const double kd = glm::dot(n, k * dir);
             if (kd > 0.0) p = (-(1.0 + e) * un / kd) * dir;
         }
+        p = without_work(p, (-(1.0 + e) * un / knn) * n, u, k);
     }
     out.impulse = p;
     out.normal = glm::dot(p, n);
     apply(a, p, out.va, out.wa);
     apply(b, -p, out.vb, out.wb);
     return out;
+}
+
+ImpulseResult leave_at(const ImpulseBody &a, const glm::dvec3 &n, double speed) {
+    const double u = glm::dot(point_velocity_of(a), n), knn = glm::dot(n, k_of(a) * n);
+    if (!(u < speed) || !(knn > 0.0)) {
+        ImpulseResult out;
+        out.va = a.v;
+        out.wa = a.w;
+        return out;
+    }
+    return contact_impulse_of(a, ImpulseBody{}, n, (speed - u) / knn, 0.0);
 }
 
 ImpulseResult contact_impulse_of(const ImpulseBody &a, const ImpulseBody &b, const glm::dvec3 &n,
@@ -100,6 +136,7 @@ ImpulseResult contact_impulse_of(const ImpulseBody &a, const ImpulseBody &b, con
         } else {
             p -= (mu * normal) * t1;
         }
+        p = without_work(p, normal * n, point_velocity_of(a) - point_velocity_of(b), k);
     }
     out.impulse = p;
     out.normal = normal;

@@ -16,7 +16,10 @@
 // fixed-direction slip of case 2 can stop and reverse during a real impact, and Newton's
 // kinematic coefficient can then create energy. For spheres (r along n: K is diagonal in the
 // normal/tangent frame) neither happens; impulse_test checks energy never grows there for
-// e <= 1 rather than assuming it.
+// e <= 1 rather than assuming it. For the others (a tumbling cube), where the impulse would
+// create energy, its friction part (beyond the frictionless impulse, which never does for
+// e <= 1) is scaled down to the largest fraction that does not: the kinetic energy of the pair
+// never grows at an impact.
 #pragma once
 
 #include <glm/mat3x3.hpp>
@@ -50,6 +53,10 @@ ImpulseResult contact_impulse(const ImpulseBody &a, const ImpulseBody &b, const 
 // times it against the slip's direction at the start.
 ImpulseResult contact_impulse_of(const ImpulseBody &a, const ImpulseBody &b, const glm::dvec3 &n,
                                  double normal, double mu);
+
+// The normal impulse at a's point against infinite mass that makes the point leave along n at
+// `speed` (a microcollision's least speed, bake_response.cpp); none if it leaves faster.
+ImpulseResult leave_at(const ImpulseBody &a, const glm::dvec3 &n, double speed);
 
 // The contact's values from the two models' (physics.md): the lower restitution, the higher
 // friction.

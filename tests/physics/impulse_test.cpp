@@ -217,3 +217,44 @@ TEST_CASE("material: a description before SDK 1.3 gets the seed's world; values 
         }
     }
 }
+
+TEST_CASE("impulse: with friction, general turning bodies touching off the line through their "
+          "centres never gain energy for e <= 1; the impulse's friction is scaled down where "
+          "Newton + Coulomb alone would create it") {
+    std::mt19937 rng(18);
+    std::uniform_real_distribution<double> u(-1.0, 1.0), pos(0.0, 1.0);
+    auto random_vec = [&] { return glm::dvec3(u(rng), u(rng), u(rng)); };
+    double worst_gain = -1.0;
+    int rubbed = 0; // contacts where friction acted
+    for (int k = 0; k < 4000; ++k) {
+        const glm::dvec3 n = glm::normalize(random_vec());
+        // A corner of a cube of half side 0.25 and mass m, anywhere off its centre, against a
+        // static floor: inverse inertia 6 / (m s^2), the contact offset r with r . n < 0.
+        const double m = 0.2 + pos(rng);
+        ImpulseBody a;
+        a.inv_mass = 1.0 / m;
+        a.inv_inertia = glm::dmat3(6.0 / (m * 0.25));
+        a.v = 3.0 * random_vec();
+        a.w = 10.0 * random_vec();
+        a.r = 0.25 * random_vec();
+        if (glm::dot(a.r, n) > 0.0) a.r -= 2.0 * glm::dot(a.r, n) * n;
+        const double e = pos(rng), mu = 1.5 * pos(rng);
+        const ImpulseResult r = contact_impulse(a, ImpulseBody{}, n, e, mu);
+        if (r.normal == 0.0) continue;
+        const double e0 = energy(a, a.v, a.w), e1 = energy(a, r.va, r.wa);
+        worst_gain = std::max(worst_gain, (e1 - e0) / e0);
+        // The normal impulse never pulls, and the point does not go on into the floor faster.
+        CHECK(r.normal > 0.0);
+        ImpulseBody after = a;
+        after.v = r.va;
+        after.w = r.wa;
+        CHECK(glm::dot(point_velocity_of(after), n) >= glm::dot(point_velocity_of(a), n) - 1e-12);
+        // Friction acted where the impulse differs from the frictionless one.
+        const ImpulseResult plain = contact_impulse(a, ImpulseBody{}, n, e, 0.0);
+        if (glm::length(r.impulse - plain.impulse) < 1e-12 * glm::length(plain.impulse)) continue;
+        ++rubbed;
+    }
+    CAPTURE(worst_gain, rubbed);
+    CHECK(worst_gain <= 1e-12);
+    CHECK(rubbed > 1000);
+}

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <random>
 
 using namespace animator;
 using namespace physics_test;
@@ -145,5 +146,55 @@ TEST_CASE("a cube with Rotates on landing flat with e = 0.5 does not turn at all
         CHECK(f.models[1].center == at_rest);
         CHECK(f.models[1].velocity == glm::dvec3(0.0));
         CHECK(f.models[1].angles == glm::dvec3(0.0));
+    }
+}
+
+TEST_CASE("random cubes with Rotates on, dropped on a rough floor with e < 1, tumble and come to "
+          "rest in bounded time, never inside the floor and never gaining energy",
+          "[stress]") {
+    std::mt19937_64 rng(1918);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int trial = 0; trial < 6; ++trial) {
+        Document doc;
+        doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, glm::dvec3(10.0)));
+        Model cube = model("cube", "cube", true, true);
+        cube.rotates = true;
+        cube.restitution = 0.6 * u(rng);
+        cube.friction = u(rng);
+        cube.angular_velocity = {4.0 * u(rng) - 2.0, 4.0 * u(rng) - 2.0, 4.0 * u(rng) - 2.0};
+        const glm::dvec3 angles(360.0 * u(rng), 360.0 * u(rng), 360.0 * u(rng));
+        const double half = 0.25, h = 1.0 + 2.0 * u(rng), m = cube.mass;
+        doc.add_model(cube, placed({0.0, h, 0.0}, glm::dvec3(half), angles));
+        auto t = timeline_of(doc);
+        CAPTURE(trial, cube.restitution, cube.friction, angles.x, angles.y, angles.z);
+        t->bake(20.0);
+        CHECK(t->events().size() < 100000);
+        // I = m s^2 / 6 for the cube of side 2 half; w from its rotation segment.
+        const double inertia = m * 4.0 * half * half / 6.0;
+        auto energy = [&](double at) {
+            const Frame f = t->evaluate(at);
+            const ani_rotation_segment *r = t->rotation_at(1, at);
+            const glm::dvec3 v = f.models[1].velocity, w = r ? vec(r->w) : glm::dvec3(0.0);
+            return 0.5 * m * glm::dot(v, v) + 0.5 * inertia * glm::dot(w, w) +
+                   m * G * f.models[1].center.y;
+        };
+        const double e0 = energy(0.0);
+        double lowest = 1e300, most = 0.0;
+        // Every 1/240 s while it tumbles, every 0.1 s after.
+        for (double at = 0.0; at <= 20.0; at += at < 6.0 ? 1.0 / 240.0 : 0.1) {
+            const Frame f = t->evaluate(at);
+            const glm::dmat3 turn = cube_drop::turn_of(f.models[1].angles);
+            for (const glm::dvec3 &p : cube_drop::corners(half))
+                lowest = std::min(lowest, f.models[1].center.y + (turn * p).y);
+            most = std::max(most, energy(at));
+            REQUIRE(std::isfinite(f.models[1].center.y));
+        }
+        CAPTURE(lowest, most - e0, t->events().size());
+        CHECK(lowest > -1e-9);
+        CHECK(most <= e0 * (1.0 + 1e-9));
+        // At rest by the end: still, its lowest face on the floor.
+        const Frame last = t->evaluate(20.0);
+        CHECK(glm::length(last.models[1].velocity) < 1e-3);
+        CHECK(std::abs(last.models[1].center.y - half) < 1e-6);
     }
 }
