@@ -20,19 +20,27 @@ void EventBake::release(int i, double t) {
     ++count_.releases;
 }
 
+// The event said for a contact of models a and b at t, met at relative velocity `closing` (its
+// speed: how fast they approach along the normal).
+ani_collision_event EventBake::collision_event(uint32_t a, uint32_t b, const Contact &contact,
+                                               double t, const glm::dvec3 &closing) {
+    ani_collision_event e{};
+    e.t = t;
+    e.a = a;
+    e.b = b;
+    e.normal = ani(contact.normal);
+    e.point = ani(contact.point);
+    e.speed = std::max(0.0, -glm::dot(closing, contact.normal));
+    return e;
+}
+
 void EventBake::collide_obstacle(int i, const Obstacle &o, const Contact &contact,
                                  const std::vector<glm::dvec3> &points, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
     if (b.keyed()) release(i, t);
     const glm::dvec3 n = contact.normal;
     const glm::dvec3 v = b.path.velocity(t - b.t0);
-    ani_collision_event e{};
-    e.t = t;
-    e.a = b.model;
-    e.b = o.model;
-    e.normal = ani(n);
-    e.point = ani(contact.point);
-    e.speed = std::max(0.0, -glm::dot(v, n));
+    ani_collision_event e = collision_event(b.model, o.model, contact, t, v);
     if (b.turning()) { // a turning model: the speed of the touching point
         e.speed = std::max(0.0, -glm::dot(point_velocity(b, contact.point, t), n));
         if (!b.dynamics)
@@ -64,13 +72,8 @@ void EventBake::collide_bodies(int i, int j, const Contact &contact, double t) {
         const ImpulseBody ib = impulse_body(b, contact.point, t),
                           io = impulse_body(o, contact.point, t);
         const bool b_wall = b.keyed(), o_wall = o.keyed();
-        ani_collision_event e{};
-        e.t = t;
-        e.a = b.model;
-        e.b = o.model;
-        e.normal = ani(n);
-        e.point = ani(contact.point);
-        e.speed = std::max(0.0, -glm::dot(point_velocity_of(ib) - point_velocity_of(io), n));
+        const ani_collision_event e = collision_event(
+            b.model, o.model, contact, t, point_velocity_of(ib) - point_velocity_of(io));
         if (b_wall) release(i, t);
         if (o_wall) release(j, t);
         respond_turning_pair(b, ib, b_wall, o, io, o_wall, n, t);
@@ -86,13 +89,7 @@ void EventBake::collide_bodies(int i, int j, const Contact &contact, double t) {
     const bool b_wall = b.keyed() && !o.keyed(), o_wall = o.keyed() && !b.keyed();
     if (b.keyed()) release(i, t);
     if (o.keyed()) release(j, t);
-    ani_collision_event e{};
-    e.t = t;
-    e.a = b.model;
-    e.b = o.model;
-    e.normal = ani(n);
-    e.point = ani(contact.point);
-    e.speed = std::max(0.0, -glm::dot(v - vo, n));
+    const ani_collision_event e = collision_event(b.model, o.model, contact, t, v - vo);
     if (b_wall || o_wall) {
         Body &free = b_wall ? o : b;
         const glm::dvec3 v_free = b_wall ? vo : v, v_wall = b_wall ? v : vo,

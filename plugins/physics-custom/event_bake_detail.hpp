@@ -351,6 +351,8 @@ class EventBake {
     void collide_obstacle(int i, const Obstacle &o, const Contact &contact,
                           const std::vector<glm::dvec3> &points, double t);
     void collide_bodies(int i, int j, const Contact &contact, double t);
+    static ani_collision_event collision_event(uint32_t a, uint32_t b, const Contact &contact,
+                                               double t, const glm::dvec3 &closing);
     bool sphere_responds(const Body &b, const ani_physics_model &other) const;
     static ImpulseBody sphere_body(const Body &b, double mass, const glm::dvec3 &v,
                                    const glm::dvec3 &n);

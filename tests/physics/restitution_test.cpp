@@ -45,21 +45,6 @@ const ModelState &start_of(const Document &doc, int model) {
     return *doc.keyframes().front().states[static_cast<size_t>(model)];
 }
 
-// How far the first `count` events are from the bounces of a drop that first lands at t0 at
-// speed v0 with restitution e: bounce k at t0 (1 + 2 e (1 - e^k) / (1 - e)), met at e^k v0
-// (derived in the first test below). The largest differences in time and in speed.
-std::pair<double, double> bounce_errors(const std::vector<ani_collision_event> &events,
-                                        size_t count, double t0, double v0, double e) {
-    double worst_t = 0.0, worst_v = 0.0;
-    for (size_t k = 0; k < count; ++k) {
-        const double ek = std::pow(e, static_cast<double>(k));
-        const double tk = t0 * (1.0 + 2.0 * e * (1.0 - ek) / (1.0 - e));
-        worst_t = std::max(worst_t, std::abs(events[k].t - tk));
-        worst_v = std::max(worst_v, std::abs(events[k].speed - ek * v0));
-    }
-    return {worst_t, worst_v};
-}
-
 } // namespace
 
 TEST_CASE("a ball dropped with e = 0.8 bounces at the closed-form times and comes to rest at the "
@@ -343,8 +328,9 @@ TEST_CASE("a backspinning ball dropped on a rough floor sticks at its first boun
 TEST_CASE("an open mesh with Rotates on is refused naming the model; a cylinder with Rotates on "
           "moves without turning and the log says why") {
     std::vector<std::string> lines;
-    Environment logged({test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
-                       [&](ani_log_level, const std::string &, const std::string &m) { lines.push_back(m); });
+    Environment logged(
+        {test::bin_dir().parent_path() / "assets"}, {test::bin_dir()},
+        [&](ani_log_level, const std::string &, const std::string &m) { lines.push_back(m); });
     const auto bake = [&](const Document &doc) {
         Timeline t(doc, logged.plugins);
         std::vector<std::string> ids, warnings;
@@ -363,7 +349,8 @@ TEST_CASE("an open mesh with Rotates on is refused naming the model; a cylinder 
         bake(doc);
         FAIL("an open mesh that rotates was baked");
     } catch (const std::exception &e) {
-        CHECK_THAT(e.what(), Catch::Contains("model 'sheet' cannot rotate: its mesh is not closed"));
+        CHECK_THAT(e.what(),
+                   Catch::Contains("model 'sheet' cannot rotate: its mesh is not closed"));
     }
     // A cylinder's principal moments differ (physics.custom turns spherical tops so far).
     Model can = model("can", "cylinder", true, true);

@@ -12,10 +12,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace physics_test {
@@ -77,6 +79,21 @@ inline void key(Document &doc, std::int64_t ms, int model, const ModelState &sta
         doc.insert_keyframe(k);
     }
     doc.set_state(ms, model, state);
+}
+
+// How far the first `count` events are from the bounces of a drop that first lands at t0 at
+// speed v0 with restitution e: bounce k at t0 (1 + 2 e (1 - e^k) / (1 - e)), met at e^k v0
+// (derived in restitution_test.cpp's first test). The largest differences in time and in speed.
+inline std::pair<double, double> bounce_errors(const std::vector<ani_collision_event> &events,
+                                               size_t count, double t0, double v0, double e) {
+    double worst_t = 0.0, worst_v = 0.0;
+    for (size_t k = 0; k < count; ++k) {
+        const double ek = std::pow(e, static_cast<double>(k));
+        const double tk = t0 * (1.0 + 2.0 * e * (1.0 - ek) / (1.0 - e));
+        worst_t = std::max(worst_t, std::abs(events[k].t - tk));
+        worst_v = std::max(worst_v, std::abs(events[k].speed - ek * v0));
+    }
+    return {worst_t, worst_v};
 }
 
 } // namespace physics_test

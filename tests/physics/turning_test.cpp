@@ -115,13 +115,7 @@ TEST_CASE("a cube with Rotates on landing flat with e = 0.5 does not turn at all
     const auto &events = timeline->events();
     REQUIRE(events.size() >= 10);
     CHECK(events.size() < 100);
-    double worst_t = 0.0, worst_v = 0.0;
-    for (size_t k = 0; k < 10; ++k) {
-        const double ek = std::pow(e, static_cast<double>(k));
-        worst_t = std::max(worst_t,
-                           std::abs(events[k].t - t0 * (1.0 + 2.0 * e * (1.0 - ek) / (1.0 - e))));
-        worst_v = std::max(worst_v, std::abs(events[k].speed - ek * v0));
-    }
+    const auto [worst_t, worst_v] = bounce_errors(events, 10, t0, v0, e);
     CAPTURE(worst_t, worst_v);
     CHECK(worst_t < 1e-9);
     CHECK(worst_v < 1e-9);
