@@ -38,7 +38,8 @@ void EventBake::classify() {
         }
         const std::optional<double> radius = sphere_radius(i, free_now ? t_begin_ : keyed_until);
         if (solid && (movable || keyed_here)) {
-            const bool turns = check_turning(i, radius.has_value(), free_now ? t_begin_ : span.end);
+            std::optional<TurningShape> turning =
+                check_turning(i, radius.has_value(), free_now ? t_begin_ : span.end);
             is_body_.back() = true;
             Body b;
             b.model = i;
@@ -49,7 +50,7 @@ void EventBake::classify() {
             b.dynamics = d.dynamics != 0;
             b.material = material;
             b.keys_end = free_now ? t_begin_ : span.end;
-            if (turns) set_turning(b, b.keys_end);
+            if (turning) set_turning(b, std::move(*turning));
             bodies_.push_back(b);
             Body &body = bodies_.back();
             if (released) {
@@ -453,31 +454,32 @@ void EventBake::emit_spin(const Body &b, double t) {
 // which an open mesh has not). physics.custom turns spheres, and other models whose three
 // principal moments are equal (spherical tops: a cube, a regular polyhedron) with their
 // centre of mass at their origin, as their keys scale them at `t` (where they become free):
-// true for those. Any other model with Rotates on moves without turning, and the log says so
-// once per bake.
-bool EventBake::check_turning(uint32_t i, bool sphere, double t) {
+// their shape for those. Any other model with Rotates on moves without turning, and the log
+// says so once per bake.
+std::optional<EventBake::TurningShape> EventBake::check_turning(uint32_t i, bool sphere, double t) {
     const ani_physics_model &m = scene_->models[i];
-    if (!ANI_MODEL_DESC_HAS_BODY(m.desc) || !m.desc->rotates || !m.desc->dynamics) return false;
+    if (!ANI_MODEL_DESC_HAS_BODY(m.desc) || !m.desc->rotates || !m.desc->dynamics)
+        return std::nullopt;
     std::string why;
     if (!m.mesh->is_sphere && !is_closed(*m.mesh, &why))
         throw ani::Failure(ANI_ERR_INVALID_ARGUMENT,
                            std::string("model '") + name_of(m) +
                                "' cannot rotate: its mesh is not closed (" + why +
                                "); turn Rotates off or close the mesh");
-    if (sphere) return false; // its spin: start_spin
-    const TurningShape shape = turning_shape(i, t);
+    if (sphere) return std::nullopt; // its spin: start_spin
+    TurningShape shape = turning_shape(i, t);
     const glm::dvec3 moments = shape.mass.principal_moments;
     const bool top = moments.z - moments.x <= 1e-9 * moments.z;
     const bool centred =
         glm::length(shape.mass.center_of_mass) <= 1e-9 * std::max(shape.reach, 1e-300);
-    if (top && centred) return true;
+    if (top && centred) return shape;
     if (t_begin_ == 0.0)
         log_warning(std::string("model '") + name_of(m) +
                     "' has Rotates on, but physics.custom turns only spheres and models "
                     "whose three principal moments are equal with their centre of mass at "
                     "their origin (a cube) so far: it moves without turning (physics.bullet "
                     "turns it)");
-    return false;
+    return std::nullopt;
 }
 
 EventBake::TurningShape EventBake::turning_shape(uint32_t i, double t) const {
@@ -503,9 +505,8 @@ EventBake::TurningShape EventBake::turning_shape(uint32_t i, double t) const {
     return shape;
 }
 
-// Body b turns from its contacts once free after its last key (at keys_end).
-void EventBake::set_turning(Body &b, double keys_end) {
-    TurningShape shape = turning_shape(b.model, keys_end);
+// Body b turns from its contacts once free after its last key, with its shape there.
+void EventBake::set_turning(Body &b, TurningShape shape) {
     b.turns = true;
     b.turning_vertices = std::move(shape.vertices);
     b.turning_reach = shape.reach;

@@ -40,24 +40,16 @@ void EventBake::collide_obstacle(int i, const Obstacle &o, const Contact &contac
     if (b.keyed()) release(i, t);
     const glm::dvec3 n = contact.normal;
     const glm::dvec3 v = b.path.velocity(t - b.t0);
-    ani_collision_event e = collision_event(b.model, o.model, contact, t, v);
-    if (b.turning()) { // a turning model: the speed of the touching point
-        e.speed = std::max(0.0, -glm::dot(point_velocity(b, contact.point, t), n));
-        if (!b.dynamics)
-            restart(b, t, glm::dvec3(0.0), true);
-        else if (respond_turning_to_obstacle(i, o, contact, points, t)) {
-            report(e); // resting from the Zeno bounces' accumulation time
-            return;
-        }
-        after_contact(i, t);
-        report(e);
-        return;
-    }
+    // (A turning model's speed is its touching point's.)
+    const ani_collision_event e = collision_event(
+        b.model, o.model, contact, t, b.turning() ? point_velocity(b, contact.point, t) : v);
     // Off a model without Dynamics: a reflection; without Dynamics itself it stops. With
-    // restitution or friction: the contact impulse (the sections below).
-    if (!b.dynamics || !sphere_responds(b, scene_->models[o.model]))
+    // restitution or friction, or turning (which needs Dynamics): the contact impulse (the
+    // sections below).
+    if (!b.dynamics || (!b.turning() && !sphere_responds(b, scene_->models[o.model])))
         restart(b, t, reflect(v, n), !b.dynamics);
-    else if (respond_to_obstacle(i, o, n, v, t)) {
+    else if (b.turning() ? respond_turning_to_obstacle(i, o, contact, points, t)
+                         : respond_to_obstacle(i, o, n, v, t)) {
         report(e); // resting from the Zeno bounces' accumulation time
         return;
     }
@@ -214,14 +206,7 @@ void EventBake::respond_to_wall(Body &b, const glm::dvec3 &v, const glm::dvec3 &
 // Two free spheres with Dynamics: the impulse between their masses (n from o toward b).
 void EventBake::respond_to_sphere(Body &b, const glm::dvec3 &v, Body &o, const glm::dvec3 &vo,
                                   const glm::dvec3 &n, double t) {
-    const double ma = scene_->models[b.model].desc->mass, mb = scene_->models[o.model].desc->mass;
-    for (const Body *x : {&b, &o}) {
-        const double m = x == &b ? ma : mb;
-        if (!(m > 0.0) || !std::isfinite(m))
-            throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
-                                                   name_of(scene_->models[x->model]) +
-                                                   "' needs a finite mass > 0 to collide");
-    }
+    const double ma = collision_mass(b), mb = collision_mass(o);
     const double e = combined_restitution(b.material.restitution, o.material.restitution),
                  mu = combined_friction(b.material.friction, o.material.friction);
     const ImpulseResult r =
@@ -280,13 +265,12 @@ bool EventBake::settle_after_bounces(int i, const Obstacle &o, const glm::dvec3 
 std::vector<glm::dvec3>
 EventBake::contact_offsets(const Body &b, const std::vector<glm::dvec3> &points, double t) const {
     const glm::dvec3 c = b.path.at(t - b.t0);
-    const glm::dmat3 turn = glm::dmat3(glm::mat3_cast(b.spin.at(t)));
+    const std::vector<glm::dvec3> corners = placed_vertices(b, t);
     std::vector<glm::dvec3> offsets;
     for (const glm::dvec3 &p : points) {
         glm::dvec3 best = p - c;
         double nearest = 1e-9;
-        for (const glm::dvec3 &v : b.turning_vertices) {
-            const glm::dvec3 r = turn * v;
+        for (const glm::dvec3 &r : corners) {
             const double d = glm::length(p - (c + r));
             if (d <= nearest) {
                 nearest = d;
@@ -301,17 +285,23 @@ EventBake::contact_offsets(const Body &b, const std::vector<glm::dvec3> &points,
 // A body as the impulse module sees it at point `point` (t): a turning model or a sphere
 // that rotates with its inverse inertia; a keyed model, or one without Dynamics, of infinite
 // mass moving as it does there.
+// A body's mass for an impulse: refused, naming the model, unless finite and > 0.
+double EventBake::collision_mass(const Body &b) const {
+    const double m = scene_->models[b.model].desc->mass;
+    if (!(m > 0.0) || !std::isfinite(m))
+        throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
+                                               name_of(scene_->models[b.model]) +
+                                               "' needs a finite mass > 0 to collide");
+    return m;
+}
+
 ImpulseBody EventBake::impulse_body(const Body &b, const glm::dvec3 &point, double t) const {
     ImpulseBody x;
     if (b.keyed() || !b.dynamics) {
         x.v = point_velocity(b, point, t);
         return x;
     }
-    const double m = scene_->models[b.model].desc->mass;
-    if (!(m > 0.0) || !std::isfinite(m))
-        throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
-                                               name_of(scene_->models[b.model]) +
-                                               "' needs a finite mass > 0 to collide");
+    const double m = collision_mass(b);
     x.inv_mass = 1.0 / m;
     x.v = b.path.velocity(t - b.t0);
     x.r = point - b.path.at(t - b.t0);
@@ -356,10 +346,12 @@ bool EventBake::respond_turning_to_obstacle(int i, const Obstacle &o, const Cont
         r = contact_impulse_of(a, ImpulseBody{}, n, together->normal, mu);
     } else { // the point that moves into it fastest
         a.r = offsets[0];
-        for (const glm::dvec3 &r_k : offsets)
-            if (glm::dot(b.path.velocity(t - b.t0) + glm::cross(b.spin.w, r_k), n) <
-                glm::dot(point_velocity_of(a), n))
+        ImpulseBody probe = a;
+        for (const glm::dvec3 &r_k : offsets) {
+            probe.r = r_k;
+            if (glm::dot(point_velocity_of(probe), n) < glm::dot(point_velocity_of(a), n))
                 a.r = r_k;
+        }
         r = contact_impulse(a, ImpulseBody{}, n, e, mu);
     }
     const double vn = glm::dot(r.va, n), g_n = -glm::dot(b.free_a, n),

@@ -276,9 +276,9 @@ class EventBake {
     void start_spin(Body &b, double t);
     void turn(Body &b, double t, const glm::dvec3 &w);
     void emit_spin(const Body &b, double t);
-    bool check_turning(uint32_t i, bool sphere, double t);
+    std::optional<TurningShape> check_turning(uint32_t i, bool sphere, double t);
     TurningShape turning_shape(uint32_t i, double t) const;
-    void set_turning(Body &b, double keys_end);
+    void set_turning(Body &b, TurningShape shape);
 
     // The broad phase (bake_broad_phase.cpp; for_candidates, a template, below the class).
     void build_broad_phase();
@@ -367,6 +367,7 @@ class EventBake {
     std::vector<glm::dvec3> contact_offsets(const Body &b, const std::vector<glm::dvec3> &points,
                                             double t) const;
     ImpulseBody impulse_body(const Body &b, const glm::dvec3 &point, double t) const;
+    double collision_mass(const Body &b) const;
     bool respond_turning_to_obstacle(int i, const Obstacle &o, const Contact &contact,
                                      const std::vector<glm::dvec3> &points, double t);
     void respond_turning_pair(Body &b, const ImpulseBody &ib, bool b_wall, Body &o,
