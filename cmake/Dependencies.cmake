@@ -17,7 +17,7 @@ endif()
 
 # Physics: Bullet in double precision, to match the custom solver's doubles.
 pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
-# Boost.Math (headers only): the Jacobi elliptic functions and elliptic integrals of the exact
+# Boost.Math (headers only; sdk/src): the Jacobi elliptic functions and elliptic integrals of the exact
 # torque-free rotation (plugins/physics-custom/free_rotation.cpp).
 find_package(Boost 1.71 REQUIRED)
 # Windowing and OpenGL.

@@ -165,31 +165,6 @@ void principal_axes(const glm::dmat3 &tensor, glm::dvec3 &moments, glm::dmat3 &a
     if (glm::determinant(axes) < 0.0) axes[2] = -axes[2];
 }
 
-glm::dquat quaternion_of(const glm::dmat3 &m) {
-    // Shepperd: take the largest of 4w^2, 4x^2, 4y^2, 4z^2 to divide by. m[c][r] is column c.
-    const double trace = m[0][0] + m[1][1] + m[2][2];
-    glm::dquat q;
-    if (trace >= m[0][0] && trace >= m[1][1] && trace >= m[2][2]) {
-        const double s = 2.0 * std::sqrt(1.0 + trace);
-        q = glm::dquat(0.25 * s, (m[1][2] - m[2][1]) / s, (m[2][0] - m[0][2]) / s,
-                       (m[0][1] - m[1][0]) / s);
-    } else if (m[0][0] >= m[1][1] && m[0][0] >= m[2][2]) {
-        const double s = 2.0 * std::sqrt(1.0 + m[0][0] - m[1][1] - m[2][2]);
-        q = glm::dquat((m[1][2] - m[2][1]) / s, 0.25 * s, (m[1][0] + m[0][1]) / s,
-                       (m[2][0] + m[0][2]) / s);
-    } else if (m[1][1] >= m[2][2]) {
-        const double s = 2.0 * std::sqrt(1.0 + m[1][1] - m[0][0] - m[2][2]);
-        q = glm::dquat((m[2][0] - m[0][2]) / s, (m[1][0] + m[0][1]) / s, 0.25 * s,
-                       (m[2][1] + m[1][2]) / s);
-    } else {
-        const double s = 2.0 * std::sqrt(1.0 + m[2][2] - m[0][0] - m[1][1]);
-        q = glm::dquat((m[0][1] - m[1][0]) / s, (m[2][0] + m[0][2]) / s, (m[2][1] + m[1][2]) / s,
-                       0.25 * s);
-    }
-    if (q.w < 0.0) q = -q;
-    return glm::normalize(q);
-}
-
 MassProperties mass_properties(const ani_mesh_view &mesh, double mass) {
     MassProperties out;
     out.mass = mass;

@@ -5,6 +5,7 @@
 // form of Eberly, "Polyhedral Mass Properties (Revisited)"), exact for polyhedra.
 #pragma once
 
+#include <animator/free_rotation.hpp>
 #include <animator/physics.h>
 
 #include <glm/gtc/quaternion.hpp>
@@ -46,7 +47,6 @@ void principal_axes(const glm::dmat3 &tensor, glm::dvec3 &moments, glm::dmat3 &a
 // solid ball: centre bound_center, inertia 2/5 m r^2 with r = bound_radius, volume 4/3 pi r^3.
 MassProperties mass_properties(const ani_mesh_view &mesh, double mass);
 
-// The rotation matrix of a unit quaternion from a rotation matrix (Shepperd's method).
-glm::dquat quaternion_of(const glm::dmat3 &rotation);
+using ani::quaternion_of; // animator/free_rotation.hpp
 
 } // namespace physics_custom

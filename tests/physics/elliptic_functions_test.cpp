@@ -1,7 +1,7 @@
 // Jacobi elliptic functions and Carlson-form integrals from k'^2 (elliptic_functions.hpp)
 // against Boost.Math's own (an independent algorithm) for ordinary moduli, and against the
 // limits of Abramowitz & Stegun 16.15 and the quarter-period identities near k = 1.
-#include "elliptic_functions.hpp"
+#include "animator/elliptic_functions.hpp"
 
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_3.hpp>
@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
-using namespace physics_custom;
+using namespace ani;
 
 TEST_CASE("elliptic functions: sn, cn, dn, K, F and Pi agree with Boost.Math") {
     double worst = 0.0;

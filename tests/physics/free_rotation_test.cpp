@@ -2,7 +2,7 @@
 // thousand turns, the spherical and symmetric tops against hand-derived closed forms, the
 // asymmetric top against a fine RK4 integration of Euler's equations, and the period of the
 // intermediate-axis flip against 4 K(k) / omega_p.
-#include "free_rotation.hpp"
+#include "animator/free_rotation.hpp"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
@@ -13,7 +13,7 @@
 #include <cmath>
 #include <functional>
 
-using namespace physics_custom;
+using namespace ani;
 
 namespace {
 

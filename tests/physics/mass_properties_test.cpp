@@ -1,7 +1,7 @@
 // Mass properties of closed meshes (mass_properties.hpp) against closed forms derived by hand
 // in each test, to 1e-12 relative; the detection of meshes that are not closed; and a box turning
 // freely (free_rotation.hpp) from its principal frame.
-#include "free_rotation.hpp"
+#include "animator/free_rotation.hpp"
 #include "mass_properties.hpp"
 
 #include <catch2/catch.hpp>
@@ -14,6 +14,7 @@
 #include <vector>
 
 using namespace physics_custom;
+using namespace ani;
 
 namespace {
 

@@ -1,7 +1,6 @@
-#include "free_rotation.hpp"
+#include "animator/free_rotation.hpp"
 
-#include "elliptic_functions.hpp"
-#include "mass_properties.hpp"
+#include "animator/elliptic_functions.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_access.hpp>
@@ -11,7 +10,7 @@
 #include <cmath>
 #include <limits>
 
-namespace physics_custom {
+namespace ani {
 
 namespace {
 
@@ -209,4 +208,29 @@ void FreeRotation::evaluate(double t, glm::dquat &q, glm::dvec3 &w) const {
     }
 }
 
-} // namespace physics_custom
+glm::dquat quaternion_of(const glm::dmat3 &m) {
+    // Shepperd: take the largest of 4w^2, 4x^2, 4y^2, 4z^2 to divide by. m[c][r] is column c.
+    const double trace = m[0][0] + m[1][1] + m[2][2];
+    glm::dquat q;
+    if (trace >= m[0][0] && trace >= m[1][1] && trace >= m[2][2]) {
+        const double s = 2.0 * std::sqrt(1.0 + trace);
+        q = glm::dquat(0.25 * s, (m[1][2] - m[2][1]) / s, (m[2][0] - m[0][2]) / s,
+                       (m[0][1] - m[1][0]) / s);
+    } else if (m[0][0] >= m[1][1] && m[0][0] >= m[2][2]) {
+        const double s = 2.0 * std::sqrt(1.0 + m[0][0] - m[1][1] - m[2][2]);
+        q = glm::dquat((m[1][2] - m[2][1]) / s, 0.25 * s, (m[1][0] + m[0][1]) / s,
+                       (m[2][0] + m[0][2]) / s);
+    } else if (m[1][1] >= m[2][2]) {
+        const double s = 2.0 * std::sqrt(1.0 + m[1][1] - m[0][0] - m[2][2]);
+        q = glm::dquat((m[2][0] - m[0][2]) / s, (m[1][0] + m[0][1]) / s, 0.25 * s,
+                       (m[2][1] + m[1][2]) / s);
+    } else {
+        const double s = 2.0 * std::sqrt(1.0 + m[2][2] - m[0][0] - m[1][1]);
+        q = glm::dquat((m[0][1] - m[1][0]) / s, (m[2][0] + m[0][2]) / s, (m[2][1] + m[1][2]) / s,
+                       0.25 * s);
+    }
+    if (q.w < 0.0) q = -q;
+    return glm::normalize(q);
+}
+
+} // namespace ani

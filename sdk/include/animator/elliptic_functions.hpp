@@ -3,7 +3,7 @@
 // body spun within a hair of the separatrix (k' far below sqrt(eps)) keeps its true k.
 #pragma once
 
-namespace physics_custom {
+namespace ani {
 
 class EllipticModulus {
   public:
@@ -24,4 +24,4 @@ class EllipticModulus {
     double kc2_, K_;
 };
 
-} // namespace physics_custom
+} // namespace ani

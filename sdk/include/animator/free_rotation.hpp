@@ -1,3 +1,7 @@
+// animator SDK, optional C++ helper (library animator_free_rotation): the closed form that an
+// ABI 1.4 free-rotation segment (physics.h, ani_free_rotation_segment) names, shared by the host
+// that evaluates such segments and the backends that report them.
+//
 // Torque-free rotation of a rigid body, in closed form: the orientation and angular velocity at
 // any time from those at t0, at a cost that does not grow with t - t0.
 //  - spherical top (I1 = I2 = I3): the angular velocity is constant, q(t) = exp(w (t-t0)/2) q0;
@@ -13,16 +17,20 @@
 // Moments are equal when they differ by no more than 1e-12 of the largest.
 #pragma once
 
-#include "elliptic_functions.hpp"
+#include "animator/elliptic_functions.hpp"
 
 #include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include <string>
 
-namespace physics_custom {
+namespace ani {
 
-// For a model with mass properties p (mass_properties.hpp) and world orientation q_model, the
+// The rotation matrix's unit quaternion (Shepperd's method), w >= 0.
+glm::dquat quaternion_of(const glm::dmat3 &rotation);
+
+// For a model with mass properties p (physics.custom's mass_properties.hpp) and world orientation q_model, the
 // principal frame's orientation is q_model * p.principal_orientation, and the model's world
 // orientation at t is q(t) * conjugate(p.principal_orientation); it turns about its centre of
 // mass.
@@ -69,4 +77,4 @@ class FreeRotation {
     void elliptic_at(double u, double &sn, double &cn, double &dn, double &P) const;
 };
 
-} // namespace physics_custom
+} // namespace ani

@@ -1,11 +1,11 @@
-#include "elliptic_functions.hpp"
+#include "animator/elliptic_functions.hpp"
 
 #include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
 
 #include <cmath>
 
-namespace physics_custom {
+namespace ani {
 
 EllipticModulus::EllipticModulus(double kc2) : kc2_(kc2) {
     // K = pi / (2 AGM(1, k')) (Gauss).
@@ -67,4 +67,4 @@ double EllipticModulus::complete_third_kind(double n) const {
     return K_ + n / 3.0 * boost::math::ellint_rj(0.0, kc2_, 1.0, 1.0 - n);
 }
 
-} // namespace physics_custom
+} // namespace ani
