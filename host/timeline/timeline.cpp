@@ -52,12 +52,13 @@ struct BakeContext {
     std::vector<ani_collision_event> *events;
     const std::function<bool(double)> *progress;
     std::map<std::string, double> *counts;
-    std::vector<std::vector<ani_rotation_segment>> *rotations;
+    std::vector<std::vector<RotationSegment>> *rotations;
     std::vector<ani_overlap> *overlaps;
+    std::string refused = {}; // a free-rotation segment the host cannot evaluate
 };
 
 // Euler angles (degrees in [0, 360), the documents' X-Y-Z convention) of a rotation segment at t.
-glm::dvec3 angles_at(const ani_rotation_segment &s, double t) {
+glm::dvec3 angles_at(const RotationSegment &s, double t) {
     const glm::dmat4 m = glm::mat4_cast(orientation_at(s, t));
     double x = 0.0, y = 0.0, z = 0.0;
     glm::extractEulerAngleXYZ(m, x, y, z);
@@ -71,12 +72,28 @@ glm::dvec3 angles_at(const ani_rotation_segment &s, double t) {
 
 } // namespace
 
-glm::dquat orientation_at(const ani_rotation_segment &s, double t) {
+glm::dquat orientation_at(const RotationSegment &s, double t) {
+    if (s.free) {
+        glm::dquat q;
+        glm::dvec3 w;
+        s.free->evaluate(t, q, w);
+        return glm::normalize(q * glm::conjugate(s.principal));
+    }
     const glm::dquat q0(s.q0.w, s.q0.x, s.q0.y, s.q0.z);
     const glm::dvec3 w(s.w.x, s.w.y, s.w.z);
     const double speed = glm::length(w);
     const glm::dquat turn = speed > 0.0 ? glm::angleAxis(speed * (t - s.t0), w / speed) : glm::dquat(1.0, 0.0, 0.0, 0.0);
     return glm::normalize(turn * q0);
+}
+
+glm::dvec3 angular_velocity_at(const RotationSegment &s, double t) {
+    if (s.free) {
+        glm::dquat q;
+        glm::dvec3 w;
+        s.free->evaluate(t, q, w);
+        return w;
+    }
+    return {s.w.x, s.w.y, s.w.z};
 }
 
 Timeline::Timeline(const Document &doc, PluginRegistry &plugins, const std::string &backend)
@@ -93,10 +110,10 @@ const ani_motion_segment *Timeline::segment_at(int model, double t) const {
     return &*(it - 1);
 }
 
-const ani_rotation_segment *Timeline::rotation_at(int model, double t) const {
+const RotationSegment *Timeline::rotation_at(int model, double t) const {
     const auto &turns = rotations_[static_cast<size_t>(model)];
     const auto r = std::upper_bound(turns.begin(), turns.end(), t,
-                                    [](double time, const ani_rotation_segment &x) { return time < x.t0; });
+                                    [](double time, const RotationSegment &x) { return time < x.t0; });
     return r != turns.begin() && t <= (r - 1)->t1 ? &*(r - 1) : nullptr;
 }
 
@@ -156,7 +173,7 @@ void Timeline::truncate(double from) {
     events_.erase(std::remove_if(events_.begin(), events_.end(), [&](const ani_collision_event &e) { return e.t >= from; }),
                   events_.end());
     for (auto &list : rotations_) {
-        list.erase(std::remove_if(list.begin(), list.end(), [&](const ani_rotation_segment &s) { return s.t0 >= from; }),
+        list.erase(std::remove_if(list.begin(), list.end(), [&](const RotationSegment &s) { return s.t0 >= from; }),
                    list.end());
         if (!list.empty() && list.back().t1 > from) list.back().t1 = from;
     }
@@ -188,10 +205,10 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         pm.keyed_spans = &spans[m];
         pm.keyed_span_count = 1;
         pm.start = starts[m];
-        if (const ani_rotation_segment *r = rotation_at(static_cast<int>(m), from)) {
+        if (const RotationSegment *r = rotation_at(static_cast<int>(m), from)) {
             const glm::dquat q = orientation_at(*r, from);
             pm.start_orientation = ani_quat{q.w, q.x, q.y, q.z};
-            pm.start_angular_velocity = r->w;
+            pm.start_angular_velocity = to_ani(angular_velocity_at(*r, from));
             pm.start_turning = 1;
         }
         for (const Keyframe *k : doc_.keys_of(static_cast<int>(m))) key_times[m].push_back(static_cast<double>(k->time_ms) / 1000.0);
@@ -234,7 +251,35 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     };
     sink.rotation = [](void *c, const ani_rotation_segment *s) {
         auto *ctx = static_cast<BakeContext *>(c);
-        if (s->model < ctx->rotations->size()) (*ctx->rotations)[s->model].push_back(*s);
+        if (s->model < ctx->rotations->size()) {
+            RotationSegment r;
+            static_cast<ani_rotation_segment &>(r) = *s;
+            (*ctx->rotations)[s->model].push_back(std::move(r));
+        }
+    };
+    sink.free_rotation = [](void *c, const ani_free_rotation_segment *s) {
+        auto *ctx = static_cast<BakeContext *>(c);
+        if (s->model >= ctx->rotations->size() || !ctx->refused.empty()) return;
+        const glm::dvec3 moments(s->moments.x, s->moments.y, s->moments.z), w0(s->w0.x, s->w0.y, s->w0.z);
+        const glm::dquat q0(s->q0.w, s->q0.x, s->q0.y, s->q0.z), principal(s->principal.w, s->principal.x, s->principal.y, s->principal.z);
+        std::string why = ani::FreeRotation::refusal(moments, w0);
+        const double numbers[] = {s->t0, s->t1, q0.w, q0.x, q0.y, q0.z, principal.w, principal.x, principal.y, principal.z};
+        for (double x : numbers)
+            if (why.empty() && !std::isfinite(x)) why = "a time or an orientation is not finite";
+        if (why.empty() && (glm::length(q0) == 0.0 || glm::length(principal) == 0.0)) why = "an orientation is zero";
+        if (!why.empty()) {
+            ctx->refused = "model " + std::to_string(s->model) + "'s free-rotation segment at t = " + std::to_string(s->t0) + " s: " + why;
+            return;
+        }
+        RotationSegment r;
+        r.model = s->model;
+        r.t0 = s->t0;
+        r.t1 = s->t1;
+        r.q0 = s->q0;
+        r.w = s->w0;
+        r.principal = glm::normalize(principal);
+        r.free = std::make_shared<const ani::FreeRotation>(moments, glm::normalize(q0) * r.principal, w0, s->t0);
+        (*ctx->rotations)[s->model].push_back(std::move(r));
     };
     sink.overlap = [](void *c, const ani_overlap *o) {
         auto *ctx = static_cast<BakeContext *>(c);
@@ -257,6 +302,10 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     if (code != ANI_OK) {
         truncate(from);
         throw PluginError("physics backend '" + physics_->info().id + "': " + status.message);
+    }
+    if (!context.refused.empty()) {
+        truncate(from);
+        throw PluginError("physics backend '" + physics_->info().id + "' reported " + context.refused);
     }
     stats_.seconds_baked += until - from;
     baked_until_ = until;
@@ -282,7 +331,7 @@ Frame Timeline::evaluate(double t) const {
             pose.velocity = velocity_at(*s, t);
         }
         // A backend that turns models (rigid-body rotation) overrides the keys' angles.
-        if (const ani_rotation_segment *r = rotation_at(m, t)) pose.angles = angles_at(*r, t);
+        if (const RotationSegment *r = rotation_at(m, t)) pose.angles = angles_at(*r, t);
         frame.models[static_cast<size_t>(m)] = pose;
     }
     frame.camera = keyed_->camera(t);

@@ -8,11 +8,14 @@
 #include "document/document_view.hpp"
 #include "timeline/keyed_motion.hpp"
 
+#include <animator/free_rotation.hpp>
+
 #include <glm/gtc/quaternion.hpp>
 
 #include <functional>
 #include <limits>
 #include <map>
+#include <memory>
 #include <stdexcept>
 
 namespace animator {
@@ -34,8 +37,18 @@ struct BakeStats {
     std::map<std::string, double> backend_counts; // the backend's own counts, summed by name
 };
 
-// The world orientation of a rotation segment at t: q0 followed by a turn of |w| (t - t0) about w.
-glm::dquat orientation_at(const ani_rotation_segment &s, double t);
+// A backend's rotation segment: at constant angular velocity (ani_rotation_segment: q0 followed
+// by a turn of |w| (t - t0) about w), or, when `free` is set (ABI 1.4, ani_free_rotation_segment),
+// torque-free: the principal frame turns as `free` says and the model is it times
+// conjugate(principal). q0 and w are the model's orientation and angular velocity at t0 either way.
+struct RotationSegment : ani_rotation_segment {
+    std::shared_ptr<const ani::FreeRotation> free;
+    glm::dquat principal{1.0, 0.0, 0.0, 0.0};
+};
+
+// The world orientation and angular velocity (rad/s, world axes) of a rotation segment at t.
+glm::dquat orientation_at(const RotationSegment &s, double t);
+glm::dvec3 angular_velocity_at(const RotationSegment &s, double t);
 
 class Timeline {
   public:
@@ -82,14 +95,14 @@ class Timeline {
     const std::vector<ani_motion_segment> &segments(int model) const { return segments_[static_cast<size_t>(model)]; }
     const std::vector<ani_collision_event> &events() const { return events_; }
     // The backend's rotation segments of a model (only for a backend that turns models).
-    const std::vector<ani_rotation_segment> &rotations(int model) const { return rotations_[static_cast<size_t>(model)]; }
+    const std::vector<RotationSegment> &rotations(int model) const { return rotations_[static_cast<size_t>(model)]; }
     // The pairs of models the backend found overlapping (each once, when found), in the order found.
     const std::vector<ani_overlap> &overlaps() const { return overlaps_; }
     const BakeStats &stats() const { return stats_; }
     const std::string &backend_id() const { return physics_->info().id; }
     const KeyedMotion &keyed() const { return *keyed_; }
     // The backend's rotation segment that turns the model at t, if one does.
-    const ani_rotation_segment *rotation_at(int model, double t) const;
+    const RotationSegment *rotation_at(int model, double t) const;
 
   private:
     void truncate(double from);
@@ -111,7 +124,7 @@ class Timeline {
     std::vector<std::shared_ptr<const MeshView>> meshes_; // per model (shared by models with one mesh), null without
     std::vector<std::vector<ani_motion_segment>> segments_;
     std::vector<ani_collision_event> events_;
-    std::vector<std::vector<ani_rotation_segment>> rotations_; // per model, in time order
+    std::vector<std::vector<RotationSegment>> rotations_; // per model, in time order
     std::vector<ani_overlap> overlaps_;
     double baked_until_ = 0.0;
     bool baked_any_ = false;

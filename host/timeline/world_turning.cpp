@@ -37,9 +37,9 @@ std::vector<Turning> world_turnings(const Timeline &timeline, const Frame &frame
         for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
             const size_t m = *it;
             Turning &o = out[m];
-            if (const ani_rotation_segment *s = timeline.rotation_at(static_cast<int>(m), t)) {
+            if (const RotationSegment *s = timeline.rotation_at(static_cast<int>(m), t)) {
                 o.q = orientation_at(*s, t);
-                o.w = glm::dvec3(s->w.x, s->w.y, s->w.z);
+                o.w = angular_velocity_at(*s, t);
             } else {
                 o = keyed(frame.models[m]);
                 if (models[m].parent >= 0) {

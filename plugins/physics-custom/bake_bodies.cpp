@@ -397,65 +397,77 @@ void EventBake::start_spin(Body &b, double t) {
     if (!((b.sphere || b.turns) && b.dynamics && b.material.rotates && t >= b.keys_end)) return;
     const ani_physics_model &m = scene_->models[b.model];
     b.spin.on = true;
-    b.spin.t0 = t;
+    b.spin.moments = b.moments;
+    b.spin.principal = b.principal;
     if (t == t_begin_ && ANI_PHYSICS_MODEL_HAS_TURNING(&m) && m.start_turning) {
         const ani_quat &q = m.start_orientation;
-        b.spin.q0 = glm::normalize(glm::dquat(q.w, q.x, q.y, q.z));
-        b.spin.w = vec(m.start_angular_velocity);
+        b.spin.start(t, glm::normalize(glm::dquat(q.w, q.x, q.y, q.z)),
+                     vec(m.start_angular_velocity));
         return;
     }
     const glm::dquat keyed =
         orientation_of_angles(vec(keyed_state(*scene_, b.model, t, nullptr).angles));
     if (b.keys_end <= 0.0) {
-        const Spin from_zero{
-            true, 0.0,
-            orientation_of_angles(vec(keyed_state(*scene_, b.model, 0.0, nullptr).angles)),
-            b.material.angular_velocity};
-        b.spin.q0 = from_zero.at(t);
-        b.spin.w = from_zero.w;
+        Spin from_zero = b.spin;
+        from_zero.start(
+            0.0, orientation_of_angles(vec(keyed_state(*scene_, b.model, 0.0, nullptr).angles)),
+            b.material.angular_velocity);
+        b.spin.start(t, from_zero.at(t), from_zero.rate(t));
         return;
     }
     const double h = 1e-6 * std::max(1.0, std::abs(t));
     const glm::dquat before =
         orientation_of_angles(vec(keyed_state(*scene_, b.model, t - h, nullptr).angles));
-    b.spin.q0 = keyed;
-    b.spin.w = angular_velocity_between(before, keyed, h);
+    b.spin.start(t, keyed, angular_velocity_between(before, keyed, h));
 }
 
 // A body's angular velocity changes at t: its rotation segment so far is reported.
 void EventBake::turn(Body &b, double t, const glm::dvec3 &w) {
-    if (w == b.spin.w) return;
+    if (w == b.spin.rate(t)) return;
     emit_spin(b, t);
-    b.spin.q0 = b.spin.at(t);
-    b.spin.t0 = t;
-    b.spin.w = w;
+    b.spin.start(t, b.spin.at(t), w);
 }
 
 // Reports a turning body's rotation from the start of its stretch (or of this slice) to t.
 void EventBake::emit_spin(const Body &b, double t) {
     const double from = std::max(b.spin.t0, t_begin_);
-    if (!sink_->rotation || !(t > from)) return;
+    if (!(t > from)) return;
     const glm::dquat q = b.spin.at(from);
+    const glm::dvec3 w = b.spin.rate(from);
+    if (!std::isfinite(q.w) || !std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z) ||
+        !std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z))
+        throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
+                                               name_of(scene_->models[b.model]) +
+                                               "' would turn to a value that is not finite");
+    if (b.spin.torque_free()) { // its angular velocity changes: the closed form's terms
+        if (!sink_->free_rotation) return;
+        ani_free_rotation_segment s{};
+        s.model = b.model;
+        s.t0 = from;
+        s.t1 = t;
+        s.q0 = ani_quat{q.w, q.x, q.y, q.z};
+        s.w0 = ani(w);
+        s.moments = ani(b.spin.moments);
+        const glm::dquat &p = b.spin.principal;
+        s.principal = ani_quat{p.w, p.x, p.y, p.z};
+        sink_->free_rotation(sink_->context, &s);
+        return;
+    }
+    if (!sink_->rotation) return;
     ani_rotation_segment s{};
     s.model = b.model;
     s.t0 = from;
     s.t1 = t;
     s.q0 = ani_quat{q.w, q.x, q.y, q.z};
-    s.w = ani(b.spin.w);
-    if (!std::isfinite(q.w) || !std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z) ||
-        !std::isfinite(s.w.x) || !std::isfinite(s.w.y) || !std::isfinite(s.w.z))
-        throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
-                                               name_of(scene_->models[b.model]) +
-                                               "' would turn to a value that is not finite");
+    s.w = ani(w);
     sink_->rotation(sink_->context, &s);
 }
 
 // A model that `rotates` must be able to: its mesh closed (it turns about its centre of mass,
-// which an open mesh has not). physics.custom turns spheres, and other models whose three
-// principal moments are equal (spherical tops: a cube, a regular polyhedron) with their
-// centre of mass at their origin, as their keys scale them at `t` (where they become free):
-// their shape for those. Any other model with Rotates on moves without turning, and the log
-// says so once per bake.
+// which an open mesh has not). physics.custom turns spheres, and other models whose centre of
+// mass is their origin, as their keys scale them at `t` (where they become free): their shape
+// for those. A model whose centre of mass is elsewhere moves without turning (the host turns
+// models about their origin), and the log says so once per bake.
 std::optional<EventBake::TurningShape> EventBake::check_turning(uint32_t i, bool sphere, double t) {
     const ani_physics_model &m = scene_->models[i];
     if (!ANI_MODEL_DESC_HAS_BODY(m.desc) || !m.desc->rotates || !m.desc->dynamics)
@@ -468,17 +480,14 @@ std::optional<EventBake::TurningShape> EventBake::check_turning(uint32_t i, bool
                                "); turn Rotates off or close the mesh");
     if (sphere) return std::nullopt; // its spin: start_spin
     TurningShape shape = turning_shape(i, t);
-    const glm::dvec3 moments = shape.mass.principal_moments;
-    const bool top = moments.z - moments.x <= 1e-9 * moments.z;
-    const bool centred =
-        glm::length(shape.mass.center_of_mass) <= 1e-9 * std::max(shape.reach, 1e-300);
-    if (top && centred) return shape;
+    const glm::dvec3 com = shape.mass.center_of_mass;
+    if (glm::length(com) <= 1e-9 * std::max(shape.reach, 1e-300)) return shape;
     if (t_begin_ == 0.0)
-        log_warning(std::string("model '") + name_of(m) +
-                    "' has Rotates on, but physics.custom turns only spheres and models "
-                    "whose three principal moments are equal with their centre of mass at "
-                    "their origin (a cube) so far: it moves without turning (physics.bullet "
-                    "turns it)");
+        log_warning(std::string("model '") + name_of(m) + "' has Rotates on, but its centre of mass (" +
+                    std::to_string(com.x) + ", " + std::to_string(com.y) + ", " + std::to_string(com.z) +
+                    " in its own frame, as its keys scale it) is not its origin, and physics.custom "
+                    "turns models only about their origin so far: it moves without turning "
+                    "(physics.bullet turns it; or centre its mesh on its origin)");
     return std::nullopt;
 }
 
@@ -511,9 +520,14 @@ void EventBake::set_turning(Body &b, TurningShape shape) {
     b.turning_vertices = std::move(shape.vertices);
     b.turning_reach = shape.reach;
     b.scale = shape.scale;
-    // A spherical top: one moment about every axis (their mean, equal to rounding).
+    // A spherical top (a cube): one moment about every axis (their mean, equal to rounding);
+    // otherwise (a box) it turns without torque as its principal moments and axes say.
     const glm::dvec3 moments = shape.mass.principal_moments;
     b.inv_inertia = 3.0 / (moments.x + moments.y + moments.z);
+    if (moments.z - moments.x > 1e-9 * moments.z) {
+        b.moments = moments;
+        b.principal = shape.mass.principal_orientation;
+    }
 }
 
 } // namespace physics_custom::bake

@@ -46,7 +46,7 @@ double EventBake::point_speed(const Body &b, double t, double dt) const {
     if (b.free_sphere()) return glm::length(b.path.velocity(t - b.t0)) + glm::length(b.path.a) * dt;
     if (b.turning()) // its centre's speed, and |w| times its reach from its centre of mass
         return glm::length(b.path.velocity(t - b.t0)) + glm::length(b.path.a) * dt +
-               glm::length(b.spin.w) * b.turning_reach;
+               b.spin.rate_bound() * b.turning_reach;
     const double h = std::max(1e-6, dt);
     const Pose p = pose(b, t), q = pose(b, t + h);
     const double reach = b.sphere ? 0.0 : b.reach;
@@ -60,7 +60,7 @@ double EventBake::point_speed(const Body &b, double t, double dt) const {
 // or scaling moves each of its points differently).
 glm::dvec3 EventBake::point_velocity(const Body &b, const glm::dvec3 &point, double t) const {
     if (b.turning())
-        return b.path.velocity(t - b.t0) + glm::cross(b.spin.w, point - b.path.at(t - b.t0));
+        return b.path.velocity(t - b.t0) + glm::cross(b.spin.rate(t), point - b.path.at(t - b.t0));
     if (!b.keyed()) return b.path.velocity(t - b.t0); // free: it translates
     const Pose p = pose(b, t);
     if (b.sphere) return p.velocity;
@@ -511,6 +511,13 @@ TurningPath EventBake::turning_path(const Body &b, double now) const {
     path.a = b.path.a;
     path.q0 = b.spin.at(now);
     path.w = b.spin.w;
+    if (b.spin.torque_free()) { // its angular velocity changes: bounded over all time
+        const Spin spin = b.spin;
+        path.turn = [spin, now](double t) { return spin.at(now + t); };
+        path.turn_rate = [spin, now](double t) { return spin.rate(now + t); };
+        path.w_bound = spin.rate_bound();
+        path.w_rate_bound = spin.rate_change_bound();
+    }
     return path;
 }
 

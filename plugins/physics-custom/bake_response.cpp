@@ -306,8 +306,8 @@ ImpulseBody EventBake::impulse_body(const Body &b, const glm::dvec3 &point, doub
     x.v = b.path.velocity(t - b.t0);
     x.r = point - b.path.at(t - b.t0);
     if (b.turning()) {
-        x.inv_inertia = glm::dmat3(b.inv_inertia);
-        x.w = b.spin.w;
+        x.inv_inertia = b.spin.free ? b.spin.inverse_inertia(t) : glm::dmat3(b.inv_inertia);
+        x.w = b.spin.rate(t);
     } else if (b.sphere && b.spin.on) {
         x.inv_inertia = glm::dmat3(sphere_inverse_inertia(m, b.radius));
         x.w = b.spin.w;

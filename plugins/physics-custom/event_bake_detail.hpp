@@ -103,15 +103,17 @@ struct Body {
     Material material;             // restitution, friction, turning (issue 18)
     Spin spin;                  // a free sphere that rotates: its orientation and angular velocity
     double settles_at = kNever; // put on its support by the Zeno rule: the accumulation time
-    // A model that is not a sphere and turns from its contacts once free (Rotates on; a
-    // spherical top whose centre of mass is its origin, such as a cube; check_turning): its
-    // vertices scaled as its keys leave it (about its centre of mass, which its origin is), the
-    // farthest of them, its inverse moment of inertia, and its keys' scale, which its turn
-    // (spin) is applied after.
+    // A model that is not a sphere and turns from its contacts once free (Rotates on; its
+    // centre of mass at its origin; check_turning): its vertices scaled as its keys leave it
+    // (about its centre of mass, which its origin is), the farthest of them, its inertia (a
+    // spherical top's inverse moment, such as a cube's, or the principal moments and axes of
+    // any other, such as a box's), and its keys' scale, which its turn (spin) is applied after.
     bool turns = false;
     std::vector<glm::dvec3> turning_vertices;
     double turning_reach = 0.0;
-    double inv_inertia = 0.0;
+    double inv_inertia = 0.0; // a spherical top's; the others': spin.moments and spin.principal
+    glm::dvec3 moments{0.0};  // principal moments when they differ (a box), else 0
+    glm::dquat principal{1.0, 0.0, 0.0, 0.0}; // its principal axes in its own frame
     glm::dmat3 scale{1.0};
 
     bool keyed() const { return mode == Mode::kKeyed; }

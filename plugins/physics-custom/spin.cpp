@@ -8,7 +8,51 @@
 
 namespace physics_custom {
 
+void Spin::start(double t, const glm::dquat &q, const glm::dvec3 &rate) {
+    t0 = t;
+    q0 = q;
+    w = rate;
+    free.reset();
+    if (moments.x > 0.0)
+        free = std::make_shared<const ani::FreeRotation>(moments, q0 * principal, w, t0);
+}
+
+glm::dvec3 Spin::rate(double t) const {
+    if (!torque_free()) return w;
+    glm::dquat q;
+    glm::dvec3 rate;
+    free->evaluate(t, q, rate);
+    return rate;
+}
+
+double Spin::rate_bound() const {
+    const double speed = glm::length(w);
+    if (!torque_free()) return speed;
+    const glm::dvec3 body = glm::conjugate(q0 * principal) * w;
+    const double twice_energy = glm::dot(body, moments * body);
+    return (1.0 + 1e-12) * std::max(speed, std::sqrt(twice_energy / moments.x));
+}
+
+double Spin::rate_change_bound() const {
+    if (!torque_free()) return 0.0;
+    const glm::dvec3 body = glm::conjugate(q0 * principal) * w;
+    return (1.0 + 1e-12) * glm::length(moments * body) * rate_bound() / moments.x;
+}
+
+glm::dmat3 Spin::inverse_inertia(double t) const {
+    const glm::dmat3 r = glm::mat3_cast(at(t) * principal);
+    const glm::dmat3 inverse(glm::dvec3(1.0 / moments.x, 0.0, 0.0), glm::dvec3(0.0, 1.0 / moments.y, 0.0),
+                             glm::dvec3(0.0, 0.0, 1.0 / moments.z));
+    return r * inverse * glm::transpose(r);
+}
+
 glm::dquat Spin::at(double t) const {
+    if (torque_free()) {
+        glm::dquat q;
+        glm::dvec3 rate;
+        free->evaluate(t, q, rate);
+        return glm::normalize(q * glm::conjugate(principal));
+    }
     const double speed = glm::length(w);
     if (!(speed > 0.0)) return q0;
     return glm::normalize(glm::angleAxis(speed * (t - t0), w / speed) * q0);

@@ -1,11 +1,17 @@
-// The turning of a free sphere that `rotates` (issue 18). A sphere is a spherical top (inertia
-// 2/5 m r^2 about every axis), so without torque its angular velocity is constant and its
+// The turning of a free model that `rotates` (issue 18). A sphere or a cube is a spherical top
+// (one moment about every axis), so without torque its angular velocity is constant and its
 // orientation is exactly q(t) = turn(w (t - t0)) q0: one rotation segment per stretch between the
-// contacts that change w.
+// contacts that change w. Any other body (a box, a cylinder) turns without torque as Euler and
+// Poinsot say, exactly (animator/free_rotation.hpp): its angular velocity changes as it turns.
 #pragma once
 
+#include <animator/free_rotation.hpp>
+
 #include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
+
+#include <memory>
 
 namespace physics_custom {
 
@@ -13,8 +19,25 @@ struct Spin {
     bool on = false; // contacts turn it; reported as rotation segments
     double t0 = 0.0; // start of the current stretch
     glm::dquat q0{1.0, 0.0, 0.0, 0.0};
-    glm::dvec3 w{0.0}; // rad/s, world axes
+    glm::dvec3 w{0.0}; // rad/s, world axes, at t0 (throughout for a spherical top)
+    // A body whose principal moments differ: its moments (ascending; 0 for a spherical top) and
+    // principal axes in its own frame, and its torque-free turn from (q0, w) at t0 (start()).
+    glm::dvec3 moments{0.0};
+    glm::dquat principal{1.0, 0.0, 0.0, 0.0};
+    std::shared_ptr<const ani::FreeRotation> free;
+
+    // Turns from orientation q at angular velocity w at time t.
+    void start(double t, const glm::dquat &q, const glm::dvec3 &w);
     glm::dquat at(double t) const;
+    glm::dvec3 rate(double t) const; // the angular velocity at t
+    // Whether its angular velocity changes as it turns (reported as free-rotation segments).
+    bool torque_free() const { return free && free->kind() != ani::FreeRotation::Kind::constant; }
+    // Bounds over all time of |w(t)| and |w'(t)| (Euler: I w' = (I w) x w, with |w| at most
+    // sqrt(2 T / I1) and |I w| = |L| kept).
+    double rate_bound() const;
+    double rate_change_bound() const;
+    // The world inverse inertia at t of a body whose moments are set: R P diag(1/I) P^T R^T.
+    glm::dmat3 inverse_inertia(double t) const;
 };
 
 // The world orientation of Euler angles X-Y-Z in degrees (the keys' convention, as

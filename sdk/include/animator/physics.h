@@ -119,6 +119,21 @@ typedef struct ani_rotation_segment {
     ani_vec3 w;    /* angular velocity, radians per second, world frame */
 } ani_rotation_segment;
 
+/* Since ABI 1.4: a model's orientation over [t0, t1] when the backend turns it as a rigid body
+ * whose principal moments are not all equal (a box, a cylinder): torque-free rotation, whose
+ * angular velocity changes as it turns. The principal frame's world orientation at t0 is
+ * q0 * principal; its orientation at t is that of the closed form in animator/free_rotation.hpp,
+ * ani::FreeRotation(moments, q0 * principal, w0, t0).evaluate(t, ...), and the model's is that
+ * times conjugate(principal). The segments of one model, of both kinds, are in time order. */
+typedef struct ani_free_rotation_segment {
+    uint32_t model;
+    double t0, t1;      /* seconds */
+    ani_quat q0;        /* unit; world orientation of the model at t0 */
+    ani_vec3 w0;        /* angular velocity at t0, radians per second, world frame */
+    ani_vec3 moments;   /* principal moments of inertia, ascending, > 0 (kg m^2) */
+    ani_quat principal; /* unit; the principal axes in the model's own frame (model <- principal) */
+} ani_free_rotation_segment;
+
 /* Since ABI 1.2: two models found overlapping when they start to interact (at the start of a
  * bake, when a model becomes free inside another, or when its keys take it back inside one).
  * The backend treats them as touching (docs/physics.md, "Models that start overlapping") and
@@ -149,6 +164,11 @@ typedef struct ani_bake_sink {
     /* Since ABI 1.2 (a backend built for 1.2 runs only in a host of 1.2 or newer, which always
      * sets this field, possibly to NULL): each pair found overlapping, when found. */
     void (*overlap)(void *context, const ani_overlap *overlap);
+    /* Since ABI 1.4 (a backend built for 1.4 runs only in a host of 1.4 or newer, which always
+     * sets this field, possibly to NULL): the free-rotation segments of models the backend turns.
+     * The host refuses the bake when one is not finite or its moments are not ascending and
+     * positive (FreeRotation::refusal). */
+    void (*free_rotation)(void *context, const ani_free_rotation_segment *segment);
 } ani_bake_sink;
 
 typedef struct ani_physics_api {
