@@ -93,6 +93,7 @@ struct Body {
     std::unique_ptr<btRigidBody> rb;
     std::unique_ptr<Track> track;
     std::unique_ptr<RotationTrack> rotation; // only when Bullet turns it
+    bool gyroscopic = false; // turned, with moments that differ (start_dynamic)
     glm::dvec3 a{0.0};                       // its acceleration when free (gravity or none)
     double keyed_from = 0.0;                 // start of the current keyed span
     double keys_end = 0.0;                   // where its keyed span ends: free from there
@@ -779,6 +780,15 @@ class Bake {
         b.rb->setMassProps(b.mass, inertia);
         const double turn = b.rotation ? 1.0 : 0.0; // Rotates: inertia from the shape
         b.rb->setAngularFactor(btVector3(turn, turn, turn));
+        // Moments that differ (a box): its angular velocity changes in free flight (Euler's
+        // equations), so Bullet's implicit gyroscopic term is on; a spherical top keeps w.
+        const double most = inertia.x() > inertia.y() ? std::max(inertia.x(), inertia.z())
+                                                      : std::max(inertia.y(), inertia.z()),
+                     least = inertia.x() < inertia.y() ? std::min(inertia.x(), inertia.z())
+                                                       : std::min(inertia.y(), inertia.z());
+        b.gyroscopic = b.rotation && most - least > 1e-9 * most;
+        b.rb->setFlags(b.gyroscopic ? b.rb->getFlags() | BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY
+                                    : b.rb->getFlags() & ~BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY);
         b.rb->setLinearFactor(btVector3(1.0, 1.0, 1.0));
         if (b.gravity) {
             b.rb->setFlags(b.rb->getFlags() & ~BT_DISABLE_WORLD_GRAVITY);
@@ -902,6 +912,7 @@ class Bake {
             if (b.mode == Mode::kKeyed || b.resume_at < kNever) return false;
             if (t < b.last_key && !same_time(t, b.last_key)) return false;
             if (b.mode == Mode::kDynamic && !b.track->stepping()) return false;
+            if (b.mode == Mode::kDynamic && b.gyroscopic) return false; // w changes: steps
         }
         // Not bounded by t_end: where a bake coasts to (and so where Bullet steps again) must
         // not depend on where it is cut into slices. A bake may coast past its end (closed
