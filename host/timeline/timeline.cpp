@@ -127,10 +127,23 @@ ani_body_state Timeline::state_at(int model, double t) const {
         state.velocity = to_ani(pose.velocity);
     } else {
         state.motion = s->motion;
-        state.center = to_ani(at(*s, t));
-        state.velocity = to_ani(velocity_at(*s, t));
+        glm::dvec3 center, velocity;
+        origin_at(model, *s, t, center, velocity);
+        state.center = to_ani(center);
+        state.velocity = to_ani(velocity);
     }
     return state;
+}
+
+void Timeline::origin_at(int model, const ani_motion_segment &s, double t, glm::dvec3 &center,
+                         glm::dvec3 &velocity) const {
+    center = at(s, t);
+    velocity = velocity_at(s, t);
+    const RotationSegment *r = rotation_at(model, t);
+    if (!r || r->pivot == glm::dvec3(0.0)) return;
+    const glm::dvec3 arm = orientation_at(*r, t) * r->pivot;
+    center -= arm;
+    velocity -= glm::cross(angular_velocity_at(*r, t), arm);
 }
 
 void Timeline::set_meshes(const std::vector<std::shared_ptr<const Mesh>> &meshes) {
@@ -263,9 +276,10 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         const glm::dvec3 moments(s->moments.x, s->moments.y, s->moments.z), w0(s->w0.x, s->w0.y, s->w0.z);
         const glm::dquat q0(s->q0.w, s->q0.x, s->q0.y, s->q0.z), principal(s->principal.w, s->principal.x, s->principal.y, s->principal.z);
         std::string why = ani::FreeRotation::refusal(moments, w0);
-        const double numbers[] = {s->t0, s->t1, q0.w, q0.x, q0.y, q0.z, principal.w, principal.x, principal.y, principal.z};
+        const double numbers[] = {s->t0, s->t1, q0.w, q0.x, q0.y, q0.z, principal.w, principal.x, principal.y, principal.z,
+                                  s->pivot.x, s->pivot.y, s->pivot.z};
         for (double x : numbers)
-            if (why.empty() && !std::isfinite(x)) why = "a time or an orientation is not finite";
+            if (why.empty() && !std::isfinite(x)) why = "a time, an orientation or the pivot is not finite";
         if (why.empty() && (glm::length(q0) == 0.0 || glm::length(principal) == 0.0)) why = "an orientation is zero";
         if (!why.empty()) {
             ctx->refused = "model " + std::to_string(s->model) + "'s free-rotation segment at t = " + std::to_string(s->t0) + " s: " + why;
@@ -278,6 +292,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         r.q0 = s->q0;
         r.w = s->w0;
         r.principal = glm::normalize(principal);
+        r.pivot = glm::dvec3(s->pivot.x, s->pivot.y, s->pivot.z);
         r.free = std::make_shared<const ani::FreeRotation>(moments, glm::normalize(q0) * r.principal, w0, s->t0);
         (*ctx->rotations)[s->model].push_back(std::move(r));
     };
@@ -326,10 +341,7 @@ Frame Timeline::evaluate(double t) const {
         ModelPose pose = keyed_->model(m, t); // rotation and scale always come from the keys
         const ani_motion_segment *s = segment_at(m, t);
         frame.motion[static_cast<size_t>(m)] = s ? s->motion : ANI_MOTION_KEYED;
-        if (s && s->motion != ANI_MOTION_KEYED) {
-            pose.center = at(*s, t);
-            pose.velocity = velocity_at(*s, t);
-        }
+        if (s && s->motion != ANI_MOTION_KEYED) origin_at(m, *s, t, pose.center, pose.velocity);
         // A backend that turns models (rigid-body rotation) overrides the keys' angles.
         if (const RotationSegment *r = rotation_at(m, t)) pose.angles = angles_at(*r, t);
         frame.models[static_cast<size_t>(m)] = pose;

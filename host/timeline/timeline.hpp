@@ -44,6 +44,9 @@ struct BakeStats {
 struct RotationSegment : ani_rotation_segment {
     std::shared_ptr<const ani::FreeRotation> free;
     glm::dquat principal{1.0, 0.0, 0.0, 0.0};
+    // The point the model turns about, in its own frame as scaled (0: its origin): the motion
+    // segments then give where this point is, not the origin (ani_free_rotation_segment).
+    glm::dvec3 pivot{0.0};
 };
 
 // The world orientation and angular velocity (rad/s, world axes) of a rotation segment at t.
@@ -107,6 +110,10 @@ class Timeline {
   private:
     void truncate(double from);
     ani_body_state state_at(int model, double t) const;
+    // Where the model's origin is and how fast it moves at t from its free motion segment s: a
+    // model turned about a pivot has the pivot's motion in s.
+    void origin_at(int model, const ani_motion_segment &s, double t, glm::dvec3 &center,
+                   glm::dvec3 &velocity) const;
     const ani_motion_segment *segment_at(int model, double t) const;
     void run_bake(double from, double until, const std::function<bool(double)> &progress);
 

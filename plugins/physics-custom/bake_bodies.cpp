@@ -221,6 +221,15 @@ void EventBake::activate(Body &b, double t, const ani_body_state &start) {
     b.support_edges.clear();
     b.settles_at = kNever;
     start_spin(b, t);
+    if (b.turning() && b.pivot != glm::dvec3(0.0)) { // its path is its centre of mass's
+        const glm::dvec3 arm = b.spin.at(t) * b.pivot;
+        b.path.p += arm;
+        // Its velocity leaving its keys, or from an earlier bake, is its origin's; a model free
+        // from the start is thrown with the model's velocity at its centre of mass.
+        const ani_physics_model &m = scene_->models[b.model];
+        const bool goes_on = t == t_begin_ && ANI_PHYSICS_MODEL_HAS_TURNING(&m) && m.start_turning;
+        if (b.keys_end > 0.0 || goes_on) b.path.v += glm::cross(b.spin.rate(t), arm);
+    }
     b.shape.reset();
     if (!b.sphere && !b.turns && t >= b.keys_end) { // its keys no longer turn or scale it
         const ani_model_state state = keyed_state(*scene_, b.model, t, nullptr);
@@ -322,6 +331,11 @@ Pose EventBake::pose(const Body &b, double t) const {
     } else {
         p.center = b.path.at(t - b.t0);
         p.velocity = b.path.velocity(t - b.t0);
+        if (b.turning() && b.pivot != glm::dvec3(0.0)) { // the origin, from the centre of mass
+            const glm::dvec3 arm = b.spin.at(t) * b.pivot;
+            p.center -= arm;
+            p.velocity -= glm::cross(b.spin.rate(t), arm);
+        }
     }
     return p;
 }
@@ -439,7 +453,7 @@ void EventBake::emit_spin(const Body &b, double t) {
         throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
                                                name_of(scene_->models[b.model]) +
                                                "' would turn to a value that is not finite");
-    if (b.spin.torque_free()) { // its angular velocity changes: the closed form's terms
+    if (b.spin.torque_free() || b.pivot != glm::dvec3(0.0)) { // the closed form's terms
         if (!sink_->free_rotation) return;
         ani_free_rotation_segment s{};
         s.model = b.model;
@@ -450,6 +464,7 @@ void EventBake::emit_spin(const Body &b, double t) {
         s.moments = ani(b.spin.moments);
         const glm::dquat &p = b.spin.principal;
         s.principal = ani_quat{p.w, p.x, p.y, p.z};
+        s.pivot = ani(b.pivot);
         sink_->free_rotation(sink_->context, &s);
         return;
     }
@@ -464,10 +479,8 @@ void EventBake::emit_spin(const Body &b, double t) {
 }
 
 // A model that `rotates` must be able to: its mesh closed (it turns about its centre of mass,
-// which an open mesh has not). physics.custom turns spheres, and other models whose centre of
-// mass is their origin, as their keys scale them at `t` (where they become free): their shape
-// for those. A model whose centre of mass is elsewhere moves without turning (the host turns
-// models about their origin), and the log says so once per bake.
+// which an open mesh has not). physics.custom turns spheres, and any other closed model about its
+// centre of mass, as its keys scale it at `t` (where it becomes free): its shape for those.
 std::optional<EventBake::TurningShape> EventBake::check_turning(uint32_t i, bool sphere, double t) {
     const ani_physics_model &m = scene_->models[i];
     if (!ANI_MODEL_DESC_HAS_BODY(m.desc) || !m.desc->rotates || !m.desc->dynamics)
@@ -479,16 +492,7 @@ std::optional<EventBake::TurningShape> EventBake::check_turning(uint32_t i, bool
                                "' cannot rotate: its mesh is not closed (" + why +
                                "); turn Rotates off or close the mesh");
     if (sphere) return std::nullopt; // its spin: start_spin
-    TurningShape shape = turning_shape(i, t);
-    const glm::dvec3 com = shape.mass.center_of_mass;
-    if (glm::length(com) <= 1e-9 * std::max(shape.reach, 1e-300)) return shape;
-    if (t_begin_ == 0.0)
-        log_warning(std::string("model '") + name_of(m) + "' has Rotates on, but its centre of mass (" +
-                    std::to_string(com.x) + ", " + std::to_string(com.y) + ", " + std::to_string(com.z) +
-                    " in its own frame, as its keys scale it) is not its origin, and physics.custom "
-                    "turns models only about their origin so far: it moves without turning "
-                    "(physics.bullet turns it; or centre its mesh on its origin)");
-    return std::nullopt;
+    return turning_shape(i, t);
 }
 
 EventBake::TurningShape EventBake::turning_shape(uint32_t i, double t) const {
@@ -503,14 +507,23 @@ EventBake::TurningShape EventBake::turning_shape(uint32_t i, double t) const {
     std::vector<double> positions;
     for (uint32_t k = 0; k < m.mesh->vertex_count; ++k) {
         const glm::dvec3 p = shape.scale * vertex(*m.mesh, k);
-        shape.vertices.push_back(p);
-        shape.reach = std::max(shape.reach, glm::length(p));
         positions.insert(positions.end(), {p.x, p.y, p.z});
     }
     ani_mesh_view scaled = *m.mesh;
     scaled.positions = positions.data();
     scaled.is_sphere = 0;
     shape.mass = mass_properties(scaled, mass);
+    // About its centre of mass, which is its origin to within 1e-9 of its size (a cube centred
+    // on its origin turns about it exactly).
+    double size = 0.0;
+    for (uint32_t k = 0; k < m.mesh->vertex_count; ++k)
+        size = std::max(size, glm::length(shape.scale * vertex(*m.mesh, k)));
+    if (glm::length(shape.mass.center_of_mass) > 1e-9 * size) shape.pivot = shape.mass.center_of_mass;
+    for (uint32_t k = 0; k < m.mesh->vertex_count; ++k) {
+        const glm::dvec3 p = shape.scale * vertex(*m.mesh, k) - shape.pivot;
+        shape.vertices.push_back(p);
+        shape.reach = std::max(shape.reach, glm::length(p));
+    }
     return shape;
 }
 
@@ -520,11 +533,13 @@ void EventBake::set_turning(Body &b, TurningShape shape) {
     b.turning_vertices = std::move(shape.vertices);
     b.turning_reach = shape.reach;
     b.scale = shape.scale;
+    b.pivot = shape.pivot;
     // A spherical top (a cube): one moment about every axis (their mean, equal to rounding);
-    // otherwise (a box) it turns without torque as its principal moments and axes say.
+    // otherwise (a box) it turns without torque as its principal moments and axes say, and so
+    // does one turned about a pivot (reported as free-rotation segments, which carry it).
     const glm::dvec3 moments = shape.mass.principal_moments;
     b.inv_inertia = 3.0 / (moments.x + moments.y + moments.z);
-    if (moments.z - moments.x > 1e-9 * moments.z) {
+    if (moments.z - moments.x > 1e-9 * moments.z || b.pivot != glm::dvec3(0.0)) {
         b.moments = moments;
         b.principal = shape.mass.principal_orientation;
     }

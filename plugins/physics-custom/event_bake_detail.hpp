@@ -103,9 +103,9 @@ struct Body {
     Material material;             // restitution, friction, turning (issue 18)
     Spin spin;                  // a free sphere that rotates: its orientation and angular velocity
     double settles_at = kNever; // put on its support by the Zeno rule: the accumulation time
-    // A model that is not a sphere and turns from its contacts once free (Rotates on; its
-    // centre of mass at its origin; check_turning): its vertices scaled as its keys leave it
-    // (about its centre of mass, which its origin is), the farthest of them, its inertia (a
+    // A model that is not a sphere and turns from its contacts once free (Rotates on;
+    // check_turning): its vertices scaled as its keys leave it, relative to its centre of mass,
+    // the farthest of them, its inertia (a
     // spherical top's inverse moment, such as a cube's, or the principal moments and axes of
     // any other, such as a box's), and its keys' scale, which its turn (spin) is applied after.
     bool turns = false;
@@ -114,6 +114,9 @@ struct Body {
     double inv_inertia = 0.0; // a spherical top's; the others': spin.moments and spin.principal
     glm::dvec3 moments{0.0};  // principal moments when they differ (a box), else 0
     glm::dquat principal{1.0, 0.0, 0.0, 0.0}; // its principal axes in its own frame
+    // Its centre of mass in its own frame as scaled, which it turns about (0: its origin); while
+    // it turns, `path` is that point's and its vertices are relative to it.
+    glm::dvec3 pivot{0.0};
     glm::dmat3 scale{1.0};
 
     bool keyed() const { return mode == Mode::kKeyed; }
@@ -236,6 +239,7 @@ class EventBake {
         MassProperties mass;
         double reach = 0.0;
         glm::dmat3 scale{1.0};
+        glm::dvec3 pivot{0.0}; // its centre of mass, when not its origin
     };
 
     // The event loop, continued (event_bake.cpp).

@@ -181,6 +181,107 @@ TEST_CASE("a box thrown spinning with Rotates on, e = 1, mu = 0: it turns as Eul
     CHECK(lowest > -1e-9);
 }
 
+namespace {
+
+// The second moment of a closed mesh's solid about the origin, integral of x x^T dV, and its
+// volume and first moment, summed over the tetrahedra (0, a, b, c) of its triangles (signed):
+// each V / 20 (sum v v^T + s s^T), s = a + b + c (the origin a vertex at 0).
+struct Moments {
+    double volume = 0.0;
+    glm::dvec3 first{0.0};
+    glm::dmat3 second{0.0};
+};
+Moments solid_moments(const std::vector<glm::dvec3> &v, const std::vector<uint32_t> &triangles) {
+    Moments out;
+    for (size_t k = 0; k + 2 < triangles.size(); k += 3) {
+        const glm::dvec3 &a = v[triangles[k]], &b = v[triangles[k + 1]], &c = v[triangles[k + 2]];
+        const double volume = glm::dot(a, glm::cross(b, c)) / 6.0;
+        const glm::dvec3 sum = a + b + c;
+        out.volume += volume;
+        out.first += volume * sum / 4.0;
+        out.second += volume / 20.0 *
+                      (glm::outerProduct(a, a) + glm::outerProduct(b, b) +
+                       glm::outerProduct(c, c) + glm::outerProduct(sum, sum));
+    }
+    return out;
+}
+
+} // namespace
+
+TEST_CASE("a cone thrown spinning with Rotates on turns about its centre of mass, which falls "
+          "and bounces straight up and down, energy kept, baked whole or in slices") {
+    const Document doc = shipped_scene("tumbling_cone.lua");
+    const ModelState &start = *doc.keyframes().front().states[1];
+    const Model &cone = doc.models()[1];
+    REQUIRE(cone.rotates);
+    REQUIRE(cone.restitution == 1.0);
+    REQUIRE(cone.friction == 0.0);
+    const double m = cone.mass;
+    std::vector<std::string> warnings;
+    const auto meshes = load_meshes({cone.mesh}, env().assets, {}, warnings);
+    REQUIRE(meshes.at(0));
+    // The cone as its keys scale it, its centre of mass and inertia about it, computed here.
+    std::vector<glm::dvec3> vertices;
+    for (const glm::dvec3 &p : meshes[0]->positions) vertices.push_back(start.scale * p);
+    const Moments solid = solid_moments(vertices, meshes[0]->triangles);
+    const double density = m / solid.volume;
+    const glm::dvec3 com = solid.first / solid.volume;
+    // A pyramid's centre of mass is a quarter of its height above its base: the mesh spans
+    // y in [-1, 1], scaled by 0.6.
+    CHECK(std::abs(com.y - (-0.6 + 0.25 * 1.2)) < 1e-12);
+    const glm::dmat3 c = density * solid.second - m * glm::outerProduct(com, com);
+    const glm::dmat3 inertia = glm::dmat3(c[0][0] + c[1][1] + c[2][2]) - c;
+
+    auto whole = timeline_of(doc), sliced = timeline_of(doc);
+    whole->bake(10.0);
+    for (double t = 0.25; t <= 10.0; t += 0.25) sliced->bake(t);
+    const auto &events = whole->events();
+    REQUIRE(events.size() >= 10);
+    bool pivoted = false;
+    for (const RotationSegment &r : whole->rotations(1))
+        pivoted |= glm::length(r.pivot - com) < 1e-12;
+    CHECK(pivoted);
+
+    struct State {
+        glm::dvec3 com, com_velocity, w;
+        glm::dquat q;
+    };
+    const auto state = [&](const Timeline &t, double time) {
+        const Frame f = t.evaluate(time);
+        const Turning turning = world_turnings(t, f, time)[1];
+        const glm::dvec3 arm = turning.q * com;
+        return State{f.models[1].center + arm,
+                     f.models[1].velocity + glm::cross(turning.w, arm), turning.w, turning.q};
+    };
+    const State first = state(*whole, 0.0);
+    CHECK(glm::length(first.com_velocity) < 1e-12); // thrown from rest at its centre of mass
+    const auto energy = [&](const State &s) {
+        const glm::dmat3 r = glm::mat3_cast(s.q);
+        const glm::dmat3 world = r * inertia * glm::transpose(r);
+        return 0.5 * m * glm::dot(s.com_velocity, s.com_velocity) +
+               0.5 * glm::dot(s.w, world * s.w) + m * G * s.com.y;
+    };
+    const double e0 = energy(first);
+    double worst_drift = 0.0, worst_energy = 0.0, worst_slices = 0.0, lowest = 1e300;
+    for (int k = 0; k <= 2000; ++k) {
+        const double t = 0.005 * k;
+        const State s = state(*whole, t), other = state(*sliced, t);
+        worst_drift = std::max({worst_drift, std::abs(s.com.x - first.com.x),
+                                std::abs(s.com.z - first.com.z), std::abs(s.com_velocity.x),
+                                std::abs(s.com_velocity.z)});
+        worst_energy = std::max(worst_energy, std::abs(energy(s) - e0) / e0);
+        worst_slices = std::max(worst_slices, glm::length(s.com - other.com));
+        const Frame f = whole->evaluate(t);
+        const glm::dmat3 r = glm::mat3_cast(world_turnings(*whole, f, t)[1].q);
+        for (const glm::dvec3 &p : vertices) lowest = std::min(lowest, (f.models[1].center + r * p).y);
+    }
+    CAPTURE(worst_drift, worst_energy, worst_slices, lowest);
+    CHECK(worst_drift < 1e-12);
+    CHECK(worst_energy < 1e-12);
+    CHECK(worst_slices < 1e-9);
+    CHECK(lowest > -1e-9);
+}
+
 TEST_CASE("a cube with Rotates on landing flat with e = 0.5 does not turn at all and comes to "
           "rest at the closed-form time") {
     const Document doc = shipped_scene("cube_landing_flat.lua");

@@ -120,11 +120,14 @@ typedef struct ani_rotation_segment {
 } ani_rotation_segment;
 
 /* Since ABI 1.4: a model's orientation over [t0, t1] when the backend turns it as a rigid body
- * whose principal moments are not all equal (a box, a cylinder): torque-free rotation, whose
- * angular velocity changes as it turns. The principal frame's world orientation at t0 is
+ * without torque, in closed form: for a body whose principal moments are not all equal (a box, a
+ * cylinder) its angular velocity changes as it turns, and a body whose centre of mass is not its
+ * origin turns about that point, `pivot`. The principal frame's world orientation at t0 is
  * q0 * principal; its orientation at t is that of the closed form in animator/free_rotation.hpp,
- * ani::FreeRotation(moments, q0 * principal, w0, t0).evaluate(t, ...), and the model's is that
- * times conjugate(principal). The segments of one model, of both kinds, are in time order. */
+ * ani::FreeRotation(moments, q0 * principal, w0, t0).evaluate(t, ...), and the model's, R(t), is
+ * that times conjugate(principal). While such a segment covers t, the model's motion segment gives
+ * where its pivot is, c(t), and the model's origin is c(t) - R(t) pivot (its velocity
+ * v(t) - w(t) x R(t) pivot). The segments of one model, of both kinds, are in time order. */
 typedef struct ani_free_rotation_segment {
     uint32_t model;
     double t0, t1;      /* seconds */
@@ -132,6 +135,8 @@ typedef struct ani_free_rotation_segment {
     ani_vec3 w0;        /* angular velocity at t0, radians per second, world frame */
     ani_vec3 moments;   /* principal moments of inertia, ascending, > 0 (kg m^2) */
     ani_quat principal; /* unit; the principal axes in the model's own frame (model <- principal) */
+    ani_vec3 pivot;     /* the point it turns about (its centre of mass) in the model's own frame
+                         * as its keys scale it (S p for a point p of its mesh); 0: its origin */
 } ani_free_rotation_segment;
 
 /* Since ABI 1.2: two models found overlapping when they start to interact (at the start of a
