@@ -1,0 +1,73 @@
+// The host's reading of ABI 1.4 free-rotation segments, apart from any real backend: a test
+// backend (fake/free_rotation_backend.cpp) reports a model at rest at the origin turning at
+// w = (0, 0, 2) rad/s about its pivot (0, 1, 0), and the host must place the model's origin at
+// c - R(t) pivot, moving at -w x R(t) pivot, or refuse a segment it cannot evaluate.
+#include "io/environment.hpp"
+#include "timeline/timeline.hpp"
+#include "timeline/world_turning.hpp"
+
+#include "support.hpp"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+using namespace animator;
+
+namespace {
+
+Environment &env() {
+    static Environment e({test::bin_dir().parent_path() / "assets"},
+                         {test::bin_dir(), ANIMATOR_FAKE_PLUGIN_DIR},
+                         [](ani_log_level, const std::string &, const std::string &) {});
+    return e;
+}
+
+Document one_model(bool bad) {
+    Document doc;
+    Model top;
+    top.name = "top";
+    top.mesh = "cube";
+    top.dynamics = true;
+    doc.add_model(top, ModelState{});
+    Settings s = doc.settings();
+    s.params["physics.test_free_rotation"]["bad"] = {bad ? 1.0 : 0.0, 0.0, 0.0, 0.0};
+    doc.set_settings(s);
+    return doc;
+}
+
+} // namespace
+
+TEST_CASE("a free-rotation segment about a pivot places the model's origin around the pivot") {
+    Timeline timeline(one_model(false), env().plugins, "physics.test_free_rotation");
+    timeline.bake(2.0);
+    REQUIRE(timeline.rotations(0).size() == 1);
+    // By hand: after t the model has turned 2 t about z, so its pivot (0, 1, 0) points to
+    // (-sin 2t, cos 2t, 0) from its origin, and the origin, the pivot being at 0, is the
+    // opposite; it moves at -w x R pivot = 2 (cos 2t, sin 2t, 0).
+    for (double t : {0.0, 0.3, std::acos(-1.0) / 4.0, 1.7}) {
+        const Frame f = timeline.evaluate(t);
+        CAPTURE(t);
+        const glm::dvec3 origin(std::sin(2 * t), -std::cos(2 * t), 0.0),
+            velocity(2 * std::cos(2 * t), 2 * std::sin(2 * t), 0.0);
+        CHECK(glm::length(f.models[0].center - origin) < 1e-12);
+        CHECK(glm::length(f.models[0].velocity - velocity) < 1e-12);
+        const Turning turning = world_turnings(timeline, f, t)[0];
+        CHECK(glm::length(turning.w - glm::dvec3(0, 0, 2)) < 1e-12);
+        CHECK(glm::length(turning.q * glm::dvec3(1, 0, 0) -
+                          glm::dvec3(std::cos(2 * t), std::sin(2 * t), 0)) < 1e-12);
+    }
+}
+
+TEST_CASE("a free-rotation segment the host cannot evaluate fails the bake, naming the model") {
+    Timeline timeline(one_model(true), env().plugins, "physics.test_free_rotation");
+    try {
+        timeline.bake(1.0);
+        FAIL("the bake took moments that are not ascending");
+    } catch (const PluginError &e) {
+        CHECK_THAT(e.what(), Catch::Contains("model 0's free-rotation segment at t = 0") &&
+                                 Catch::Contains("not in ascending order"));
+    }
+    CHECK(timeline.rotations(0).empty());
+}
