@@ -702,6 +702,17 @@ class Bake {
             b.rotation =
                 std::make_unique<RotationTrack>(i, rotation_sink(), std::max(b.shape->reach, 1e-9));
             b.rotation->set_gravity(glm::length(b.a));
+            // Bullet turns a body about its origin; physics.custom turns it about its centre of
+            // mass. Said when they differ, so that `compare` is read knowing it.
+            const glm::dvec3 com = info_of(i).closed && !m.mesh->is_sphere
+                                       ? centre_of_mass(*m.mesh, vec(s.scale))
+                                       : glm::dvec3(0.0);
+            if (t_begin_ == 0.0 && glm::length(com) > 1e-9 * b.shape->reach)
+                log(ANI_LOG_WARNING,
+                    std::string("model '") + name_of(m) + "' turns about its origin in " +
+                        "physics.bullet, not about its centre of mass (" + std::to_string(com.x) +
+                        ", " + std::to_string(com.y) + ", " + std::to_string(com.z) +
+                        " in its own frame, scaled) as in physics.custom");
         }
         btRigidBody::btRigidBodyConstructionInfo ci(0.0, nullptr, b.shape->shape.get());
         b.rb = std::make_unique<btRigidBody>(ci);

@@ -359,4 +359,21 @@ const char *Shape::count_name() const {
     }
 }
 
+glm::dvec3 centre_of_mass(const ani_mesh_view &mesh, const glm::dvec3 &scale) {
+    double volume = 0.0;
+    glm::dvec3 moment(0.0);
+    const auto at = [&](uint32_t k) {
+        const double *p = mesh.positions + 3 * static_cast<size_t>(k);
+        return scale * glm::dvec3(p[0], p[1], p[2]);
+    };
+    for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
+        const glm::dvec3 a = at(mesh.triangles[3 * t]), b = at(mesh.triangles[3 * t + 1]),
+                         c = at(mesh.triangles[3 * t + 2]);
+        const double v = glm::dot(a, glm::cross(b, c)) / 6.0;
+        volume += v;
+        moment += v * (a + b + c) / 4.0;
+    }
+    return volume > 0.0 ? moment / volume : glm::dvec3(0.0);
+}
+
 } // namespace physics_bullet

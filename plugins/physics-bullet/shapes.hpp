@@ -30,6 +30,10 @@ MeshInfo analyse_mesh(const ani_mesh_view &mesh);
 // for a closed convex mesh.
 bool inside_convex(const ani_mesh_view &mesh, const glm::dvec3 &p);
 
+// The centre of mass of a closed mesh under a scale, as a uniform solid (the signed
+// tetrahedra from the origin to each triangle); the origin when it has no volume.
+glm::dvec3 centre_of_mass(const ani_mesh_view &mesh, const glm::dvec3 &scale);
+
 enum class ShapeKind { kSphere, kHull, kBvhTriangles, kGImpactTriangles };
 
 // A Bullet shape with what it points into, for a mesh under a scale (rotation and translation

@@ -12,6 +12,7 @@
 
 #include <animator/plugin_cpp.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -284,6 +285,27 @@ TEST_CASE("a box spinning in free flight with Rotates turns as Euler's equations
     // term the error is O(1) (w does not change).
     const double bounds[3] = {0.15, 0.04, 0.01};
     check_converges("orientation", error, bounds);
+}
+
+TEST_CASE("a turning model whose centre of mass is off its origin is said to turn about its "
+          "origin in Bullet") {
+    for (const char *mesh : {"cone", "cube"}) {
+        Document doc = no_gravity();
+        Model body = model("body", mesh, true, false);
+        body.rotates = true;
+        body.angular_velocity = {0.0, 0.0, 1.0};
+        doc.add_model(body, placed({0, 0, 0}, glm::dvec3(0.5)));
+        take_log();
+        timeline_of(doc)->bake(0.1);
+        const std::vector<std::string> lines = take_log();
+        // The cone mesh spans y in [-1, 1]: its centre of mass is at y = -1/2, scaled -0.25.
+        const bool said = std::any_of(lines.begin(), lines.end(), [](const std::string &l) {
+            return l.find("'body' turns about its origin in physics.bullet, not about its centre "
+                          "of mass (0.000000, -0.250000, 0.000000") != std::string::npos;
+        });
+        CAPTURE(mesh);
+        CHECK(said == (std::string(mesh) == "cone"));
+    }
 }
 
 TEST_CASE("a model's rigid-body settings are checked, the model named") {
