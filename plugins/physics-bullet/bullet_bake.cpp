@@ -94,6 +94,8 @@ struct Body {
     std::unique_ptr<Track> track;
     std::unique_ptr<RotationTrack> rotation; // only when Bullet turns it
     bool gyroscopic = false; // turned, with moments that differ (start_dynamic)
+    bool turns = false;      // Rotates and Dynamics: Bullet turns it
+    glm::dvec3 pivot{0.0};   // its centre of mass when not its origin (pivot_of)
     glm::dvec3 a{0.0};                       // its acceleration when free (gravity or none)
     double keyed_from = 0.0;                 // start of the current keyed span
     double keys_end = 0.0;                   // where its keyed span ends: free from there
@@ -184,6 +186,7 @@ class Bake {
         print_ = physics_custom::scene_print(*scene_);
         out_.resize(scene_->model_count);
         rotation_out_.resize(scene_->model_count);
+        pivots_.assign(scene_->model_count, glm::dvec3(0.0));
         ++worlds_;
         setup_world();
         classify();
@@ -603,10 +606,25 @@ class Bake {
         return it->second;
     }
 
+    // The point a turning body turns about: its closed mesh's centre of mass under `scale`, in
+    // its own frame, when that is not its origin (1e-9 of its size); Bullet's body is placed
+    // there, its shape relative to it, and the host told (free-rotation segments' pivot).
+    glm::dvec3 pivot_of(const Body &b, const glm::dvec3 &scale) {
+        const ani_mesh_view &mesh = *scene_->models[b.model].mesh;
+        if (!b.turns || mesh.is_sphere || !info_of(b.model).closed) return glm::dvec3(0.0);
+        const glm::dvec3 com = centre_of_mass(mesh, scale);
+        const double size = mesh.bound_radius * std::max({scale.x, scale.y, scale.z}) +
+                            glm::length(vec(mesh.bound_center) * scale);
+        const glm::dvec3 pivot = glm::length(com) > 1e-9 * size ? com : glm::dvec3(0.0);
+        pivots_[b.model] = pivot;
+        return pivot;
+    }
+
     // The shape of model i at a scale: a sphere, a convex hull, or its triangles (a BVH when it
     // never moves, GImpact when it does). `room`: a static convex mesh a body starts inside.
     std::unique_ptr<Shape> make_shape(uint32_t i, const glm::dvec3 &scale, bool moving,
-                                      bool room = false) {
+                                      bool room = false,
+                                      const glm::dvec3 &pivot = glm::dvec3(0.0)) {
         const ani_mesh_view &mesh = *scene_->models[i].mesh;
         if (!(scale.x > 0.0 && scale.y > 0.0 && scale.z > 0.0))
             throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, std::string("model '") +
@@ -623,9 +641,9 @@ class Bake {
                                    std::string("model '") + name_of(scene_->models[i]) +
                                        "' has a mesh without area (every triangle is degenerate)");
             if (info.convex && !room)
-                shape = hull_shape(mesh, scale, options_.margin);
+                shape = hull_shape(mesh, scale, options_.margin, pivot);
             else
-                shape = triangle_shape(mesh, scale, moving);
+                shape = triangle_shape(mesh, scale, moving, pivot);
         }
         shape->scale = scale;
         ++shapes_built_;
@@ -697,22 +715,13 @@ class Bake {
         b.last_key = last_key(i);
         b.track = std::make_unique<Track>(i, segment_sink());
         const ani_model_state s = keyed_state(i, t_begin_);
-        b.shape = make_shape(i, vec(s.scale), true);
-        if (materials_[i].rotates && b.dynamics) {
+        b.turns = materials_[i].rotates && b.dynamics;
+        b.pivot = pivot_of(b, vec(s.scale));
+        b.shape = make_shape(i, vec(s.scale), true, false, b.pivot);
+        if (b.turns) {
             b.rotation =
                 std::make_unique<RotationTrack>(i, rotation_sink(), std::max(b.shape->reach, 1e-9));
             b.rotation->set_gravity(glm::length(b.a));
-            // Bullet turns a body about its origin; physics.custom turns it about its centre of
-            // mass. Said when they differ, so that `compare` is read knowing it.
-            const glm::dvec3 com = info_of(i).closed && !m.mesh->is_sphere
-                                       ? centre_of_mass(*m.mesh, vec(s.scale))
-                                       : glm::dvec3(0.0);
-            if (t_begin_ == 0.0 && glm::length(com) > 1e-9 * b.shape->reach)
-                log(ANI_LOG_WARNING,
-                    std::string("model '") + name_of(m) + "' turns about its origin in " +
-                        "physics.bullet, not about its centre of mass (" + std::to_string(com.x) +
-                        ", " + std::to_string(com.y) + ", " + std::to_string(com.z) +
-                        " in its own frame, scaled) as in physics.custom");
         }
         btRigidBody::btRigidBodyConstructionInfo ci(0.0, nullptr, b.shape->shape.get());
         b.rb = std::make_unique<btRigidBody>(ci);
@@ -721,7 +730,8 @@ class Bake {
         b.rb->setFlags(b.rb->getFlags() & ~BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY);
         b.rb->setUserIndex(static_cast<int>(i));
         b.rb->setUserIndex2(static_cast<int>(bodies_.size()));
-        b.rb->setWorldTransform(transform(vec(s.center), orientation(s)));
+        b.rb->setWorldTransform(
+            transform(vec(s.center) + orientation(s) * b.pivot, orientation(s)));
 
         if (released) {
             // Released from its keys at a contact in an earlier bake: free until its next key.
@@ -777,8 +787,17 @@ class Bake {
         set_kinematic(b);
     }
 
-    void start_dynamic(Body &b, double t, const glm::dvec3 &x, const glm::dvec3 &v,
+    void start_dynamic(Body &b, double t, const glm::dvec3 &origin, const glm::dvec3 &origin_v,
                        const glm::dquat &q, const glm::dvec3 &w = glm::dvec3(0.0)) {
+        // A body turning about its centre of mass: Bullet's body is that point. Its velocity is
+        // its origin's (leaving its keys, or from the host), except when it is free from the
+        // start: thrown with the model's velocity at its centre of mass (as in physics.custom).
+        glm::dvec3 x = origin, v = origin_v;
+        if (b.pivot != glm::dvec3(0.0)) {
+            const glm::dvec3 arm = q * b.pivot;
+            x += arm;
+            if (b.keys_end > 0.0) v += glm::cross(w, arm);
+        }
         b.mode = Mode::kDynamic;
         const bool was_in_world = b.rb->isInWorld();
         if (was_in_world) world_->removeRigidBody(b.rb.get());
@@ -1138,11 +1157,11 @@ class Bake {
             glm::dquat q0, q1;
             if (b.mode == Mode::kKeyed) {
                 const ani_model_state s0 = keyed_state(b.model, t0), s1 = keyed_state(b.model, t1);
-                c0 = vec(s0.center);
-                c1 = vec(s1.center);
                 q0 = orientation(s0);
                 q1 = orientation(s1);
                 update_shape(b, vec(s0.scale));
+                c0 = vec(s0.center) + q0 * b.pivot;
+                c1 = vec(s1.center) + q1 * b.pivot;
             } else {
                 c0 = b.track->position(t0);
                 c1 = b.track->position(t1);
@@ -1171,7 +1190,8 @@ class Bake {
     // Keys that scale a model change its shape: built again for the new scale.
     void update_shape(Body &b, const glm::dvec3 &scale) {
         if (b.shape->scale == scale) return;
-        std::unique_ptr<Shape> shape = make_shape(b.model, scale, true);
+        b.pivot = pivot_of(b, scale);
+        std::unique_ptr<Shape> shape = make_shape(b.model, scale, true, false, b.pivot);
         const bool in_world = b.rb->isInWorld();
         if (in_world) world_->removeRigidBody(b.rb.get());
         b.rb->setCollisionShape(shape->shape.get());
@@ -1557,7 +1577,24 @@ class Bake {
         sink_->segment(sink_->context, &s);
     }
     void send(const ani_rotation_segment &s) {
-        if (sink_->rotation) sink_->rotation(sink_->context, &s);
+        const glm::dvec3 pivot = pivots_[s.model];
+        if (pivot == glm::dvec3(0.0)) {
+            if (sink_->rotation) sink_->rotation(sink_->context, &s);
+            return;
+        }
+        // Turned about its centre of mass: the host needs the pivot (a spherical top's moments,
+        // so that the closed form is the constant angular velocity of this segment).
+        if (!sink_->free_rotation) return;
+        ani_free_rotation_segment f{};
+        f.model = s.model;
+        f.t0 = s.t0;
+        f.t1 = s.t1;
+        f.q0 = s.q0;
+        f.w0 = s.w;
+        f.moments = ani_vec3{1.0, 1.0, 1.0};
+        f.principal = ani_quat{1.0, 0.0, 0.0, 0.0};
+        f.pivot = ani(pivot);
+        sink_->free_rotation(sink_->context, &f);
     }
 
     // At the start of a slice, what the last one held back, up to the new t_end.
@@ -1697,6 +1734,7 @@ class Bake {
     std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
     std::unique_ptr<btDiscreteDynamicsWorld> world_;
     std::vector<Body> bodies_;
+    std::vector<glm::dvec3> pivots_; // per model: what it turns about (pivot_of), 0: its origin
     std::vector<Obstacle> obstacles_;
     // The models outside Bullet's stepping: keyed over [keyed_from, keyed_to], then `track`.
     struct Fixed {

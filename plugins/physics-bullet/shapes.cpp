@@ -211,11 +211,12 @@ std::unique_ptr<Shape> sphere_shape(double radius) {
 // hull is shrunk by the margin first, so its faces stay where the mesh's are (only its edges and
 // corners are rounded by the margin: `largest`, at most a fifth of its inner radius).
 std::unique_ptr<Shape> hull_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale,
-                                  double largest) {
+                                  double largest, const glm::dvec3 &offset) {
     auto s = std::make_unique<Shape>();
     s->kind = ShapeKind::kHull;
     s->scale = scale;
-    const std::vector<glm::dvec3> v = scaled_vertices(mesh, scale);
+    std::vector<glm::dvec3> v = scaled_vertices(mesh, scale);
+    for (glm::dvec3 &p : v) p -= offset;
     s->reach = reach_of(v);
     glm::dvec3 centroid(0.0);
     for (const glm::dvec3 &p : v) centroid += p;
@@ -245,11 +246,12 @@ std::unique_ptr<Shape> hull_shape(const ani_mesh_view &mesh, const glm::dvec3 &s
 }
 
 std::unique_ptr<Shape> triangle_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale,
-                                      bool moving) {
+                                      bool moving, const glm::dvec3 &offset) {
     auto s = std::make_unique<Shape>();
     s->kind = moving ? ShapeKind::kGImpactTriangles : ShapeKind::kBvhTriangles;
     s->scale = scale;
-    const std::vector<glm::dvec3> v = scaled_vertices(mesh, scale);
+    std::vector<glm::dvec3> v = scaled_vertices(mesh, scale);
+    for (glm::dvec3 &p : v) p -= offset;
     s->reach = reach_of(v);
     glm::dvec3 lo(0.0), hi(0.0);
     if (!v.empty()) lo = hi = v[0];

@@ -65,10 +65,12 @@ struct Shape {
 };
 
 std::unique_ptr<Shape> sphere_shape(double radius);
+// `offset`: a point of the mesh's own frame (scaled) that becomes the shape's origin (a body
+// that turns about its centre of mass).
 std::unique_ptr<Shape> hull_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale,
-                                  double margin = 0.04);
+                                  double margin = 0.04, const glm::dvec3 &offset = glm::dvec3(0.0));
 std::unique_ptr<Shape> triangle_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale,
-                                      bool moving);
+                                      bool moving, const glm::dvec3 &offset = glm::dvec3(0.0));
 
 // Whether a contact found at `point` (the mesh's own coordinates, scaled) on triangle `index`
 // with normal `normal` (same frame) is an artefact of an inner edge or corner of a flat region:
