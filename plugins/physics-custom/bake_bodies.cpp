@@ -307,6 +307,7 @@ void EventBake::restart(Body &b, double t, const glm::dvec3 &velocity, bool stop
     b.t0 = t;
     b.path = stop ? Path{p, glm::dvec3(0.0), glm::dvec3(0.0)} : Path{p, velocity, b.path.a};
     b.motion = stop ? ANI_MOTION_REST : ANI_MOTION_FREE;
+    if (b.support >= 0 && !stop) aim_friction(b); // on its support: friction against it now
     b.settles_at = kNever;
     ++b.version;
 }

@@ -240,6 +240,7 @@ void EventBake::predict(int i, double now) {
         return;
     }
     double limit = std::min(horizon_, next.t) - now;
+    predict_friction(i, now, limit, next);
     if (b.in_grid)
         if (auto exit = first_exit(from_now(b, now), grid_->bounds(b.cell), limit)) {
             limit = exit->t;

@@ -50,6 +50,7 @@ bool EventBake::try_settle(int i, double t) {
             held.support_d = ob.offsets[k];
             held.support_edges = support_boundary(ob, held);
             held.support_feet = {-r * n};
+            hold_on(held, static_cast<int>(o), n);
             if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t))))
                 continue; // on the rim of the flat region, on its way off
             close_segment(b, t);
@@ -105,6 +106,7 @@ bool EventBake::settle_on(int i, int o, const glm::dvec3 &n, double t) {
     if (held.support_feet.empty()) return false;
     held.t0 = t;
     held.path = Path{c, v - glm::dot(v, n) * n, b.free_a - glm::dot(b.free_a, n) * n};
+    hold_on(held, o, n);
     if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t)))) return false;
     close_segment(b, t);
     held.motion = ANI_MOTION_FREE;
@@ -192,6 +194,8 @@ void EventBake::unsupport(Body &b, double t) {
     b.path = Path{b.path.at(t - b.t0), v, b.free_a};
     b.t0 = t;
     b.support = -1;
+    b.rub = 0.0;
+    b.reaim_at = kNever;
     b.support_edges.clear();
     b.support_feet.clear();
     b.settles_at = kNever;
@@ -208,6 +212,126 @@ void EventBake::after_contact(int i, double t) {
             unsupport(b, t);
     }
     try_settle(i, t);
+}
+
+// A free model that is not a sphere, placed on a face of a static model (touching its plane with
+// its lowest vertices over the face, not moving into or out of it, pulled into it) and not
+// turning, rests or slides there from the start: settle_on, as if it had landed there.
+bool EventBake::try_settle_mesh(int i, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    if (b.sphere || !b.active || b.keyed() || b.support >= 0 || b.motion == ANI_MOTION_REST ||
+        !(b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))))
+        return false;
+    const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
+    const std::vector<glm::dvec3> corners = placed_vertices(b, t);
+    const double reach = body_size(b), slack = 1e-9 * std::max(1.0, 2.0 * reach);
+    for (size_t o = 0; o < obstacles_.size(); ++o) {
+        const Obstacle &ob = obstacles_[o];
+        const int key = -1 - static_cast<int>(o);
+        if (glm::length(c - ob.center) > reach + ob.radius + slack || is_ignored(i, key) ||
+            is_overlapped(i, key))
+            continue;
+        std::vector<glm::dvec3> tried; // the normals settle_on has been asked about
+        for (size_t k = 0; k < ob.normals.size(); ++k) {
+            const glm::dvec3 n = ob.normals[k];
+            if (n == glm::dvec3(0.0) || !(glm::dot(b.free_a, n) < 0.0) ||
+                std::abs(glm::dot(v, n)) > 1e-9 * std::max(1.0, glm::length(v)))
+                continue;
+            glm::dvec3 lowest = c + corners.front();
+            for (const glm::dvec3 &r : corners)
+                if (glm::dot(n, c + r) < glm::dot(n, lowest)) lowest = c + r;
+            if (std::abs(glm::dot(n, lowest) - ob.offsets[k]) > slack ||
+                glm::length(closest_point_on_triangle(lowest, ob.corners[3 * k],
+                                                      ob.corners[3 * k + 1],
+                                                      ob.corners[3 * k + 2]) -
+                            lowest) > slack)
+                continue;
+            if (std::any_of(tried.begin(), tried.end(),
+                            [&](const glm::dvec3 &m) { return glm::dot(m, n) > 1.0 - 1e-9; }))
+                continue;
+            tried.push_back(n);
+            if (settle_on(i, static_cast<int>(o), n, t)) return true;
+        }
+    }
+    return false;
+}
+
+// ---- sliding with Coulomb friction -----------------------------------------------------
+
+// A body put on the support o with normal n: friction there decelerates it by mu g_n, the
+// pair's mu (the higher of the two) times the part of its acceleration into the face, and its
+// path on the face starts with that (aim_friction). (A sphere that rotates keeps sliding
+// without friction: rolling is issue 19's next step.)
+void EventBake::hold_on(Body &b, int o, const glm::dvec3 &n) {
+    const Material mo = material_of(*scene_->models[obstacles_[static_cast<size_t>(o)].model].desc);
+    const double mu = combined_friction(b.material.friction, mo.friction);
+    b.rub = b.sphere && b.spin.on ? 0.0 : mu * std::max(0.0, -glm::dot(b.free_a, n));
+    aim_friction(b);
+}
+
+// The acceleration on the support from b.t0, where its path starts: the part of its own along
+// the face, a_t, and friction of magnitude rub against its velocity. Moving, that is
+// a_t - rub v/|v|, a parabola in the face's plane, exact while a_t is along v (a level face, or
+// sliding straight down or up a slope) until it stops (predict_friction). At rest, static
+// friction holds it still while |a_t| <= rub; otherwise it starts sliding down along a_t at
+// |a_t| - rub. Sliding across a slope its velocity turns as it goes, and so does friction: the
+// path is then pieces over which the velocity turns by at most kAimTurn, each with friction along
+// the velocity at its middle (physics.md gives the error of that).
+void EventBake::aim_friction(Body &b) {
+    constexpr double kAimTurn = 1e-3; // radians
+    const glm::dvec3 n = b.support_n, a_t = b.free_a - glm::dot(b.free_a, n) * n,
+                     v = b.path.v - glm::dot(b.path.v, n) * n;
+    b.reaim_at = kNever;
+    const double speed = glm::length(v), pull = glm::length(a_t);
+    if (b.rub == 0.0) {
+        b.path.a = a_t;
+    } else if (speed == 0.0) {
+        b.path.a = pull <= b.rub ? glm::dvec3(0.0) : a_t * (1.0 - b.rub / pull);
+    } else {
+        const glm::dvec3 a = a_t - (b.rub / speed) * v;
+        const glm::dvec3 across = a_t - (glm::dot(a_t, v) / (speed * speed)) * v;
+        const double turn_rate = glm::length(across) / speed; // rad/s, its velocity's turn
+        if (glm::length(across) <= 1e-12 * pull) {
+            b.path.a = a;
+        } else {
+            const double h = kAimTurn / turn_rate;
+            b.path.a = a_t - b.rub * glm::normalize(v + 0.5 * h * a);
+            b.reaim_at = b.t0 + h;
+        }
+    }
+}
+
+// When friction changes on the support: the body stops (its velocity reaches 0 along a
+// parabola whose acceleration is against it), or its friction is aimed again.
+void EventBake::predict_friction(int i, double now, double &limit, Predicted &next) const {
+    const Body &b = bodies_[static_cast<size_t>(i)];
+    if (b.support < 0 || b.rub == 0.0) return;
+    const Path p = from_now(b, now);
+    double s = kNever;
+    int stops = 0;
+    if (const double along = glm::dot(p.v, p.a); along < 0.0) {
+        s = -along / glm::dot(p.a, p.a);
+        stops = 1;
+    }
+    if (b.reaim_at - now < s) {
+        s = std::max(0.0, b.reaim_at - now);
+        stops = 0;
+    }
+    if (s <= limit) {
+        limit = s;
+        next = predicted(now + s, EventKind::kFriction, stops);
+    }
+}
+
+// The event: at rest from here exactly (static friction may then hold it), or moving on with
+// friction along its velocity now.
+void EventBake::friction_changes(Body &b, double now, bool stops) {
+    const glm::dvec3 p = b.path.at(now - b.t0), v = b.path.velocity(now - b.t0);
+    close_segment(b, now);
+    b.t0 = now;
+    b.path = Path{p, stops ? glm::dvec3(0.0) : v, b.path.a};
+    aim_friction(b);
+    ++b.version;
 }
 
 } // namespace physics_custom::bake

@@ -26,7 +26,8 @@ void EventBake::run() {
     for (size_t i = 0; i < bodies_.size(); ++i)
         if (bodies_[i].active) {
             find_overlaps(static_cast<int>(i), t_begin_);
-            try_settle(static_cast<int>(i), t_begin_);
+            if (!try_settle(static_cast<int>(i), t_begin_))
+                try_settle_mesh(static_cast<int>(i), t_begin_);
         }
     for (size_t i = 0; i < bodies_.size(); ++i) predict(static_cast<int>(i), t_begin_);
     advance_to_end();
@@ -109,7 +110,7 @@ void EventBake::handle(int i, const Predicted &event, double now) {
         // touching (physics.md): found again as it is now.
         forget_ignored(i, now);
         find_overlaps(i, now);
-        try_settle(i, now);
+        if (!try_settle(i, now)) try_settle_mesh(i, now);
         break;
     case EventKind::kResume: // released at a contact, its next key takes it back
         close_segment(b, now);
@@ -171,6 +172,9 @@ void EventBake::handle(int i, const Predicted &event, double now) {
         break; // predict() rechecks
     case EventKind::kLeave:
         unsupport(b, now);
+        break;
+    case EventKind::kFriction:
+        friction_changes(b, now, event.other == 1);
         break;
     case EventKind::kSettle: // the Zeno bounces' accumulation time: resting from here
         close_segment(b, now);

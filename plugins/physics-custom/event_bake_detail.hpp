@@ -95,6 +95,10 @@ struct Body {
     // its last key left them, relative to its center (the seed's mesh-mesh tests).
     std::shared_ptr<const MeshShape> shape;
     double support_d = 0.0;
+    // While on its support: the deceleration of Coulomb friction there, mu g_n (m/s^2), and,
+    // while its velocity turns (sliding across a slope), when friction is aimed again.
+    double rub = 0.0;
+    double reaim_at = kNever;
     std::vector<std::array<glm::dvec3, 3>> support_edges;
     // Where it touches the support, relative to its center: a sphere's lowest point, or the
     // vertices of a mesh in the support's plane. It leaves the support when all have left it.
@@ -162,7 +166,8 @@ enum class EventKind {
     kRelease,
     kRecheck,
     kLeave,
-    kSettle
+    kSettle,
+    kFriction // sliding on its support: it stops, or its friction is aimed again
 };
 struct Predicted {
     double t = kNever;
@@ -389,6 +394,11 @@ class EventBake {
     void predict_leave(int i, double now, double limit, Predicted &next);
     void unsupport(Body &b, double t);
     void after_contact(int i, double t);
+    bool try_settle_mesh(int i, double t);
+    void hold_on(Body &b, int o, const glm::dvec3 &n);
+    void aim_friction(Body &b);
+    void predict_friction(int i, double now, double &limit, Predicted &next) const;
+    void friction_changes(Body &b, double now, bool stops);
 
     // The data, shared by every stage.
     const ani_physics_scene *scene_; // this call's (the host builds it anew for each)

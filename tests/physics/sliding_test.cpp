@@ -1,0 +1,115 @@
+// physics.custom: contacts that last (issue 19): resting and sliding with Coulomb friction, through
+// the real timeline and the shipped scenes, against closed forms derived in the comments.
+#include "io/document_io.hpp"
+#include "io/environment.hpp"
+#include "timeline/timeline.hpp"
+
+#include "scene_support.hpp"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+using namespace animator;
+using namespace physics_test;
+
+namespace {
+
+Document shipped_scene(const std::string &name) {
+    return open_document(env().plugins, test::source_dir() / "assets/scenes" / name).document;
+}
+
+const ModelState &start_of(const Document &doc, int model) {
+    return *doc.keyframes().front().states[static_cast<size_t>(model)];
+}
+
+int model_named(const Document &doc, const std::string &name) {
+    for (size_t i = 0; i < doc.models().size(); ++i)
+        if (doc.models()[i].name == name) return static_cast<int>(i);
+    FAIL("no model " << name);
+    return -1;
+}
+
+} // namespace
+
+TEST_CASE("a box placed on a floor rests exactly for 1000 s, with no contact to follow") {
+    const Document doc = shipped_scene("resting_box.lua");
+    const int box = model_named(doc, "box");
+    REQUIRE(doc.models()[box].restitution == 0.5);
+    REQUIRE(doc.models()[box].friction == 0.5);
+    REQUIRE(doc.models()[box].rotates);
+    auto timeline = timeline_of(doc);
+    timeline->bake(1000.0);
+    const ModelState &s0 = start_of(doc, box);
+    for (double t : {0.0, 1e-6, 1.0, 10.0, 100.0, 1000.0}) {
+        CAPTURE(t);
+        const ModelPose p = timeline->evaluate(t).models[static_cast<size_t>(box)];
+        CHECK(glm::length(p.center - s0.center) <= 1e-12);
+        CHECK(glm::length(p.angles - s0.angles) <= 1e-12);
+        CHECK(p.velocity == glm::dvec3(0.0));
+    }
+    // It costs nothing: no contact, and a handful of predictions over 1000 s.
+    CHECK(timeline->events().empty());
+    CHECK(timeline->stats().backend_counts.at("predictions") < 20);
+}
+
+TEST_CASE("a puck slides to rest on a parabola and stops at v0 / (mu g)") {
+    const Document doc = shipped_scene("sliding_puck.lua");
+    const int puck = model_named(doc, "puck");
+    const double mu = doc.models()[puck].friction, v0 = 3.0;
+    REQUIRE(mu == 0.3);
+    const glm::dvec3 c0 = start_of(doc, puck).center;
+    auto timeline = timeline_of(doc);
+    timeline->bake(3.0);
+    // x(t) = x0 + v0 t - mu g t^2 / 2 until t_s = v0 / (mu g), then x0 + v0^2 / (2 mu g).
+    const double ts = v0 / (mu * G);
+    auto x_at = [&](double t) {
+        const double s = std::min(t, ts);
+        return c0.x + v0 * s - 0.5 * mu * G * s * s;
+    };
+    for (double t : {0.1, 0.25, 0.5, 0.75, 1.0, ts, 1.5, 3.0}) {
+        CAPTURE(t);
+        const ModelPose p = timeline->evaluate(t).models[static_cast<size_t>(puck)];
+        CHECK(std::abs(p.center.x - x_at(t)) < 1e-9);
+        CHECK(p.center.y == c0.y);
+        CHECK(p.center.z == c0.z);
+        CHECK(std::abs(p.velocity.x - std::max(0.0, v0 - mu * G * t)) < 1e-9);
+    }
+    CHECK(timeline->evaluate(1.5).models[static_cast<size_t>(puck)].velocity == glm::dvec3(0.0));
+    // The stop: where a segment starts at rest.
+    double stop = -1.0;
+    for (const ani_motion_segment &s : timeline->segments(puck))
+        if (stop < 0.0 && s.t0 > 0.0 && s.v0.x == 0.0 && s.a.x == 0.0) stop = s.t0;
+    CHECK(std::abs(stop - ts) < 1e-9);
+    CHECK(timeline->events().empty());
+}
+
+TEST_CASE("on a 20 degree ramp a box with mu = 0.2 slides down at g (sin - mu cos), one with "
+          "mu = 0.5 stays still") {
+    const Document doc = shipped_scene("ramp_boxes.lua");
+    const int sliding = model_named(doc, "sliding"), sticking = model_named(doc, "sticking");
+    REQUIRE(doc.models()[sliding].friction == 0.2);
+    REQUIRE(doc.models()[sticking].friction == 0.5);
+    auto timeline = timeline_of(doc);
+    timeline->bake(100.0);
+    const double theta = glm::radians(20.0), mu = 0.2;
+    const double a = G * (std::sin(theta) - mu * std::cos(theta)); // 1.512 m/s^2
+    const glm::dvec3 down_slope(-std::cos(theta), -std::sin(theta), 0.0);
+    const glm::dvec3 c0 = start_of(doc, sliding).center;
+    for (double t : {0.5, 1.0, 2.0, 3.0}) {
+        CAPTURE(t);
+        const ModelPose p = timeline->evaluate(t).models[static_cast<size_t>(sliding)];
+        CHECK(glm::length(p.center - (c0 + 0.5 * a * t * t * down_slope)) < 1e-9);
+        CHECK(glm::length(p.velocity - a * t * down_slope) < 1e-9);
+        CHECK(glm::length(p.angles - start_of(doc, sliding).angles) < 1e-9); // it does not turn
+    }
+    const ModelState &s0 = start_of(doc, sticking);
+    for (double t : {1.0, 10.0, 100.0}) {
+        CAPTURE(t);
+        const ModelPose p = timeline->evaluate(t).models[static_cast<size_t>(sticking)];
+        CHECK(glm::length(p.center - s0.center) <= 1e-12);
+        CHECK(glm::length(p.angles - s0.angles) <= 1e-12);
+        CHECK(p.velocity == glm::dvec3(0.0));
+    }
+}
