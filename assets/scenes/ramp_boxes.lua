@@ -9,26 +9,40 @@ gr.camera{eye = {-2, 3, 12}, look_at = {-2, 0, 0}, up = {0, 1, 0}, fov = 50}
 
 local root = gr.node('root')
 
-local function ramp(name, z, mu, colour)
-    local slope = gr.mesh('plane', name .. '_ramp')
-    slope:scale(10, 1, 1.5)
-    slope:rotate('z', 20)
-    slope:translate(0, 0, z)
-    slope:set_material(gr.material({0.6, 0.6, 0.6}, {0.1, 0.1, 0.1}, 10))
-    root:add_child(slope)
-    local box = gr.mesh('cube', name)
-    box:scale(0.5, 0.5, 0.5)
-    box:translate(0, 0.5, 0)
-    box:rotate('z', 20)
-    box:translate(0, 0, z)
-    box:set_material(gr.material(colour, {0.8, 0.8, 0.8}, 60))
-    box:set_physics{dynamics = true, gravity = true, mass = 1, restitution = 0.5, friction = mu,
-                    rotates = true}
-    box:set_sound{collision = 'click'}
-    root:add_child(box)
-end
+local front_ramp = gr.mesh('plane', 'sliding_ramp')
+front_ramp:scale(10, 1, 1.5)
+front_ramp:rotate('z', 20)
+front_ramp:translate(0, 0, 2)
+front_ramp:set_material(gr.material({0.6, 0.6, 0.6}, {0.1, 0.1, 0.1}, 10))
+root:add_child(front_ramp)
 
-ramp('sliding', 2, 0.2, {0.9, 0.5, 0.2})
-ramp('sticking', -2, 0.5, {0.2, 0.5, 0.9})
+local sliding = gr.mesh('cube', 'sliding')
+sliding:scale(0.5, 0.5, 0.5)
+sliding:translate(0, 0.5, 0)
+sliding:rotate('z', 20)
+sliding:translate(0, 0, 2)
+sliding:set_material(gr.material({0.9, 0.5, 0.2}, {0.8, 0.8, 0.8}, 60))
+sliding:set_physics{dynamics = true, gravity = true, mass = 1, restitution = 0.5, friction = 0.2,
+                    rotates = true}
+sliding:set_sound{collision = 'click'}
+root:add_child(sliding)
+
+local back_ramp = gr.mesh('plane', 'sticking_ramp')
+back_ramp:scale(10, 1, 1.5)
+back_ramp:rotate('z', 20)
+back_ramp:translate(0, 0, -2)
+back_ramp:set_material(gr.material({0.6, 0.6, 0.6}, {0.1, 0.1, 0.1}, 10))
+root:add_child(back_ramp)
+
+local sticking = gr.mesh('cube', 'sticking')
+sticking:scale(0.5, 0.5, 0.5)
+sticking:translate(0, 0.5, 0)
+sticking:rotate('z', 20)
+sticking:translate(0, 0, -2)
+sticking:set_material(gr.material({0.2, 0.5, 0.9}, {0.8, 0.8, 0.8}, 60))
+sticking:set_physics{dynamics = true, gravity = true, mass = 1, restitution = 0.5, friction = 0.5,
+                     rotates = true}
+sticking:set_sound{collision = 'click'}
+root:add_child(sticking)
 
 return root

@@ -81,6 +81,7 @@ glm::dquat orientation_at(const RotationSegment &s, double t) {
     }
     const glm::dquat q0(s.q0.w, s.q0.x, s.q0.y, s.q0.z);
     const glm::dvec3 w(s.w.x, s.w.y, s.w.z);
+    if (s.alpha != glm::dvec3(0.0)) return ani::spun_up(glm::normalize(q0), w, s.alpha, t - s.t0);
     const double speed = glm::length(w);
     const glm::dquat turn = speed > 0.0 ? glm::angleAxis(speed * (t - s.t0), w / speed) : glm::dquat(1.0, 0.0, 0.0, 0.0);
     return glm::normalize(turn * q0);
@@ -93,7 +94,7 @@ glm::dvec3 angular_velocity_at(const RotationSegment &s, double t) {
         s.free->evaluate(t, q, w);
         return w;
     }
-    return {s.w.x, s.w.y, s.w.z};
+    return glm::dvec3(s.w.x, s.w.y, s.w.z) + (t - s.t0) * s.alpha;
 }
 
 Timeline::Timeline(const Document &doc, PluginRegistry &plugins, const std::string &backend)
@@ -294,6 +295,28 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         r.principal = glm::normalize(principal);
         r.pivot = glm::dvec3(s->pivot.x, s->pivot.y, s->pivot.z);
         r.free = std::make_shared<const ani::FreeRotation>(moments, glm::normalize(q0) * r.principal, w0, s->t0);
+        (*ctx->rotations)[s->model].push_back(std::move(r));
+    };
+    sink.spin_up = [](void *c, const ani_spin_up_segment *s) {
+        auto *ctx = static_cast<BakeContext *>(c);
+        if (s->model >= ctx->rotations->size() || !ctx->refused.empty()) return;
+        const double numbers[] = {s->t0, s->t1, s->q0.w, s->q0.x, s->q0.y, s->q0.z, s->w0.x, s->w0.y, s->w0.z, s->alpha.x, s->alpha.y, s->alpha.z};
+        std::string why;
+        for (double x : numbers)
+            if (why.empty() && !std::isfinite(x)) why = "a time, the orientation, w0 or alpha is not finite";
+        const glm::dquat q0(s->q0.w, s->q0.x, s->q0.y, s->q0.z);
+        if (why.empty() && glm::length(q0) == 0.0) why = "the orientation is zero";
+        if (!why.empty()) {
+            ctx->refused = "model " + std::to_string(s->model) + "'s spin-up segment at t = " + std::to_string(s->t0) + " s: " + why;
+            return;
+        }
+        RotationSegment r;
+        r.model = s->model;
+        r.t0 = s->t0;
+        r.t1 = s->t1;
+        r.q0 = s->q0;
+        r.w = s->w0;
+        r.alpha = glm::dvec3(s->alpha.x, s->alpha.y, s->alpha.z);
         (*ctx->rotations)[s->model].push_back(std::move(r));
     };
     sink.overlap = [](void *c, const ani_overlap *o) {

@@ -47,6 +47,8 @@ struct RotationSegment : ani_rotation_segment {
     // The point the model turns about, in its own frame as scaled (0: its origin): the motion
     // segments then give where this point is, not the origin (ani_free_rotation_segment).
     glm::dvec3 pivot{0.0};
+    // A spin-up segment's angular acceleration (ani_spin_up_segment; `w` is then w0).
+    glm::dvec3 alpha{0.0};
 };
 
 // The world orientation and angular velocity (rad/s, world axes) of a rotation segment at t.

@@ -454,6 +454,18 @@ void EventBake::emit_spin(const Body &b, double t) {
         throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
                                                name_of(scene_->models[b.model]) +
                                                "' would turn to a value that is not finite");
+    if (b.spin.alpha != glm::dvec3(0.0)) { // friction turns it on its support
+        if (!sink_->spin_up) return;
+        ani_spin_up_segment s{};
+        s.model = b.model;
+        s.t0 = from;
+        s.t1 = t;
+        s.q0 = ani_quat{q.w, q.x, q.y, q.z};
+        s.w0 = ani(w);
+        s.alpha = ani(b.spin.alpha);
+        sink_->spin_up(sink_->context, &s);
+        return;
+    }
     if (b.spin.torque_free() || b.pivot != glm::dvec3(0.0)) { // the closed form's terms
         if (!sink_->free_rotation) return;
         ani_free_rotation_segment s{};
@@ -519,7 +531,8 @@ EventBake::TurningShape EventBake::turning_shape(uint32_t i, double t) const {
     double size = 0.0;
     for (uint32_t k = 0; k < m.mesh->vertex_count; ++k)
         size = std::max(size, glm::length(shape.scale * vertex(*m.mesh, k)));
-    if (glm::length(shape.mass.center_of_mass) > 1e-9 * size) shape.pivot = shape.mass.center_of_mass;
+    if (glm::length(shape.mass.center_of_mass) > 1e-9 * size)
+        shape.pivot = shape.mass.center_of_mass;
     for (uint32_t k = 0; k < m.mesh->vertex_count; ++k) {
         const glm::dvec3 p = shape.scale * vertex(*m.mesh, k) - shape.pivot;
         shape.vertices.push_back(p);

@@ -140,12 +140,12 @@ bool EventBake::sphere_responds(const Body &b, const ani_physics_model &other) c
 // A free sphere as the impulse module sees it: its contact point at -radius n from its
 // centre (n from the other body toward it).
 ImpulseBody EventBake::sphere_body(const Body &b, double mass, const glm::dvec3 &v,
-                                   const glm::dvec3 &n) {
+                                   const glm::dvec3 &n, double t) {
     ImpulseBody a;
     a.inv_mass = 1.0 / mass;
     if (b.spin.on) a.inv_inertia = glm::dmat3(sphere_inverse_inertia(mass, b.radius));
     a.v = v;
-    a.w = b.spin.on ? b.spin.w : glm::dvec3(0.0);
+    a.w = b.spin.on ? b.spin.rate(t) : glm::dvec3(0.0);
     a.r = -b.radius * n;
     return a;
 }
@@ -159,30 +159,18 @@ bool EventBake::respond_to_obstacle(int i, const Obstacle &o, const glm::dvec3 &
     const Material mo = material_of(*scene_->models[o.model].desc);
     const double e = combined_restitution(b.material.restitution, mo.restitution),
                  mu = combined_friction(b.material.friction, mo.friction);
-    const ImpulseBody a = sphere_body(b, 1.0, v, n); // against infinite mass: any mass
+    const ImpulseBody a = sphere_body(b, 1.0, v, n, t); // against infinite mass: any mass
     const ImpulseResult r = contact_impulse(a, ImpulseBody{}, n, e, mu);
     const double vn = glm::dot(r.va, n), g_n = -glm::dot(b.free_a, n);
     const glm::dvec3 c = b.path.at(t - b.t0), v_t = r.va - vn * n;
     if (zeno_settles(vn, g_n, e, std::max(1.0, glm::length(c)))) {
-        // On the face it must have nothing left to rub: no friction, or no slip of the
-        // touching point and either no speed along the face or nothing pulling it along
-        // (rolling on a level face at constant speed needs no friction; on a slope it would).
-        ImpulseBody after = a;
-        after.v = r.va;
-        after.w = r.wa;
-        const glm::dvec3 u = point_velocity_of(after), slip = u - glm::dot(u, n) * n;
-        const glm::dvec3 a_t = b.free_a - glm::dot(b.free_a, n) * n;
+        // On the face friction goes on acting: it slides, skids or rolls there (bake_rest.cpp).
         const double still = 1e-12 * std::max(1.0, glm::length(v));
-        // (A model that is not a sphere slides on at the speed along the face it has:
-        // the next section.)
-        if (!b.sphere || mu == 0.0 ||
-            (glm::length(slip) <= still && (glm::length(v_t) <= still || a_t == glm::dvec3(0.0)))) {
-            restart(b, t, glm::length(v_t) <= still && mu != 0.0 ? glm::dvec3(0.0) : v_t, false);
-            if (b.spin.on) turn(b, t, r.wa);
-            if (settle_after_bounces(i, o, n, t)) {
-                b.settles_at = zeno_accumulation(t, vn, g_n, e);
-                return true;
-            }
+        restart(b, t, glm::length(v_t) <= still && mu != 0.0 ? glm::dvec3(0.0) : v_t, false);
+        if (b.spin.on) turn(b, t, r.wa);
+        if (settle_after_bounces(i, o, n, t)) {
+            b.settles_at = zeno_accumulation(t, vn, g_n, e);
+            return true;
         }
     }
     restart(b, t, r.va, false);
@@ -198,7 +186,7 @@ void EventBake::respond_to_wall(Body &b, const glm::dvec3 &v, const glm::dvec3 &
                  mu = combined_friction(b.material.friction, wall.friction);
     ImpulseBody w;
     w.v = v_wall;
-    const ImpulseResult r = contact_impulse(sphere_body(b, 1.0, v, n), w, n, e, mu);
+    const ImpulseResult r = contact_impulse(sphere_body(b, 1.0, v, n, t), w, n, e, mu);
     restart(b, t, r.va, false);
     if (b.spin.on) turn(b, t, r.wa);
 }
@@ -210,7 +198,7 @@ void EventBake::respond_to_sphere(Body &b, const glm::dvec3 &v, Body &o, const g
     const double e = combined_restitution(b.material.restitution, o.material.restitution),
                  mu = combined_friction(b.material.friction, o.material.friction);
     const ImpulseResult r =
-        contact_impulse(sphere_body(b, ma, v, n), sphere_body(o, mb, vo, -n), n, e, mu);
+        contact_impulse(sphere_body(b, ma, v, n, t), sphere_body(o, mb, vo, -n, t), n, e, mu);
     restart(b, t, r.va, false);
     restart(o, t, r.vb, false);
     if (b.spin.on) turn(b, t, r.wa);
@@ -310,7 +298,7 @@ ImpulseBody EventBake::impulse_body(const Body &b, const glm::dvec3 &point, doub
         x.w = b.spin.rate(t);
     } else if (b.sphere && b.spin.on) {
         x.inv_inertia = glm::dmat3(sphere_inverse_inertia(m, b.radius));
-        x.w = b.spin.w;
+        x.w = b.spin.rate(t);
     }
     return x;
 }

@@ -50,13 +50,13 @@ bool EventBake::try_settle(int i, double t) {
             held.support_d = ob.offsets[k];
             held.support_edges = support_boundary(ob, held);
             held.support_feet = {-r * n};
-            hold_on(held, static_cast<int>(o), n);
             if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t))))
                 continue; // on the rim of the flat region, on its way off
             close_segment(b, t);
             held.motion = ANI_MOTION_FREE;
             ++held.version;
             b = std::move(held);
+            hold_on(b, static_cast<int>(o), n);
             return true;
         }
     }
@@ -106,12 +106,12 @@ bool EventBake::settle_on(int i, int o, const glm::dvec3 &n, double t) {
     if (held.support_feet.empty()) return false;
     held.t0 = t;
     held.path = Path{c, v - glm::dot(v, n) * n, b.free_a - glm::dot(b.free_a, n) * n};
-    hold_on(held, o, n);
     if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t)))) return false;
     close_segment(b, t);
     held.motion = ANI_MOTION_FREE;
     ++held.version;
     b = std::move(held);
+    hold_on(b, o, n);
     return true;
 }
 
@@ -196,6 +196,11 @@ void EventBake::unsupport(Body &b, double t) {
     b.support = -1;
     b.rub = 0.0;
     b.reaim_at = kNever;
+    b.rolling = false;
+    if (b.spin.on && b.spin.alpha != glm::dvec3(0.0)) { // friction no longer turns it
+        emit_spin(b, t);
+        b.spin.start(t, b.spin.at(t), b.spin.rate(t));
+    }
     b.support_edges.clear();
     b.support_feet.clear();
     b.settles_at = kNever;
@@ -210,6 +215,15 @@ void EventBake::after_contact(int i, double t) {
         const glm::dvec3 v = b.path.velocity(t - b.t0);
         if (std::abs(glm::dot(v, b.support_n)) > 1e-9 * std::max(1.0, glm::length(v)))
             unsupport(b, t);
+        else { // its new velocity and spin on the support, from here
+            if (b.t0 != t) {
+                close_segment(b, t);
+                b.path = from_now(b, t);
+                b.t0 = t;
+                ++b.version;
+            }
+            aim_friction(b);
+        }
     }
     try_settle(i, t);
 }
@@ -256,61 +270,94 @@ bool EventBake::try_settle_mesh(int i, double t) {
     return false;
 }
 
-// ---- sliding with Coulomb friction -----------------------------------------------------
+// ---- sliding, skidding and rolling with Coulomb friction ---------------------------------
 
-// A body put on the support o with normal n: friction there decelerates it by mu g_n, the
-// pair's mu (the higher of the two) times the part of its acceleration into the face, and its
-// path on the face starts with that (aim_friction). (A sphere that rotates keeps sliding
-// without friction: rolling is issue 19's next step.)
+// A body put on the support o with normal n: friction there acts with at most mu g_n per unit
+// mass, the pair's mu (the higher of the two) times the part of its acceleration into the face,
+// and its path on the face starts with that (aim_friction).
 void EventBake::hold_on(Body &b, int o, const glm::dvec3 &n) {
     const Material mo = material_of(*scene_->models[obstacles_[static_cast<size_t>(o)].model].desc);
     const double mu = combined_friction(b.material.friction, mo.friction);
-    b.rub = b.sphere && b.spin.on ? 0.0 : mu * std::max(0.0, -glm::dot(b.free_a, n));
+    b.rub = mu * std::max(0.0, -glm::dot(b.free_a, n));
     aim_friction(b);
 }
 
-// The acceleration on the support from b.t0, where its path starts: the part of its own along
-// the face, a_t, and friction of magnitude rub against its velocity. Moving, that is
-// a_t - rub v/|v|, a parabola in the face's plane, exact while a_t is along v (a level face, or
-// sliding straight down or up a slope) until it stops (predict_friction). At rest, static
-// friction holds it still while |a_t| <= rub; otherwise it starts sliding down along a_t at
-// |a_t| - rub. Sliding across a slope its velocity turns as it goes, and so does friction: the
-// path is then pieces over which the velocity turns by at most kAimTurn, each with friction along
-// the velocity at its middle (physics.md gives the error of that).
-void EventBake::aim_friction(Body &b) {
+// The motion on the support from b.t0, where its path starts (physics.md, "Sliding, skidding and
+// rolling"). Its own acceleration along the face is a_t; friction F, at most rub, acts against
+// the slip of the touching point: the velocity of the centre for a model that does not turn, or
+// u = v - r w x n for a ball that rotates.
+//  - Slipping: F = -rub u/|u|. A model that does not turn slides on a parabola until v = 0; a
+//    ball skids, F turning it at alpha = -(5 / 2r) n x F, until u = 0 (predict_friction). Exact
+//    while a_t is along u (a level face, or straight down or up a slope); across a slope u turns
+//    as it goes, and so does F: pieces over which u turns by at most kAimTurn, each with F along
+//    u at its middle (physics.md gives the error).
+//  - Not slipping: a model that does not turn stays still while |a_t| <= rub (static friction),
+//    else slides down along a_t at |a_t| - rub. A ball rolls: F = -(2/7) a_t keeps u = 0 while
+//    that is at most rub (it rolls down a slope at 5/7 a_t), else it skids along a_t.
+void EventBake::aim_friction(Body &b, bool rolls) {
     constexpr double kAimTurn = 1e-3; // radians
     const glm::dvec3 n = b.support_n, a_t = b.free_a - glm::dot(b.free_a, n) * n,
                      v = b.path.v - glm::dot(b.path.v, n) * n;
+    const bool ball = b.sphere && b.spin.on;
+    const double r = b.radius;
     b.reaim_at = kNever;
-    const double speed = glm::length(v), pull = glm::length(a_t);
-    if (b.rub == 0.0) {
-        b.path.a = a_t;
-    } else if (speed == 0.0) {
-        b.path.a = pull <= b.rub ? glm::dvec3(0.0) : a_t * (1.0 - b.rub / pull);
-    } else {
-        const glm::dvec3 a = a_t - (b.rub / speed) * v;
-        const glm::dvec3 across = a_t - (glm::dot(a_t, v) / (speed * speed)) * v;
-        const double turn_rate = glm::length(across) / speed; // rad/s, its velocity's turn
-        if (glm::length(across) <= 1e-12 * pull) {
-            b.path.a = a;
-        } else {
-            const double h = kAimTurn / turn_rate;
-            b.path.a = a_t - b.rub * glm::normalize(v + 0.5 * h * a);
-            b.reaim_at = b.t0 + h;
-        }
+    b.rolling = false;
+    if (ball && (b.spin.t0 != b.t0 || b.spin.alpha != glm::dvec3(0.0))) {
+        emit_spin(b, b.t0); // its turn so far; from here, the rate friction gives it
+        b.spin.start(b.t0, b.spin.at(b.t0), b.spin.rate(b.t0));
     }
+    glm::dvec3 f(0.0); // friction's acceleration
+    if (b.rub > 0.0) {
+        const double pull = glm::length(a_t);
+        const glm::dvec3 w = ball ? b.spin.w : glm::dvec3(0.0);
+        const glm::dvec3 u = ball ? v - r * glm::cross(w, n) : v;
+        const double slip = glm::length(u);
+        const bool holds =
+            ball ? slip <= 1e-12 * std::max(1.0, glm::length(v) + r * glm::length(w)) : slip == 0.0;
+        if (rolls || holds) {
+            // (Static friction needs (2/7) |a_t| for a ball to roll, all of |a_t| for a model
+            // that does not turn to stay.)
+            const double need = ball ? (2.0 / 7.0) * pull : pull;
+            if (need <= b.rub)
+                f = ball ? -(2.0 / 7.0) * a_t : -a_t;
+            else
+                f = -(b.rub / pull) * a_t;
+            if (ball) { // exactly no slip: the spin about the normal and the rolling rate
+                b.spin.w = glm::dot(w, n) * n + glm::cross(n, v) / r;
+                b.rolling = need <= b.rub;
+            }
+        } else {
+            // The slip's rate: a_t + f for the centre, and 5/2 f more for a ball's turn.
+            const glm::dvec3 along = u / slip, across = a_t - glm::dot(a_t, along) * along;
+            if (glm::length(across) <= 1e-12 * pull) {
+                f = -b.rub * along;
+            } else {
+                const double h = kAimTurn * slip / glm::length(across);
+                const glm::dvec3 rate = a_t - (ball ? 3.5 : 1.0) * b.rub * along;
+                f = -b.rub * glm::normalize(u + 0.5 * h * rate);
+                b.reaim_at = b.t0 + h;
+            }
+        }
+        if (ball) b.spin.alpha = -(2.5 / r) * glm::cross(n, f);
+    }
+    b.path.a = a_t + f;
 }
 
-// When friction changes on the support: the body stops (its velocity reaches 0 along a
-// parabola whose acceleration is against it), or its friction is aimed again.
+// When friction changes on the support: the slip ends (a model that does not turn stops, a ball
+// starts rolling) where it reaches 0 along a line against it, or friction is aimed again.
 void EventBake::predict_friction(int i, double now, double &limit, Predicted &next) const {
     const Body &b = bodies_[static_cast<size_t>(i)];
-    if (b.support < 0 || b.rub == 0.0) return;
+    if (b.support < 0 || b.rub == 0.0 || b.rolling) return;
     const Path p = from_now(b, now);
+    glm::dvec3 u = p.v, rate = p.a;
+    if (b.sphere && b.spin.on) {
+        u -= b.radius * glm::cross(b.spin.rate(now), b.support_n);
+        rate -= b.radius * glm::cross(b.spin.alpha, b.support_n);
+    }
     double s = kNever;
     int stops = 0;
-    if (const double along = glm::dot(p.v, p.a); along < 0.0) {
-        s = -along / glm::dot(p.a, p.a);
+    if (const double along = glm::dot(u, rate); along < 0.0) {
+        s = -along / glm::dot(rate, rate);
         stops = 1;
     }
     if (b.reaim_at - now < s) {
@@ -323,14 +370,15 @@ void EventBake::predict_friction(int i, double now, double &limit, Predicted &ne
     }
 }
 
-// The event: at rest from here exactly (static friction may then hold it), or moving on with
-// friction along its velocity now.
+// The event: the slip ends exactly here (a model that does not turn is at rest, and static
+// friction may then hold it; a ball rolls), or it goes on with friction aimed along it now.
 void EventBake::friction_changes(Body &b, double now, bool stops) {
     const glm::dvec3 p = b.path.at(now - b.t0), v = b.path.velocity(now - b.t0);
+    const bool ball = b.sphere && b.spin.on;
     close_segment(b, now);
     b.t0 = now;
-    b.path = Path{p, stops ? glm::dvec3(0.0) : v, b.path.a};
-    aim_friction(b);
+    b.path = Path{p, stops && !ball ? glm::dvec3(0.0) : v, b.path.a};
+    aim_friction(b, stops && ball);
     ++b.version;
 }
 

@@ -99,6 +99,7 @@ struct Body {
     // while its velocity turns (sliding across a slope), when friction is aimed again.
     double rub = 0.0;
     double reaim_at = kNever;
+    bool rolling = false; // a ball on its support whose touching point does not slip
     std::vector<std::array<glm::dvec3, 3>> support_edges;
     // Where it touches the support, relative to its center: a sphere's lowest point, or the
     // vertices of a mesh in the support's plane. It leaves the support when all have left it.
@@ -366,7 +367,7 @@ class EventBake {
                                                double t, const glm::dvec3 &closing);
     bool sphere_responds(const Body &b, const ani_physics_model &other) const;
     static ImpulseBody sphere_body(const Body &b, double mass, const glm::dvec3 &v,
-                                   const glm::dvec3 &n);
+                                   const glm::dvec3 &n, double t);
     bool respond_to_obstacle(int i, const Obstacle &o, const glm::dvec3 &n, const glm::dvec3 &v,
                              double t);
     void respond_to_wall(Body &b, const glm::dvec3 &v, const glm::dvec3 &v_wall,
@@ -396,7 +397,7 @@ class EventBake {
     void after_contact(int i, double t);
     bool try_settle_mesh(int i, double t);
     void hold_on(Body &b, int o, const glm::dvec3 &n);
-    void aim_friction(Body &b);
+    void aim_friction(Body &b, bool rolls = false);
     void predict_friction(int i, double now, double &limit, Predicted &next) const;
     void friction_changes(Body &b, double now, bool stops);
 

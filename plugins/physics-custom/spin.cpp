@@ -12,13 +12,14 @@ void Spin::start(double t, const glm::dquat &q, const glm::dvec3 &rate) {
     t0 = t;
     q0 = q;
     w = rate;
+    alpha = glm::dvec3(0.0);
     free.reset();
     if (moments.x > 0.0)
         free = std::make_shared<const ani::FreeRotation>(moments, q0 * principal, w, t0);
 }
 
 glm::dvec3 Spin::rate(double t) const {
-    if (!torque_free()) return w;
+    if (!torque_free()) return w + (t - t0) * alpha;
     glm::dquat q;
     glm::dvec3 rate;
     free->evaluate(t, q, rate);
@@ -41,7 +42,8 @@ double Spin::rate_change_bound() const {
 
 glm::dmat3 Spin::inverse_inertia(double t) const {
     const glm::dmat3 r = glm::mat3_cast(at(t) * principal);
-    const glm::dmat3 inverse(glm::dvec3(1.0 / moments.x, 0.0, 0.0), glm::dvec3(0.0, 1.0 / moments.y, 0.0),
+    const glm::dmat3 inverse(glm::dvec3(1.0 / moments.x, 0.0, 0.0),
+                             glm::dvec3(0.0, 1.0 / moments.y, 0.0),
                              glm::dvec3(0.0, 0.0, 1.0 / moments.z));
     return r * inverse * glm::transpose(r);
 }
@@ -53,6 +55,7 @@ glm::dquat Spin::at(double t) const {
         free->evaluate(t, q, rate);
         return glm::normalize(q * glm::conjugate(principal));
     }
+    if (alpha != glm::dvec3(0.0)) return ani::spun_up(q0, w, alpha, t - t0);
     const double speed = glm::length(w);
     if (!(speed > 0.0)) return q0;
     return glm::normalize(glm::angleAxis(speed * (t - t0), w / speed) * q0);

@@ -20,6 +20,9 @@ struct Spin {
     double t0 = 0.0; // start of the current stretch
     glm::dquat q0{1.0, 0.0, 0.0, 0.0};
     glm::dvec3 w{0.0}; // rad/s, world axes, at t0 (throughout for a spherical top)
+    // A ball that friction turns on its support: w changes at this rate (rad/s^2, world axes),
+    // reported as spin-up segments (ABI 1.5). start() sets it to 0.
+    glm::dvec3 alpha{0.0};
     // A body whose principal moments differ: its moments (ascending; 0 for a spherical top) and
     // principal axes in its own frame, and its torque-free turn from (q0, w) at t0 (start()).
     glm::dvec3 moments{0.0};

@@ -389,3 +389,51 @@ TEST_CASE("free rotation: on the separatrix the body tends to the intermediate a
     REQUIRE(std::abs(body.z) <= 1e-12);
     REQUIRE(std::abs(std::abs(body.y) - L / I.y) <= 1e-12);
 }
+
+namespace {
+
+// dq/dt = (w(t) / 2) q by classical Runge-Kutta in `steps` steps: the spin-up helper's truth,
+// written apart from it.
+glm::dquat spin_up_by_rk4(glm::dquat q, const glm::dvec3 &w0, const glm::dvec3 &alpha, double tau,
+                          int steps) {
+    auto rate = [&](double t, const glm::dquat &x) {
+        const glm::dvec3 w = w0 + t * alpha;
+        return glm::dquat(0.0, 0.5 * w.x, 0.5 * w.y, 0.5 * w.z) * x;
+    };
+    const double h = tau / steps;
+    for (int k = 0; k < steps; ++k) {
+        const double t = k * h;
+        const glm::dquat k1 = rate(t, q), k2 = rate(t + h / 2, q + (h / 2) * k1),
+                         k3 = rate(t + h / 2, q + (h / 2) * k2), k4 = rate(t + h, q + h * k3);
+        q = q + (h / 6) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+    }
+    return glm::normalize(q);
+}
+
+// The angle of the turn from b to a (atan2, which keeps small angles exact, unlike acos).
+double quaternion_angle(const glm::dquat &a, const glm::dquat &b) {
+    const glm::dquat d = a * glm::conjugate(b);
+    return 2.0 * std::atan2(glm::length(glm::dvec3(d.x, d.y, d.z)), std::abs(d.w));
+}
+
+} // namespace
+
+TEST_CASE("a spin-up segment turns about a fixed axis in closed form, and otherwise as a fine "
+          "integration does") {
+    const glm::dquat q0 = glm::normalize(glm::dquat(0.9, 0.1, -0.3, 0.2));
+    // Parallel: a turn of |w0| tau + |alpha| tau^2 / 2 about their axis.
+    const glm::dvec3 axis = glm::normalize(glm::dvec3(1, 2, -2));
+    for (double tau : {0.0, 0.3, 2.0}) {
+        const glm::dquat q = spun_up(q0, 3.0 * axis, -1.5 * axis, tau);
+        const glm::dquat expected = glm::angleAxis(3.0 * tau - 0.75 * tau * tau, axis) * q0;
+        CHECK(quaternion_angle(q, expected) < 1e-14);
+    }
+    // A ball with side spin skidding: w0 about the normal, alpha across it. Against Runge-Kutta
+    // in 200,000 steps (within 4e-14 rad of one in 400,000; measured 3.6e-14 rad off spun_up).
+    const glm::dvec3 w0(0.0, 4.0, -1.0), alpha(0.0, 0.0, -12.0);
+    for (double tau : {0.1, 0.6, 1.5}) {
+        CAPTURE(tau);
+        const glm::dquat truth = spin_up_by_rk4(q0, w0, alpha, tau, 200000);
+        CHECK(quaternion_angle(spun_up(q0, w0, alpha, tau), truth) < 1e-12);
+    }
+}

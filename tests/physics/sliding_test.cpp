@@ -113,3 +113,56 @@ TEST_CASE("on a 20 degree ramp a box with mu = 0.2 slides down at g (sin - mu co
         CHECK(p.velocity == glm::dvec3(0.0));
     }
 }
+
+TEST_CASE("a ball launched without spin skids, then rolls from t* = 2 v0 / (7 mu g) at 5/7 v0") {
+    const Document doc = shipped_scene("rolling_ball.lua");
+    const int ball = model_named(doc, "ball");
+    const double mu = doc.models()[ball].friction, v0 = 4.0;
+    REQUIRE(mu == 0.2);
+    REQUIRE(doc.models()[ball].rotates);
+    auto timeline = timeline_of(doc);
+    timeline->bake(3.0);
+    // Its radius as the backend holds it on the floor: its centre's height (the mesh's radius, in
+    // single precision).
+    const double r = timeline->evaluate(0.0).models[static_cast<size_t>(ball)].center.y;
+    REQUIRE(std::abs(r - 0.5) < 1e-7);
+    // Skidding: v = v0 - mu g t, w = -(5 mu g / 2r) t about z (the slip v - r w x n falls at
+    // 7/2 mu g), so the orientation is a turn of -(5 mu g / 4r) t^2 about z; it ends at t*.
+    const double ts = 2.0 * v0 / (7.0 * mu * G), v1 = 5.0 / 7.0 * v0;
+    const glm::dquat q0 = timeline->rotation_at(ball, 0.0)
+                              ? orientation_at(*timeline->rotation_at(ball, 0.0), 0.0)
+                              : glm::dquat(1.0, 0.0, 0.0, 0.0);
+    for (double t : {0.1, 0.3, 0.5}) {
+        CAPTURE(t);
+        const ModelPose p = timeline->evaluate(t).models[static_cast<size_t>(ball)];
+        CHECK(std::abs(p.velocity.x - (v0 - mu * G * t)) < 1e-9);
+        const RotationSegment *s = timeline->rotation_at(ball, t);
+        REQUIRE(s);
+        CHECK(glm::length(angular_velocity_at(*s, t) - glm::dvec3(0, 0, -2.5 * mu * G / r * t)) <
+              1e-9);
+        const glm::dquat expected =
+            glm::angleAxis(-1.25 * mu * G / r * t * t, glm::dvec3(0, 0, 1)) * q0;
+        const glm::dquat d = orientation_at(*s, t) * glm::conjugate(expected);
+        CHECK(2.0 * std::atan2(glm::length(glm::dvec3(d.x, d.y, d.z)), std::abs(d.w)) < 1e-12);
+    }
+    // Rolling: where a motion segment starts without acceleration.
+    double rolls = -1.0;
+    for (const ani_motion_segment &s : timeline->segments(ball))
+        if (rolls < 0.0 && s.t0 > 0.0 && s.a.x == 0.0) rolls = s.t0;
+    CHECK(std::abs(rolls - ts) < 1e-9);
+    for (double t : {ts + 1e-6, 1.0, 2.0, 3.0}) {
+        CAPTURE(t);
+        const ModelPose p = timeline->evaluate(t).models[static_cast<size_t>(ball)];
+        CHECK(std::abs(p.velocity.x - v1) < 1e-9);
+        CHECK(p.velocity.y == 0.0);
+        CHECK(p.center.y == r);
+        const RotationSegment *s = timeline->rotation_at(ball, t);
+        REQUIRE(s);
+        CHECK(glm::length(angular_velocity_at(*s, t) - glm::dvec3(0, 0, -v1 / r)) < 1e-9);
+    }
+    // Where it is: v0 t* - mu g t*^2 / 2, then v1 a second.
+    const double x_ts = -4.0 + v0 * ts - 0.5 * mu * G * ts * ts;
+    CHECK(std::abs(timeline->evaluate(2.0).models[static_cast<size_t>(ball)].center.x -
+                   (x_ts + v1 * (2.0 - ts))) < 1e-9);
+    CHECK(timeline->events().empty());
+}

@@ -27,6 +27,14 @@
 
 namespace ani {
 
+// An ABI 1.5 spin-up segment's orientation (physics.h, ani_spin_up_segment) tau seconds after its
+// start: the solution of dq/dtau = (w(tau) / 2) q, w(tau) = w0 + alpha tau, from q0. About a fixed
+// axis (w0 and alpha parallel within 1e-12, or either 0) the closed form; otherwise (a ball with
+// side spin skidding) the fourth-order Magnus integrator, in steps in which the body turns by at
+// most 3e-3 rad and alpha h^2 is at most 3e-3 rad: within 4e-14 rad of a Runge-Kutta integration
+// in 400,000 steps over 1.5 s at up to 22 rad/s (free_rotation_test.cpp), in about 200 us.
+glm::dquat spun_up(const glm::dquat &q0, const glm::dvec3 &w0, const glm::dvec3 &alpha, double tau);
+
 // The rotation matrix's unit quaternion (Shepperd's method), w >= 0.
 glm::dquat quaternion_of(const glm::dmat3 &rotation);
 

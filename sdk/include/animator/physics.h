@@ -139,6 +139,20 @@ typedef struct ani_free_rotation_segment {
                          * as its keys scale it (S p for a point p of its mesh); 0: its origin */
 } ani_free_rotation_segment;
 
+/* Since ABI 1.5: a model's orientation over [t0, t1] while its angular velocity changes at a
+ * constant rate (a ball skidding on a face, or rolling down a slope, turned by friction):
+ * w(t) = w0 + alpha (t - t0), world axes, and the orientation q(t) that solves
+ * dq/dt = (w(t) / 2) q from q0 at t0. When w0 and alpha are parallel (or either is 0) that is a
+ * turn about their fixed axis by |w0| tau + |alpha| tau^2 / 2 (signed along it), tau = t - t0;
+ * otherwise animator/free_rotation.hpp's ani::spun_up evaluates it (the host uses that). */
+typedef struct ani_spin_up_segment {
+    uint32_t model;
+    double t0, t1; /* seconds */
+    ani_quat q0;   /* unit; world orientation of the model at t0 */
+    ani_vec3 w0;   /* angular velocity at t0, radians per second, world frame */
+    ani_vec3 alpha; /* angular acceleration, radians per second squared, world frame */
+} ani_spin_up_segment;
+
 /* Since ABI 1.2: two models found overlapping when they start to interact (at the start of a
  * bake, when a model becomes free inside another, or when its keys take it back inside one).
  * The backend treats them as touching (docs/physics.md, "Models that start overlapping") and
@@ -174,6 +188,10 @@ typedef struct ani_bake_sink {
      * The host refuses the bake when one is not finite or its moments are not ascending and
      * positive (FreeRotation::refusal). */
     void (*free_rotation)(void *context, const ani_free_rotation_segment *segment);
+    /* Since ABI 1.5 (a backend built for 1.5 runs only in a host of 1.5 or newer, which always
+     * sets this field, possibly to NULL): the spin-up segments of models the backend turns, in
+     * time order with their other rotation segments. The host refuses one that is not finite. */
+    void (*spin_up)(void *context, const ani_spin_up_segment *segment);
 } ani_bake_sink;
 
 typedef struct ani_physics_api {
