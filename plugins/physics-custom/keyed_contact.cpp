@@ -46,7 +46,13 @@ ApproachOutcome advance_to_contact(const Approach &approach, double t0, double t
             continue;
         }
         double speed = approach.closing_speed(t, 0.0);
-        if (!(speed > 0.0)) return {}; // nothing can close the gap
+        if (!(speed > 0.0)) {
+            // Still at t, it may be about to move (a body dropped from rest): the bound over the
+            // rest of the window. (Taking no speed for no motion let a ball dropped from rest
+            // onto a resting box through it.)
+            speed = approach.closing_speed(t, t1 - t);
+            if (!(speed > 0.0)) return {}; // nothing can close the gap
+        }
         double dt = 0.5 * g / speed;
         speed = std::max(speed, approach.closing_speed(t, dt)); // the bound over the step itself
         dt = 0.5 * g / speed;

@@ -166,3 +166,22 @@ TEST_CASE("a ball launched without spin skids, then rolls from t* = 2 v0 / (7 mu
                    (x_ts + v1 * (2.0 - ts))) < 1e-9);
     CHECK(timeline->events().empty());
 }
+
+TEST_CASE("a ball dropped from rest onto a box placed on a floor meets it at sqrt(2 h / g)") {
+    // The box rests from t = 0 and never moves before the ball arrives, so the ball's only
+    // prediction is the one it makes at rest at t = 0: it has to see the box it falls onto
+    // (it used to take no speed for no motion, and fell through the box).
+    Document doc;
+    doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, 10.0));
+    Model box = model("box", "cube", true, true);
+    box.rotates = true;
+    doc.add_model(box, placed({0, 0.5, 0}, 0.5));
+    doc.add_model(model("ball", "sphere", true, true), placed({0.4, 4, 0.1}, 0.3));
+    auto timeline = timeline_of(doc);
+    timeline->bake(1.0);
+    const double r = 0.3 * unit_radius(), fall = 4.0 - r - 1.0;
+    REQUIRE(!timeline->events().empty());
+    const ani_collision_event &first = timeline->events().front();
+    CHECK(std::abs(first.t - std::sqrt(2.0 * fall / G)) < 1e-12);
+    CHECK(((first.a == 1 && first.b == 2) || (first.a == 2 && first.b == 1)));
+}
