@@ -61,14 +61,23 @@ void EventBake::collide_bodies(int i, int j, const Contact &contact, double t) {
     Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
     const glm::dvec3 n = contact.normal;
     if (b.turning() || o.turning()) { // the turning models' section below
-        const ImpulseBody ib = impulse_body(b, contact.point, t),
-                          io = impulse_body(o, contact.point, t);
+        if (sleep_on_body(i, j, n, contact.point, t) || sleep_on_body(j, i, -n, contact.point, t)) {
+            report(collision_event(b.model, o.model, contact, t,
+                                   point_velocity(b, contact.point, t) -
+                                       point_velocity(o, contact.point, t)));
+            return;
+        }
+        // A resting body that the blow presses into its support takes it through that support
+        // (bake_rest.cpp, "resting on other models"): it stays, as a static model would.
+        const bool b_held = held_by_support(b, n), o_held = held_by_support(o, -n);
+        const ImpulseBody ib = b_held ? ImpulseBody{} : impulse_body(b, contact.point, t),
+                          io = o_held ? ImpulseBody{} : impulse_body(o, contact.point, t);
         const bool b_wall = b.keyed(), o_wall = o.keyed();
         const ani_collision_event e = collision_event(
             b.model, o.model, contact, t, point_velocity_of(ib) - point_velocity_of(io));
         if (b_wall) release(i, t);
         if (o_wall) release(j, t);
-        respond_turning_pair(b, ib, b_wall, o, io, o_wall, n, t);
+        respond_turning_pair(b, ib, b_wall || b_held, o, io, o_wall || o_held, n, t);
         after_contact(i, t);
         after_contact(j, t);
         report(e);
@@ -380,7 +389,27 @@ void EventBake::respond_turning_pair(Body &b, const ImpulseBody &ib, bool b_wall
                                      double t) {
     const double e = combined_restitution(b.material.restitution, o.material.restitution),
                  mu = combined_friction(b.material.friction, o.material.friction);
-    const ImpulseResult r = contact_impulse(ib, io, n, e, mu);
+    ImpulseResult r = contact_impulse(ib, io, n, e, mu);
+    // Microcollisions between bodies, as against static models (respond_turning_to_obstacle):
+    // while their accelerations press them together, their touching points part at least at
+    // the speed of the smallest bounce the Zeno rule follows.
+    const double pressed = -glm::dot(acceleration(b) - acceleration(o), n);
+    if (pressed > 0.0) {
+        const double scale = std::max(1.0, glm::length(b.path.at(t - b.t0)));
+        ImpulseBody after_b = ib, after_o = io;
+        after_b.v = r.va;
+        after_b.w = r.wa;
+        after_o.v = r.vb;
+        after_o.w = r.wb;
+        const ImpulseResult parted =
+            leave_at(after_b, after_o, n, std::sqrt(2.0 * pressed * kZenoHeight * scale));
+        if (parted.normal > 0.0) {
+            r.va = parted.va;
+            r.wa = parted.wa;
+            r.vb = parted.vb;
+            r.wb = parted.wb;
+        }
+    }
     for (Body *x : {&b, &o}) {
         const bool first = x == &b;
         if (first ? b_wall : o_wall) continue; // released from its keys, moving as they did

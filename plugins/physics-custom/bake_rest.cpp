@@ -211,6 +211,10 @@ void EventBake::unsupport(Body &b, double t) {
 // face gains one.
 void EventBake::after_contact(int i, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
+    if (b.on_body >= 0 && !b.still()) { // knocked off the body it slept on
+        b.on_body = -1;
+        --sleepers_;
+    }
     if (b.support >= 0) {
         const glm::dvec3 v = b.path.velocity(t - b.t0);
         if (std::abs(glm::dot(v, b.support_n)) > 1e-9 * std::max(1.0, glm::length(v)))
@@ -380,6 +384,104 @@ void EventBake::friction_changes(Body &b, double now, bool stops) {
     b.path = Path{p, stops && !ball ? glm::dvec3(0.0) : v, b.path.a};
     aim_friction(b, stops && ball);
     ++b.version;
+}
+
+// ---- resting on other models ----------------------------------------------------------
+
+// Body x, turning, meets body y, which rests (still on a static model or on another resting
+// body), at `point` with normal n from y towards x, while its acceleration presses it into y:
+// when it comes so slowly that the bounces left are too small to follow (the Zeno rule's
+// threshold, whatever its restitution) and it turns no faster, and friction can hold it there,
+// it goes to sleep on y: still, at no cost, until y moves (wake_riders). y takes nothing from
+// it: the bodies under it rest on their own supports, which carry it.
+bool EventBake::sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec3 &point,
+                              double t) {
+    Body &b = bodies_[static_cast<size_t>(x)];
+    const Body &under = bodies_[static_cast<size_t>(y)];
+    if (!(b.turning() || b.free_sphere()) || b.keyed() || !b.dynamics || b.support >= 0 ||
+        b.on_body >= 0 || !resting(under))
+        return false;
+    const double g_n = -glm::dot(b.free_a, n);
+    if (!(g_n > 0.0)) return false;
+    const glm::dvec3 c = b.path.at(t - b.t0);
+    const double scale = std::max(1.0, glm::length(c));
+    const double v_min = std::sqrt(2.0 * g_n * kZenoHeight * scale);
+    const double approach = std::max(0.0, -glm::dot(point_velocity(b, point, t), n));
+    if (approach * approach / (2.0 * g_n) > kZenoHeight * scale ||
+        glm::length(b.spin.rate(t)) * (b.sphere ? b.radius : b.turning_reach) > v_min)
+        return false;
+    const double mu = combined_friction(b.material.friction, under.material.friction);
+    if (glm::length(b.free_a + g_n * n) > mu * g_n) return false; // it would slide
+    close_segment(b, t);
+    b.path = Path{c, glm::dvec3(0.0), glm::dvec3(0.0)};
+    b.t0 = t;
+    if (b.spin.on) turn(b, t, glm::dvec3(0.0));
+    b.on_body = y;
+    b.support_n = n; // (it has no support of its own: support stays -1)
+    b.settles_at = kNever;
+    ++b.version;
+    ++sleepers_;
+    return true;
+}
+
+// At the start of the bake: a turning model placed at rest on a resting one (a stack, built
+// from the floor up) sleeps on it from the start, as one put on a face does (try_settle_mesh),
+// instead of falling into it by nothing and being followed through ever smaller bounces.
+void EventBake::settle_stacks(double t) {
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (size_t x = 0; x < bodies_.size(); ++x) {
+            const Body &b = bodies_[x];
+            if (!b.active || !b.turning() || b.keyed() || resting(b) ||
+                b.path.velocity(t - b.t0) != glm::dvec3(0.0) || b.spin.rate(t) != glm::dvec3(0.0))
+                continue;
+            const double slack = 1e-9 * std::max(1.0, 2.0 * body_size(b));
+            const std::vector<glm::dvec3> corners = placed(b, pose(b, t)).vertices;
+            for (size_t y = 0; y < bodies_.size() && !changed; ++y) {
+                const Body &under = bodies_[y];
+                if (y == x || !under.active || under.sphere || !resting(under)) continue;
+                // The faces of y facing up against x's acceleration whose plane x's lowest
+                // vertex lies in, over the face: x stands on that face (the normal a touching
+                // pair's closest features would leave undecided).
+                const PlacedMesh m = placed(under, pose(under, t));
+                for (size_t k = 0; k < m.triangle_count && !changed; ++k) {
+                    const glm::dvec3 &p0 = m.vertices[m.triangles[3 * k]],
+                                     &p1 = m.vertices[m.triangles[3 * k + 1]],
+                                     &p2 = m.vertices[m.triangles[3 * k + 2]];
+                    glm::dvec3 n = glm::cross(p1 - p0, p2 - p0);
+                    if (glm::length(n) == 0.0) continue;
+                    n = glm::normalize(n);
+                    if (glm::dot(n, p0 - m.center) < 0.0) n = -n; // outward
+                    if (!(glm::dot(b.free_a, n) < 0.0)) continue;
+                    glm::dvec3 lowest = corners.front();
+                    for (const glm::dvec3 &v : corners)
+                        if (glm::dot(n, v) < glm::dot(n, lowest)) lowest = v;
+                    if (std::abs(glm::dot(n, lowest - p0)) > slack ||
+                        glm::length(closest_point_on_triangle(lowest, p0, p1, p2) - lowest) > slack)
+                        continue;
+                    changed = sleep_on_body(static_cast<int>(x), static_cast<int>(y), n, lowest, t);
+                }
+            }
+        }
+    }
+}
+
+// Body j has moved: the bodies asleep on it wake, at rest where they are, under their own
+// acceleration, and so do the ones asleep on them.
+void EventBake::wake_riders(int j, double t) {
+    if (sleepers_ == 0 || resting(bodies_[static_cast<size_t>(j)])) return;
+    for (size_t k = 0; k < bodies_.size(); ++k) {
+        Body &r = bodies_[k];
+        if (r.on_body != j) continue;
+        r.on_body = -1;
+        --sleepers_;
+        close_segment(r, t);
+        r.path = Path{r.path.at(t - r.t0), glm::dvec3(0.0), r.free_a};
+        r.t0 = t;
+        ++r.version;
+        wake_riders(static_cast<int>(k), t);
+        predict(static_cast<int>(k), t);
+    }
 }
 
 } // namespace physics_custom::bake

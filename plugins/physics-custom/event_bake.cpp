@@ -29,6 +29,7 @@ void EventBake::run() {
             if (!try_settle(static_cast<int>(i), t_begin_))
                 try_settle_mesh(static_cast<int>(i), t_begin_);
         }
+    settle_stacks(t_begin_);
     for (size_t i = 0; i < bodies_.size(); ++i) predict(static_cast<int>(i), t_begin_);
     advance_to_end();
 }
@@ -183,6 +184,10 @@ void EventBake::handle(int i, const Predicted &event, double now) {
         b.settles_at = kNever;
         ++b.version;
         break;
+    }
+    if (sleepers_ > 0) { // the bodies asleep on one that moved wake
+        wake_riders(i, now);
+        if (event.kind == EventKind::kBody) wake_riders(event.other, now);
     }
     predict(i, now);
 }

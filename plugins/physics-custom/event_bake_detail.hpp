@@ -100,6 +100,9 @@ struct Body {
     double rub = 0.0;
     double reaim_at = kNever;
     bool rolling = false; // a ball on its support whose touching point does not slip
+    // Asleep on another body that rests (a box on a box of a stack): that body. It is still
+    // until that body moves (bake_rest.cpp, "resting on other models").
+    int on_body = -1;
     std::vector<std::array<glm::dvec3, 3>> support_edges;
     // Where it touches the support, relative to its center: a sphere's lowest point, or the
     // vertices of a mesh in the support's plane. It leaves the support when all have left it.
@@ -400,6 +403,14 @@ class EventBake {
     void aim_friction(Body &b, bool rolls = false);
     void predict_friction(int i, double now, double &limit, Predicted &next) const;
     void friction_changes(Body &b, double now, bool stops);
+    static bool resting(const Body &b) { return b.still() && (b.support >= 0 || b.on_body >= 0); }
+    // A resting body that an impulse along `push` presses into what it rests on.
+    static bool held_by_support(const Body &b, const glm::dvec3 &push) {
+        return resting(b) && glm::dot(push, b.support_n) < 0.0;
+    }
+    bool sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec3 &point, double t);
+    void wake_riders(int j, double t);
+    void settle_stacks(double t);
 
     // The data, shared by every stage.
     const ani_physics_scene *scene_; // this call's (the host builds it anew for each)
@@ -427,6 +438,7 @@ class EventBake {
                     collisions = 0, advancements = 0, releases = 0, mesh_tests = 0;
     } count_;
     std::size_t reports_ = 0;
+    std::size_t sleepers_ = 0;        // bodies asleep on others
     std::array<double, 9> counted_{}; // the counts reported by the earlier slices
     std::vector<bool> is_body_;       // per model: a body (the others are reported each slice)
     double horizon_ = 0.0;            // how far predictions look

@@ -114,6 +114,21 @@ ImpulseResult leave_at(const ImpulseBody &a, const glm::dvec3 &n, double speed) 
     return contact_impulse_of(a, ImpulseBody{}, n, (speed - u) / knn, 0.0);
 }
 
+ImpulseResult leave_at(const ImpulseBody &a, const ImpulseBody &b, const glm::dvec3 &n,
+                       double speed) {
+    const double u = glm::dot(point_velocity_of(a) - point_velocity_of(b), n),
+                 knn = glm::dot(n, (k_of(a) + k_of(b)) * n);
+    if (!(u < speed) || !(knn > 0.0)) {
+        ImpulseResult out;
+        out.va = a.v;
+        out.wa = a.w;
+        out.vb = b.v;
+        out.wb = b.w;
+        return out;
+    }
+    return contact_impulse_of(a, b, n, (speed - u) / knn, 0.0);
+}
+
 ImpulseResult contact_impulse_of(const ImpulseBody &a, const ImpulseBody &b, const glm::dvec3 &n,
                                  double normal, double mu) {
     ImpulseResult out;

@@ -57,6 +57,10 @@ ImpulseResult contact_impulse_of(const ImpulseBody &a, const ImpulseBody &b, con
 // The normal impulse at a's point against infinite mass that makes the point leave along n at
 // `speed` (a microcollision's least speed, bake_response.cpp); none if it leaves faster.
 ImpulseResult leave_at(const ImpulseBody &a, const glm::dvec3 &n, double speed);
+// The same between two bodies: the normal impulse (a gets it along n, b against) that makes their
+// touching points part along n at `speed`; none if they part faster.
+ImpulseResult leave_at(const ImpulseBody &a, const ImpulseBody &b, const glm::dvec3 &n,
+                       double speed);
 
 // The contact's values from the two models' (physics.md): the lower restitution, the higher
 // friction.

@@ -45,17 +45,27 @@ ApproachOutcome advance_to_contact(const Approach &approach, double t0, double t
             if (g < -tolerance) return {ApproachOutcome::kOverlapping, t};
             continue;
         }
-        double speed = approach.closing_speed(t, 0.0);
-        if (!(speed > 0.0)) {
-            // Still at t, it may be about to move (a body dropped from rest): the bound over the
-            // rest of the window. (Taking no speed for no motion let a ball dropped from rest
-            // onto a resting box through it.)
-            speed = approach.closing_speed(t, t1 - t);
-            if (!(speed > 0.0)) return {}; // nothing can close the gap
+        // The step: the largest dt found over which the gap cannot close by more than half,
+        // dt <= g / (2 s(dt)), s(dt) the bound of the closing speed over [t, t + dt] (it grows
+        // with dt). From the speed now, or, at rest now, the whole window; where that is too
+        // long, 0.5 g / s(that) is short enough, and a search between the two finds a longer
+        // one (near an apex, where the speed now is nearly 0, the short one was a standstill).
+        const double speed = approach.closing_speed(t, 0.0);
+        double hi = speed > 0.0 ? 0.5 * g / speed : t1 - t;
+        const double bound = approach.closing_speed(t, hi);
+        if (!(bound > 0.0)) return {}; // nothing can close the gap
+        double dt = hi;
+        if (hi > 0.5 * g / bound) {
+            double lo = 0.5 * g / bound;
+            for (int k = 0; k < 30 && hi > 2.0 * lo; ++k) {
+                const double mid = std::sqrt(lo * hi);
+                if (mid <= 0.5 * g / approach.closing_speed(t, mid))
+                    lo = mid;
+                else
+                    hi = mid;
+            }
+            dt = lo;
         }
-        double dt = 0.5 * g / speed;
-        speed = std::max(speed, approach.closing_speed(t, dt)); // the bound over the step itself
-        dt = 0.5 * g / speed;
         if (t + dt > t1) {
             // The last step: the end of the window, unless the gap closes before it.
             const double g1 = approach.gap(t1);

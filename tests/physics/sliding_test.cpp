@@ -185,3 +185,47 @@ TEST_CASE("a ball dropped from rest onto a box placed on a floor meets it at sqr
     CHECK(std::abs(first.t - std::sqrt(2.0 * fall / G)) < 1e-12);
     CHECK(((first.a == 1 && first.b == 2) || (first.a == 2 && first.b == 1)));
 }
+
+TEST_CASE("a stack of three boxes stands exactly still for 1000 s, and a ball dropped on it comes "
+          "to rest on top") {
+    const Document doc = shipped_scene("box_stack.lua");
+    const int ball = model_named(doc, "ball");
+    const int boxes[] = {model_named(doc, "bottom"), model_named(doc, "middle"),
+                         model_named(doc, "top")};
+    for (int b : boxes) {
+        REQUIRE(doc.models()[b].restitution == 0.5);
+        REQUIRE(doc.models()[b].friction == 0.5);
+        REQUIRE(doc.models()[b].rotates);
+    }
+    auto timeline = timeline_of(doc);
+    timeline->bake(1000.0);
+    for (double t : {0.0, 0.5, 1.0, 2.0, 10.0, 100.0, 1000.0}) {
+        CAPTURE(t);
+        const Frame f = timeline->evaluate(t);
+        for (int b : boxes) {
+            CAPTURE(b);
+            const ModelState &s0 = start_of(doc, b);
+            CHECK(glm::length(f.models[static_cast<size_t>(b)].center - s0.center) <= 1e-12);
+            CHECK(glm::length(f.models[static_cast<size_t>(b)].angles - s0.angles) <= 1e-12);
+            CHECK(f.models[static_cast<size_t>(b)].velocity == glm::dvec3(0.0));
+        }
+    }
+    // The ball falls 5 - r - 3 onto the top box, bounces there as on a floor (e = 0.5: the
+    // stack under it rests on the floor, which takes the blows), and rests on it from the
+    // accumulation time t0 (1 + e) / (1 - e).
+    const double r = 0.3 * unit_radius(), e = 0.5;
+    const double t0 = std::sqrt(2.0 * (5.0 - r - 3.0) / G);
+    REQUIRE(!timeline->events().empty());
+    CHECK(std::abs(timeline->events().front().t - t0) < 1e-12);
+    CHECK(std::abs(timeline->events()[1].t - t0 * (1.0 + 2.0 * e)) < 1e-12);
+    for (double t : {t0 * (1.0 + e) / (1.0 - e) + 1e-3, 10.0, 1000.0}) {
+        CAPTURE(t);
+        const ModelPose p = timeline->evaluate(t).models[static_cast<size_t>(ball)];
+        CHECK(std::abs(p.center.y - (3.0 + r)) < 1e-9);
+        CHECK(p.velocity == glm::dvec3(0.0));
+    }
+    // All of it at little cost: no contact after the ball's last, a few dozen predictions.
+    CHECK(timeline->events().back().t < t0 * (1.0 + e) / (1.0 - e) + 1e-6);
+    CHECK(timeline->events().size() < 40);
+    CHECK(timeline->stats().backend_counts.at("predictions") < 100);
+}
