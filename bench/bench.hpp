@@ -60,5 +60,6 @@ void run_gas(const Options &o);      // a gas of N spheres in a box: scaling
 void run_mesh(const Options &o);     // mesh against mesh: the BVH against brute force
 void run_long(const Options &o);     // 300000 s of a ball in a box
 void run_skip(const Options &o);     // what the scenes did not need
+void run_rest(const Options &o);     // time against error on contacts that last (issue 19)
 
 } // namespace animator::bench

@@ -13,6 +13,7 @@ set(tables
   "exact.csv|scene,measure,backend,step,error,ms,runs,events|step,error,ms,runs,events"
   "exact_ratio.csv|scene,measure,custom_error,custom_ms,bullet_reaches,bullet_ms_at_custom_error,ratio,bullet_best_error,bullet_best_step,bullet_best_ms|custom_error,custom_ms,bullet_reaches,bullet_ms_at_custom_error,ratio,bullet_best_error,bullet_best_step,bullet_best_ms"
   "exact_passes.csv|backend,step,ccd,speeds,passes|step,ccd,speeds,passes"
+  "rest.csv|scene,measure,backend,step,error,ms,runs|step,error,ms,runs"
   "gas.csv|backend,n,step,sim_seconds,wall_s,wall_per_sim_s,runs,collisions,collisions_per_s,energy_error,overlap,peak_rss_mb,baseline_rss_mb,pair_tests_done,pair_tests_skipped|n,step,sim_seconds,wall_s,wall_per_sim_s,runs,collisions,collisions_per_s,energy_error,overlap,peak_rss_mb,baseline_rss_mb,pair_tests_done,pair_tests_skipped"
   "gas_fit.csv|backend,exponent,points|exponent,points"
   "mesh.csv|case,query,triangles_a,triangles_b,bvh_us,brute_us,speedup,bvh_feature_tests,brute_feature_tests,bvh_node_pairs,contact,time_difference,normal_difference,point_difference|query,triangles_a,triangles_b,bvh_us,brute_us,speedup,bvh_feature_tests,brute_feature_tests,bvh_node_pairs,contact,time_difference,normal_difference,point_difference"

@@ -107,7 +107,7 @@ namespace {
 
 int usage(const char *message) {
     if (message) std::cerr << "animator-bench: " << message << "\n";
-    std::cerr << "usage: animator-bench [--quick] [--only exact|gas|mesh|long|skip] [--out DIR] "
+    std::cerr << "usage: animator-bench [--quick] [--only exact|rest|gas|mesh|long|skip] [--out DIR] "
                  "[--runs N]\n";
     return 2;
 }
@@ -138,8 +138,8 @@ int main(int argc, char **argv) {
         }
     }
     const std::vector<std::pair<std::string, void (*)(const Options &)>> sections = {
-        {"exact", run_exact}, {"gas", run_gas},   {"mesh", run_mesh},
-        {"long", run_long},   {"skip", run_skip}};
+        {"exact", run_exact}, {"rest", run_rest}, {"gas", run_gas},
+        {"mesh", run_mesh},   {"long", run_long}, {"skip", run_skip}};
     bool found = o.only.empty();
     for (const auto &s : sections) found = found || s.first == o.only;
     if (!found) return usage(("no section " + o.only).c_str());

@@ -1,0 +1,174 @@
+// Run time against error on the scenes of contacts that last (docs/physics.md, "Sliding,
+// skidding and rolling" and "Resting on other models"): each shipped scene baked by
+// physics.custom once and by physics.bullet at steps from 1/60 to 1/4000 s, its errors against
+// the closed forms tests/physics/sliding_test.cpp checks physics.custom with.
+#include "bench.hpp"
+
+#include "bullet_support.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <iostream>
+
+namespace animator::bench {
+
+namespace bt = animator::bullet_test;
+
+namespace {
+
+constexpr double G = 9.81;
+
+struct RestScene {
+    std::string name, file, what;
+    double until = 3.0;
+    std::vector<std::string> measures;
+    // The errors of a bake (one per measure).
+    std::function<std::vector<double>(const Timeline &, const Document &)> errors;
+};
+
+int model_named(const Document &doc, const std::string &name) {
+    for (size_t i = 0; i < doc.models().size(); ++i)
+        if (doc.models()[i].name == name) return static_cast<int>(i);
+    throw std::runtime_error("no model " + name);
+}
+
+glm::dvec3 start_of(const Document &doc, int m) {
+    return doc.keyframes().front().states[static_cast<size_t>(m)]->center;
+}
+
+// The largest of f(t) at every 1/120 s of [0, until].
+double worst(double until, const std::function<double(double)> &f) {
+    double e = 0.0;
+    for (int k = 0; k <= static_cast<int>(std::lround(until * 120.0)); ++k)
+        e = std::max(e, f(k / 120.0));
+    return e;
+}
+
+std::vector<RestScene> scenes() {
+    return {
+        {"puck", "sliding_puck.lua", "cylinder pushed at 3 m/s, mu 0.3: x(t) to the stop", 3.0,
+         {"position (m)", "still after the stop (m/s)"},
+         [](const Timeline &t, const Document &doc) {
+             const int m = model_named(doc, "puck");
+             const double x0 = start_of(doc, m).x, v0 = 3.0, mu = 0.3, ts = v0 / (mu * G);
+             auto x = [&](double s) {
+                 s = std::min(s, ts);
+                 return x0 + v0 * s - 0.5 * mu * G * s * s;
+             };
+             return std::vector<double>{
+                 worst(3.0, [&](double s) {
+                     return std::abs(t.evaluate(s).models[static_cast<size_t>(m)].center.x - x(s));
+                 }),
+                 worst(3.0, [&](double s) {
+                     return s < ts + 0.05
+                                ? 0.0
+                                : glm::length(t.evaluate(s).models[static_cast<size_t>(m)].velocity);
+                 })};
+         }},
+        {"ramp", "ramp_boxes.lua", "boxes on 20 degree ramps, mu 0.2 (slides) and 0.5 (sticks)",
+         3.0,
+         {"sliding position (m)", "sticking creep (m)"},
+         [](const Timeline &t, const Document &doc) {
+             const int sliding = model_named(doc, "sliding"), sticking = model_named(doc, "sticking");
+             const double theta = glm::radians(20.0), a = G * (std::sin(theta) - 0.2 * std::cos(theta));
+             const glm::dvec3 down(-std::cos(theta), -std::sin(theta), 0.0);
+             const glm::dvec3 c0 = start_of(doc, sliding), s0 = start_of(doc, sticking);
+             return std::vector<double>{
+                 worst(3.0, [&](double s) {
+                     return glm::length(t.evaluate(s).models[static_cast<size_t>(sliding)].center -
+                                        (c0 + 0.5 * a * s * s * down));
+                 }),
+                 worst(3.0, [&](double s) {
+                     return glm::length(t.evaluate(s).models[static_cast<size_t>(sticking)].center - s0);
+                 })};
+         }},
+        {"rolling", "rolling_ball.lua", "ball launched at 4 m/s without spin, mu 0.2: rolls at 5/7 v0",
+         3.0,
+         {"speed once rolling (relative)"},
+         [](const Timeline &t, const Document &doc) {
+             const int m = model_named(doc, "ball");
+             const double v1 = 5.0 / 7.0 * 4.0, ts = 2.0 * 4.0 / (7.0 * 0.2 * G);
+             return std::vector<double>{worst(3.0, [&](double s) {
+                 return s < ts + 0.05
+                            ? 0.0
+                            : std::abs(glm::length(t.evaluate(s).models[static_cast<size_t>(m)].velocity) -
+                                       v1) / v1;
+             })};
+         }},
+        {"stack", "box_stack.lua", "three boxes standing, a ball dropped on them (to 3 s)", 3.0,
+         {"boxes' largest move (m)", "ball at rest on top (m)"},
+         [](const Timeline &t, const Document &doc) {
+             const int ball = model_named(doc, "ball");
+             double moved = 0.0;
+             for (const char *name : {"bottom", "middle", "top"}) {
+                 const int m = model_named(doc, name);
+                 moved = std::max(moved, worst(3.0, [&](double s) {
+                                      return glm::length(
+                                          t.evaluate(s).models[static_cast<size_t>(m)].center -
+                                          start_of(doc, m));
+                                  }));
+             }
+             const double r = 0.3 * bt::unit_sphere_radius();
+             return std::vector<double>{
+                 moved, std::abs(t.evaluate(3.0).models[static_cast<size_t>(ball)].center.y - (3.0 + r))};
+         }},
+    };
+}
+
+} // namespace
+
+void run_rest(const Options &o) {
+    const std::vector<double> steps =
+        o.quick ? std::vector<double>{1.0 / 60.0, 1.0 / 240.0}
+                : std::vector<double>{1.0 / 60.0, 1.0 / 240.0, 1.0 / 1000.0, 1.0 / 4000.0};
+    Csv csv(o.out / "rest.csv", {"scene", "measure", "backend", "step", "error", "ms", "runs"});
+    std::cout << "Each point: the shipped scene baked whole, median of " << o.runs
+              << " runs; errors against the closed forms.\n\n";
+    std::cout << "| scene | measure | physics.custom: error | ms | Bullet: error at";
+    for (double dt : steps) std::cout << " 1/" << std::lround(1.0 / dt);
+    std::cout << " | Bullet ms at";
+    for (double dt : steps) std::cout << " 1/" << std::lround(1.0 / dt);
+    std::cout << " |\n";
+    for (const RestScene &s : scenes()) {
+        const Document doc =
+            open_document(bt::env().plugins,
+                          std::filesystem::path(ANIMATOR_SOURCE_DIR) / "assets/scenes" / s.file)
+                .document;
+        struct Point {
+            std::vector<double> errors;
+            double ms = 0.0;
+        };
+        auto measure = [&](const std::string &backend, double dt) {
+            Point p;
+            std::vector<double> ms;
+            for (int r = 0; r < o.runs; ++r) {
+                auto t = bt::timeline_of(bt::with_param(doc, "step", dt), backend);
+                const auto start = std::chrono::steady_clock::now();
+                t->bake(s.until);
+                ms.push_back(1e3 * seconds_since(start));
+                if (r == 0) p.errors = s.errors(*t, doc);
+            }
+            p.ms = median(ms);
+            for (size_t k = 0; k < s.measures.size(); ++k) {
+                csv << s.name << s.measures[k] << backend << (backend == "physics.custom" ? 0.0 : dt)
+                    << p.errors[k] << p.ms << static_cast<double>(o.runs);
+                csv.end_row();
+            }
+            return p;
+        };
+        const Point custom = measure("physics.custom", 1.0 / 1000.0);
+        std::vector<Point> bullet;
+        for (double dt : steps) bullet.push_back(measure("physics.bullet", dt));
+        for (size_t k = 0; k < s.measures.size(); ++k) {
+            std::cout << "| " << s.name << " | " << s.measures[k] << " | " << fmt(custom.errors[k])
+                      << " | " << fmt(custom.ms) << " |";
+            for (const Point &p : bullet) std::cout << " " << fmt(p.errors[k]);
+            std::cout << " |";
+            for (const Point &p : bullet) std::cout << " " << fmt(p.ms);
+            std::cout << " |\n";
+        }
+    }
+}
+
+} // namespace animator::bench
