@@ -454,41 +454,35 @@ void EventBake::emit_spin(const Body &b, double t) {
         throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
                                                name_of(scene_->models[b.model]) +
                                                "' would turn to a value that is not finite");
-    if (b.spin.alpha != glm::dvec3(0.0)) { // friction turns it on its support
-        if (!sink_->spin_up) return;
-        ani_spin_up_segment s{};
+    // What the three kinds of segment share: the model, the span and the orientation at its start.
+    auto segment = [&](auto s) {
         s.model = b.model;
         s.t0 = from;
         s.t1 = t;
         s.q0 = ani_quat{q.w, q.x, q.y, q.z};
+        return s;
+    };
+    if (b.spin.alpha != glm::dvec3(0.0)) { // friction turns it on its support
+        if (!sink_->spin_up) return;
+        ani_spin_up_segment s = segment(ani_spin_up_segment{});
         s.w0 = ani(w);
         s.alpha = ani(b.spin.alpha);
         sink_->spin_up(sink_->context, &s);
-        return;
-    }
-    if (b.spin.torque_free() || b.pivot != glm::dvec3(0.0)) { // the closed form's terms
+    } else if (b.spin.torque_free() || b.pivot != glm::dvec3(0.0)) { // the closed form's terms
         if (!sink_->free_rotation) return;
-        ani_free_rotation_segment s{};
-        s.model = b.model;
-        s.t0 = from;
-        s.t1 = t;
-        s.q0 = ani_quat{q.w, q.x, q.y, q.z};
+        ani_free_rotation_segment s = segment(ani_free_rotation_segment{});
         s.w0 = ani(w);
         s.moments = ani(b.spin.moments);
         const glm::dquat &p = b.spin.principal;
         s.principal = ani_quat{p.w, p.x, p.y, p.z};
         s.pivot = ani(b.pivot);
         sink_->free_rotation(sink_->context, &s);
-        return;
+    } else {
+        if (!sink_->rotation) return;
+        ani_rotation_segment s = segment(ani_rotation_segment{});
+        s.w = ani(w);
+        sink_->rotation(sink_->context, &s);
     }
-    if (!sink_->rotation) return;
-    ani_rotation_segment s{};
-    s.model = b.model;
-    s.t0 = from;
-    s.t1 = t;
-    s.q0 = ani_quat{q.w, q.x, q.y, q.z};
-    s.w = ani(w);
-    sink_->rotation(sink_->context, &s);
 }
 
 // A model that `rotates` must be able to: its mesh closed (it turns about its centre of mass,
