@@ -55,7 +55,18 @@ struct BakeContext {
     std::vector<std::vector<RotationSegment>> *rotations;
     std::vector<ani_overlap> *overlaps;
     std::string refused = {}; // a free-rotation segment the host cannot evaluate
+
+    // Refuses the bake for model `model`'s segment of `kind` at t0 when `why` says something.
+    bool refuse(uint32_t model, const char *kind, double t0, const std::string &why) {
+        if (why.empty()) return false;
+        refused = "model " + std::to_string(model) + "'s " + kind + " segment at t = " + std::to_string(t0) + " s: " + why;
+        return true;
+    }
 };
+
+template <std::size_t N> bool all_finite(const double (&numbers)[N]) {
+    return std::all_of(numbers, numbers + N, [](double x) { return std::isfinite(x); });
+}
 
 // Euler angles (degrees in [0, 360), the documents' X-Y-Z convention) of a rotation segment at t.
 glm::dvec3 angles_at(const RotationSegment &s, double t) {
@@ -279,13 +290,9 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         std::string why = ani::FreeRotation::refusal(moments, w0);
         const double numbers[] = {s->t0, s->t1, q0.w, q0.x, q0.y, q0.z, principal.w, principal.x, principal.y, principal.z,
                                   s->pivot.x, s->pivot.y, s->pivot.z};
-        for (double x : numbers)
-            if (why.empty() && !std::isfinite(x)) why = "a time, an orientation or the pivot is not finite";
+        if (why.empty() && !all_finite(numbers)) why = "a time, an orientation or the pivot is not finite";
         if (why.empty() && (glm::length(q0) == 0.0 || glm::length(principal) == 0.0)) why = "an orientation is zero";
-        if (!why.empty()) {
-            ctx->refused = "model " + std::to_string(s->model) + "'s free-rotation segment at t = " + std::to_string(s->t0) + " s: " + why;
-            return;
-        }
+        if (ctx->refuse(s->model, "free-rotation", s->t0, why)) return;
         RotationSegment r;
         r.model = s->model;
         r.t0 = s->t0;
@@ -302,14 +309,10 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         if (s->model >= ctx->rotations->size() || !ctx->refused.empty()) return;
         const double numbers[] = {s->t0, s->t1, s->q0.w, s->q0.x, s->q0.y, s->q0.z, s->w0.x, s->w0.y, s->w0.z, s->alpha.x, s->alpha.y, s->alpha.z};
         std::string why;
-        for (double x : numbers)
-            if (why.empty() && !std::isfinite(x)) why = "a time, the orientation, w0 or alpha is not finite";
+        if (!all_finite(numbers)) why = "a time, the orientation, w0 or alpha is not finite";
         const glm::dquat q0(s->q0.w, s->q0.x, s->q0.y, s->q0.z);
         if (why.empty() && glm::length(q0) == 0.0) why = "the orientation is zero";
-        if (!why.empty()) {
-            ctx->refused = "model " + std::to_string(s->model) + "'s spin-up segment at t = " + std::to_string(s->t0) + " s: " + why;
-            return;
-        }
+        if (ctx->refuse(s->model, "spin-up", s->t0, why)) return;
         RotationSegment r;
         r.model = s->model;
         r.t0 = s->t0;

@@ -443,6 +443,21 @@ void EventBake::turn(Body &b, double t, const glm::dvec3 &w) {
     b.spin.start(t, b.spin.at(t), w);
 }
 
+// Its motion so far reported, its path starts again at t where it is.
+void EventBake::rebase(Body &b, double t) {
+    close_segment(b, t);
+    b.path = from_now(b, t);
+    b.t0 = t;
+    ++b.version;
+}
+
+// Its turn so far reported, it turns on from t at the angular velocity it has then, at a
+// constant rate.
+void EventBake::restart_spin(Body &b, double t) {
+    emit_spin(b, t);
+    b.spin.start(t, b.spin.at(t), b.spin.rate(t));
+}
+
 // Reports a turning body's rotation from the start of its stretch (or of this slice) to t.
 void EventBake::emit_spin(const Body &b, double t) {
     const double from = std::max(b.spin.t0, t_begin_);

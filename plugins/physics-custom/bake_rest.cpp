@@ -197,10 +197,7 @@ void EventBake::unsupport(Body &b, double t) {
     b.rub = 0.0;
     b.reaim_at = kNever;
     b.rolling = false;
-    if (b.spin.on && b.spin.alpha != glm::dvec3(0.0)) { // friction no longer turns it
-        emit_spin(b, t);
-        b.spin.start(t, b.spin.at(t), b.spin.rate(t));
-    }
+    if (b.spin.on && b.spin.alpha != glm::dvec3(0.0)) restart_spin(b, t); // no friction turns it
     b.support_edges.clear();
     b.support_feet.clear();
     b.settles_at = kNever;
@@ -220,16 +217,27 @@ void EventBake::after_contact(int i, double t) {
         if (std::abs(glm::dot(v, b.support_n)) > 1e-9 * std::max(1.0, glm::length(v)))
             unsupport(b, t);
         else { // its new velocity and spin on the support, from here
-            if (b.t0 != t) {
-                close_segment(b, t);
-                b.path = from_now(b, t);
-                b.t0 = t;
-                ++b.version;
-            }
+            if (b.t0 != t) rebase(b, t);
             aim_friction(b);
         }
     }
     try_settle(i, t);
+}
+
+// The lowest of `points` (world space) along n, when it lies in the plane n . x = d of
+// triangle p0 p1 p2 and over the triangle, within slack: where a model with those vertices
+// stands on that face.
+std::optional<glm::dvec3> EventBake::standing_point(const std::vector<glm::dvec3> &points,
+                                                    const glm::dvec3 &p0, const glm::dvec3 &p1,
+                                                    const glm::dvec3 &p2, const glm::dvec3 &n,
+                                                    double d, double slack) {
+    glm::dvec3 lowest = points.front();
+    for (const glm::dvec3 &p : points)
+        if (glm::dot(n, p) < glm::dot(n, lowest)) lowest = p;
+    if (std::abs(glm::dot(n, lowest) - d) > slack ||
+        glm::length(closest_point_on_triangle(lowest, p0, p1, p2) - lowest) > slack)
+        return std::nullopt;
+    return lowest;
 }
 
 // A free model that is not a sphere, placed on a face of a static model (touching its plane with
@@ -241,7 +249,8 @@ bool EventBake::try_settle_mesh(int i, double t) {
         !(b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))))
         return false;
     const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
-    const std::vector<glm::dvec3> corners = placed_vertices(b, t);
+    std::vector<glm::dvec3> corners = placed_vertices(b, t);
+    for (glm::dvec3 &r : corners) r += c; // in world space
     const double reach = body_size(b), slack = 1e-9 * std::max(1.0, 2.0 * reach);
     for (size_t o = 0; o < obstacles_.size(); ++o) {
         const Obstacle &ob = obstacles_[o];
@@ -255,14 +264,8 @@ bool EventBake::try_settle_mesh(int i, double t) {
             if (n == glm::dvec3(0.0) || !(glm::dot(b.free_a, n) < 0.0) ||
                 std::abs(glm::dot(v, n)) > 1e-9 * std::max(1.0, glm::length(v)))
                 continue;
-            glm::dvec3 lowest = c + corners.front();
-            for (const glm::dvec3 &r : corners)
-                if (glm::dot(n, c + r) < glm::dot(n, lowest)) lowest = c + r;
-            if (std::abs(glm::dot(n, lowest) - ob.offsets[k]) > slack ||
-                glm::length(closest_point_on_triangle(lowest, ob.corners[3 * k],
-                                                      ob.corners[3 * k + 1],
-                                                      ob.corners[3 * k + 2]) -
-                            lowest) > slack)
+            if (!standing_point(corners, ob.corners[3 * k], ob.corners[3 * k + 1],
+                                ob.corners[3 * k + 2], n, ob.offsets[k], slack))
                 continue;
             if (std::any_of(tried.begin(), tried.end(),
                             [&](const glm::dvec3 &m) { return glm::dot(m, n) > 1.0 - 1e-9; }))
@@ -306,11 +309,9 @@ void EventBake::aim_friction(Body &b, bool rolls) {
     const double r = b.radius;
     b.reaim_at = kNever;
     b.rolling = false;
-    if (ball && (b.spin.t0 != b.t0 || b.spin.alpha != glm::dvec3(0.0))) {
-        emit_spin(b, b.t0); // its turn so far; from here, the rate friction gives it
-        b.spin.start(b.t0, b.spin.at(b.t0), b.spin.rate(b.t0));
-    }
-    glm::dvec3 f(0.0); // friction's acceleration
+    if (ball && (b.spin.t0 != b.t0 || b.spin.alpha != glm::dvec3(0.0)))
+        restart_spin(b, b.t0); // its turn so far; from here, the rate friction gives it
+    glm::dvec3 f(0.0);         // friction's acceleration
     if (b.rub > 0.0) {
         const double pull = glm::length(a_t);
         const glm::dvec3 w = ball ? b.spin.w : glm::dvec3(0.0);
@@ -453,13 +454,11 @@ void EventBake::settle_stacks(double t) {
                     n = glm::normalize(n);
                     if (glm::dot(n, p0 - m.center) < 0.0) n = -n; // outward
                     if (!(glm::dot(b.free_a, n) < 0.0)) continue;
-                    glm::dvec3 lowest = corners.front();
-                    for (const glm::dvec3 &v : corners)
-                        if (glm::dot(n, v) < glm::dot(n, lowest)) lowest = v;
-                    if (std::abs(glm::dot(n, lowest - p0)) > slack ||
-                        glm::length(closest_point_on_triangle(lowest, p0, p1, p2) - lowest) > slack)
-                        continue;
-                    changed = sleep_on_body(static_cast<int>(x), static_cast<int>(y), n, lowest, t);
+                    const auto lowest =
+                        standing_point(corners, p0, p1, p2, n, glm::dot(n, p0), slack);
+                    if (!lowest) continue;
+                    changed =
+                        sleep_on_body(static_cast<int>(x), static_cast<int>(y), n, *lowest, t);
                 }
             }
         }

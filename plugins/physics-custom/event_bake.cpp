@@ -178,11 +178,8 @@ void EventBake::handle(int i, const Predicted &event, double now) {
         friction_changes(b, now, event.other == 1);
         break;
     case EventKind::kSettle: // the Zeno bounces' accumulation time: resting from here
-        close_segment(b, now);
-        b.path = from_now(b, now);
-        b.t0 = now;
+        rebase(b, now);
         b.settles_at = kNever;
-        ++b.version;
         break;
     }
     if (sleepers_ > 0) { // the bodies asleep on one that moved wake

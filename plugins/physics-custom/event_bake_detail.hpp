@@ -291,6 +291,8 @@ class EventBake {
     void start_spin(Body &b, double t);
     void turn(Body &b, double t, const glm::dvec3 &w);
     void emit_spin(const Body &b, double t);
+    void rebase(Body &b, double t);
+    void restart_spin(Body &b, double t);
     std::optional<TurningShape> check_turning(uint32_t i, bool sphere, double t);
     TurningShape turning_shape(uint32_t i, double t) const;
     void set_turning(Body &b, TurningShape shape);
@@ -399,6 +401,10 @@ class EventBake {
     void unsupport(Body &b, double t);
     void after_contact(int i, double t);
     bool try_settle_mesh(int i, double t);
+    static std::optional<glm::dvec3> standing_point(const std::vector<glm::dvec3> &points,
+                                                    const glm::dvec3 &p0, const glm::dvec3 &p1,
+                                                    const glm::dvec3 &p2, const glm::dvec3 &n,
+                                                    double d, double slack);
     void hold_on(Body &b, int o, const glm::dvec3 &n);
     void aim_friction(Body &b, bool rolls = false);
     void predict_friction(int i, double now, double &limit, Predicted &next) const;
