@@ -356,7 +356,8 @@ bool EventBake::respond_turning_to_obstacle(int i, const Obstacle &o, const Cont
     // The speed of the highest bounce the Zeno rule still follows (zeno.hpp).
     const double v_min = g_n > 0.0 ? std::sqrt(2.0 * g_n * kZenoHeight * scale) : 0.0;
     // The Zeno rule, for a model that does not turn, or turns so slowly that no point of it
-    // moves as fast as the bounces too small to follow (then it stops turning).
+    // moves as fast as the bounces too small to follow (then it stops turning). settle_on puts
+    // it there only if it stands balanced; otherwise it tips over by the microcollisions below.
     if (zeno_settles(vn, g_n, e, scale) && glm::length(r.wa) * b.turning_reach <= v_min) {
         restart(b, t, r.va, false);
         turn(b, t, glm::dvec3(0.0));
@@ -374,7 +375,7 @@ bool EventBake::respond_turning_to_obstacle(int i, const Obstacle &o, const Cont
     ImpulseBody after = a;
     after.v = r.va;
     after.w = r.wa;
-    if (glm::dot(point_velocity_of(after), n) < v_min) r = leave_at(after, n, v_min);
+    if (glm::dot(point_velocity_of(after), n) < v_min) r = leave_at(after, n, v_min, mu);
     restart(b, t, r.va, false);
     turn(b, t, r.wa);
     return false;

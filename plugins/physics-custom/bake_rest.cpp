@@ -104,6 +104,21 @@ bool EventBake::settle_on(int i, int o, const glm::dvec3 &n, double t) {
         if (std::abs(glm::dot(n, placed_c + corner) - held.support_d) <= 1e-9 * size)
             held.support_feet.push_back(corner);
     if (held.support_feet.empty()) return false;
+    // A model that turns stands there only balanced, its centre of mass over its feet along
+    // gravity (support_polygon.hpp); otherwise it tips over (respond_turning_to_obstacle's
+    // microcollisions). Its feet for that are the vertices within kTipSlack of its size of the
+    // plane: a face tilted by less than that many radians stands on all its corners. (Those
+    // within 1e-9 alone would leave a face landing flat on two corners, rounding lifting the
+    // other two, to tip over by nothing at all in microcollisions without end.) One that does
+    // not turn stays as its keys left it, on an edge or a corner.
+    if (b.turning()) {
+        constexpr double kTipSlack = 1e-6;
+        std::vector<glm::dvec3> stand;
+        for (const glm::dvec3 &corner : corners)
+            if (std::abs(glm::dot(n, placed_c + corner) - held.support_d) <= kTipSlack * size)
+                stand.push_back(corner);
+        if (!over_feet(glm::dvec3(0.0), stand, b.free_a, 1e-9 * size)) return false;
+    }
     held.t0 = t;
     held.path = Path{c, v - glm::dot(v, n) * n, b.free_a - glm::dot(b.free_a, n) * n};
     if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t)))) return false;

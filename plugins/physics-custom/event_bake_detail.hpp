@@ -20,6 +20,7 @@
 #include "scene_print.hpp"
 #include "simultaneous_contact.hpp"
 #include "spin.hpp"
+#include "support_polygon.hpp"
 #include "time_of_impact.hpp"
 #include "turning_contact.hpp"
 #include "zeno.hpp"

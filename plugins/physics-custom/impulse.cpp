@@ -103,7 +103,7 @@ ImpulseResult contact_impulse(const ImpulseBody &a, const ImpulseBody &b, const 
     return out;
 }
 
-ImpulseResult leave_at(const ImpulseBody &a, const glm::dvec3 &n, double speed) {
+ImpulseResult leave_at(const ImpulseBody &a, const glm::dvec3 &n, double speed, double mu) {
     const double u = glm::dot(point_velocity_of(a), n), knn = glm::dot(n, k_of(a) * n);
     if (!(u < speed) || !(knn > 0.0)) {
         ImpulseResult out;
@@ -111,7 +111,7 @@ ImpulseResult leave_at(const ImpulseBody &a, const glm::dvec3 &n, double speed) 
         out.wa = a.w;
         return out;
     }
-    return contact_impulse_of(a, ImpulseBody{}, n, (speed - u) / knn, 0.0);
+    return contact_impulse_of(a, ImpulseBody{}, n, (speed - u) / knn, mu);
 }
 
 ImpulseResult leave_at(const ImpulseBody &a, const ImpulseBody &b, const glm::dvec3 &n,

@@ -55,8 +55,9 @@ ImpulseResult contact_impulse_of(const ImpulseBody &a, const ImpulseBody &b, con
                                  double normal, double mu);
 
 // The normal impulse at a's point against infinite mass that makes the point leave along n at
-// `speed` (a microcollision's least speed, bake_response.cpp); none if it leaves faster.
-ImpulseResult leave_at(const ImpulseBody &a, const glm::dvec3 &n, double speed);
+// `speed` (a microcollision's least speed, bake_response.cpp); none if it leaves faster. With
+// mu > 0 that impulse brings Coulomb friction with it, as contact_impulse_of's.
+ImpulseResult leave_at(const ImpulseBody &a, const glm::dvec3 &n, double speed, double mu = 0.0);
 // The same between two bodies: the normal impulse (a gets it along n, b against) that makes their
 // touching points part along n at `speed`; none if they part faster.
 ImpulseResult leave_at(const ImpulseBody &a, const ImpulseBody &b, const glm::dvec3 &n,
