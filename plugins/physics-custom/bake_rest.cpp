@@ -332,8 +332,17 @@ void EventBake::aim_friction(Body &b, bool rolls) {
         const glm::dvec3 w = ball ? b.spin.w : glm::dvec3(0.0);
         const glm::dvec3 u = ball ? v - r * glm::cross(w, n) : v;
         const double slip = glm::length(u);
-        const bool holds =
+        bool holds =
             ball ? slip <= 1e-12 * std::max(1.0, glm::length(v) + r * glm::length(w)) : slip == 0.0;
+        // A slip that turns so fast that its next piece would not move the clock is what
+        // rounding left of a slip that has ended (a model sent across a slope, stopping): it
+        // holds from here (a model that does not turn stops).
+        const glm::dvec3 across_u = slip > 0.0 ? a_t - glm::dot(a_t, u) / (slip * slip) * u : a_t;
+        if (!holds && !rolls && glm::length(across_u) > 1e-12 * pull &&
+            b.t0 + kAimTurn * slip / glm::length(across_u) == b.t0) {
+            holds = true;
+            if (!ball) b.path.v = glm::dvec3(0.0);
+        }
         if (rolls || holds) {
             // (Static friction needs (2/7) |a_t| for a ball to roll, all of |a_t| for a model
             // that does not turn to stay.)
@@ -352,9 +361,12 @@ void EventBake::aim_friction(Body &b, bool rolls) {
             if (glm::length(across) <= 1e-12 * pull) {
                 f = -b.rub * along;
             } else {
+                // The slip at the piece's middle, with friction along the slip now, then again
+                // with friction along that: its direction to second order in the turn.
                 const double h = kAimTurn * slip / glm::length(across);
-                const glm::dvec3 rate = a_t - (ball ? 3.5 : 1.0) * b.rub * along;
-                f = -b.rub * glm::normalize(u + 0.5 * h * rate);
+                const double gain = ball ? 3.5 : 1.0; // the slip's rate is a_t + gain f
+                f = -b.rub * glm::normalize(u + 0.5 * h * (a_t - gain * b.rub * along));
+                f = -b.rub * glm::normalize(u + 0.5 * h * (a_t + gain * f));
                 b.reaim_at = b.t0 + h;
             }
         }
