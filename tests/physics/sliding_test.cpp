@@ -262,9 +262,9 @@ TEST_CASE("a cube leaning on its edge tips over as the pendulum equation says, a
             const ModelPose p = timeline->evaluate(t).models[static_cast<size_t>(box)];
             const double err = std::abs(p.angles.z - (45.0 - phi / deg));
             biggest = std::max(biggest, err);
-            const glm::dvec3 arm = p.center - glm::dvec3(-0.5 * (std::cos(30 * deg) -
-                                                                 std::sin(30 * deg)),
-                                                         0.0, p.center.z);
+            const glm::dvec3 arm =
+                p.center -
+                glm::dvec3(-0.5 * (std::cos(30 * deg) - std::sin(30 * deg)), 0.0, p.center.z);
             CAPTURE(t, err);
             CHECK(err < 0.01);
             CHECK(std::abs(glm::length(arm) - std::sqrt(0.5)) < 1e-4);
@@ -307,7 +307,8 @@ TEST_CASE("a box sent across a rough 20 degree slope curves down it as the rough
     box.friction = mu;
     box.restitution = 0.5;
     box.initial_velocity = {0, 0, v0};
-    const glm::dvec3 n(-std::sin(theta), std::cos(theta), 0.0), d(-std::cos(theta), -std::sin(theta), 0.0);
+    const glm::dvec3 n(-std::sin(theta), std::cos(theta), 0.0),
+        d(-std::cos(theta), -std::sin(theta), 0.0);
     doc.add_model(box, placed(0.5 * n, glm::dvec3(0.5), {0, 0, 20}));
     auto timeline = timeline_of(doc);
     timeline->bake(3.0);
@@ -321,12 +322,12 @@ TEST_CASE("a box sent across a rough 20 degree slope curves down it as the rough
         const double v = glm::length(p.velocity);
         const double cos_phi = glm::dot(p.velocity, d) / v,
                      sin_phi = glm::length(glm::cross(p.velocity, d)) / v;
-        const double u = sin_phi / (1.0 + cos_phi); // tan(phi / 2)
+        const double u = sin_phi / (1.0 + cos_phi);       // tan(phi / 2)
         CHECK(std::abs(glm::dot(p.velocity, n)) < 1e-12); // along the slope
         CHECK(std::abs(v * sin_phi / std::pow(u, k) - v0) < 3e-6);
-        const double t_phi = v0 / (2.0 * a) *
-                             ((1.0 - std::pow(u, k - 1.0)) / (k - 1.0) +
-                              (1.0 - std::pow(u, k + 1.0)) / (k + 1.0));
+        const double t_phi =
+            v0 / (2.0 * a) *
+            ((1.0 - std::pow(u, k - 1.0)) / (k - 1.0) + (1.0 - std::pow(u, k + 1.0)) / (k + 1.0));
         CHECK(std::abs(t_phi - t) < 1e-6);
     }
     // It stops: the last time it moves, found by bisection, is the closed form's.
