@@ -547,30 +547,66 @@ void EventBake::predict_turning_obstacle(int i, size_t o, double now, double lim
     const double travel = glm::length(path.v) * limit + 0.5 * glm::length(path.a) * limit * limit;
     if (glm::length(path.c0 - ob.center) - b.turning_reach - ob.radius > travel) return;
     const TurningMesh mesh = turning_mesh(b);
+    // Of a larger obstacle (a staircase), only the triangles it can reach within a window in
+    // which it travels no further than its own size: each step of the advancement tests every
+    // pair of triangles, and a model hopping on a face (tipping by microcollisions) makes many
+    // short predictions. Past the window, it is predicted again (a recheck).
+    double window = limit;
+    std::vector<uint32_t> near;
+    if (ob.boxes.size() > 4) {
+        const double speed = glm::length(path.v), accel = glm::length(path.a),
+                     size = b.turning_reach;
+        if (travel > size) // speed w + accel w^2 / 2 = size
+            window = accel > 0.0
+                         ? 2.0 * size / (speed + std::sqrt(speed * speed + 2.0 * accel * size))
+                         : size / speed;
+        Box reach = swept_box(Path{path.c0, path.v, path.a}, window);
+        reach.lo -= glm::dvec3(b.turning_reach + 1e-6);
+        reach.hi += glm::dvec3(b.turning_reach + 1e-6);
+        for (size_t k = 0; k < ob.boxes.size(); ++k)
+            if (reach.overlaps(ob.boxes[k]))
+                near.insert(near.end(), ob.shape->triangles[k].begin(),
+                            ob.shape->triangles[k].end());
+        if (near.empty()) {
+            if (window < limit && now + window < next.t)
+                next = predicted(now + window, EventKind::kRecheck);
+            return;
+        }
+    }
     const TurningMesh soup{ob.shape->vertices.data(),
                            ob.shape->vertices.size(),
-                           ob.shape->triangles.empty() ? nullptr : &ob.shape->triangles[0][0],
-                           ob.shape->triangles.size(),
+                           !near.empty()                 ? near.data()
+                           : ob.shape->triangles.empty() ? nullptr
+                                                         : &ob.shape->triangles[0][0],
+                           !near.empty() ? near.size() / 3 : ob.shape->triangles.size(),
                            ob.shape->edges.data(),
                            ob.shape->edges.size()};
     constexpr double kSlack = 1e-9; // turning_contact.hpp's contact slack (m)
     double from = 0.0;
     TurningContact c;
     for (int tries = 0;; ++tries) {
-        c = turning_mesh_contact(mesh, path, soup, TurningPath{}, from, limit);
+        c = turning_mesh_contact(mesh, path, soup, TurningPath{}, from, window);
         count_.mesh_tests += static_cast<std::size_t>(c.steps) + 1;
         outward(c, path);
         if (!(c.found() && tries < 1000 && !approaching(b, c, now + c.t))) break;
         const double speed = point_speed(b, now + c.t, 1e-6);
         if (!(speed > 0.0)) return;                        // nothing moves: nothing to meet
         from = c.t + std::min(1e-6, 0.5 * kSlack / speed); // the bound holds for 1e-6 s
-        if (from >= limit) return;
+        if (from >= window) {
+            c.kind = TurningContact::kNone;
+            break;
+        }
     }
     if (c.kind == TurningContact::kInvalid)
         throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
                                                name_of(scene_->models[b.model]) +
                                                "' would turn to a value that is not finite");
-    if (c.kind == TurningContact::kNone || now + c.t >= next.t) return;
+    if (!c.found() && c.kind != TurningContact::kUndecided) {
+        if (window < limit && now + window < next.t)
+            next = predicted(now + window, EventKind::kRecheck);
+        return;
+    }
+    if (now + c.t >= next.t) return;
     Contact contact;
     contact.t = c.t;
     contact.point = c.point;
