@@ -6,6 +6,7 @@
 #include "bench.hpp"
 
 #include "bullet_support.hpp"
+#include "physics/tipping_pendulum.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -47,19 +48,11 @@ double worst(double until, const std::function<double(double)> &f) {
 }
 
 // The angle (degrees past the vertical through its edge) of a cube of side 1 m tipping from 15
-// degrees at rest, at t: the pendulum phi'' = (3 g / (2 sqrt(2))) sin(phi), by RK4 in 1e-6 s
-// steps, until the face lands at 45 degrees (then 45).
+// degrees at rest, at t (tests/physics/tipping_pendulum.hpp), until the face lands at 45 degrees.
 double tipped(double t) {
-    const double w2 = 3.0 * G / (2.0 * std::sqrt(2.0)), h = 1e-6, end = glm::radians(45.0);
+    const double w2 = tipping::pendulum_rate(G, 1.0), h = 1e-6, end = glm::radians(45.0);
     double phi = glm::radians(15.0), rate = 0.0;
-    for (double s = 0.0; s + 0.5 * h < t && phi < end; s += h) {
-        const double k1p = rate, k1v = w2 * std::sin(phi);
-        const double k2p = rate + 0.5 * h * k1v, k2v = w2 * std::sin(phi + 0.5 * h * k1p);
-        const double k3p = rate + 0.5 * h * k2v, k3v = w2 * std::sin(phi + 0.5 * h * k2p);
-        const double k4p = rate + h * k3v, k4v = w2 * std::sin(phi + h * k3p);
-        phi += h / 6.0 * (k1p + 2.0 * k2p + 2.0 * k3p + k4p);
-        rate += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
-    }
+    for (double s = 0.0; s + 0.5 * h < t && phi < end; s += h) tipping::step(w2, h, phi, rate);
     return glm::degrees(std::min(phi, end));
 }
 

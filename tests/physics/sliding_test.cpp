@@ -5,6 +5,7 @@
 #include "timeline/timeline.hpp"
 
 #include "scene_support.hpp"
+#include "tipping_pendulum.hpp"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
@@ -235,26 +236,19 @@ TEST_CASE("a cube leaning on its edge tips over as the pendulum equation says, a
     // The cube (side s = 1 m) stands on its edge along z, turned 30 degrees: its centre of mass
     // is 15 degrees past the vertical through the edge. Held at the edge by friction (it needs
     // mu >= 0.2 on the way, below the scene's 0.5), it turns about it as an upside-down
-    // pendulum: I phi'' = m g d sin(phi), d = s / sqrt(2) and I = 2/3 m s^2 about an edge, so
-    // phi'' = (3 g / (2 sqrt(2) s)) sin(phi), from phi = 15 degrees at rest, until phi = 45
-    // degrees, when its face lands. Integrated here by RK4 in 1e-6 s steps (error far below
-    // what is checked). The bake tips it by microcollisions at the edge (physics.md, "Tipping"),
-    // a first-order method whose error the bounds below state.
+    // pendulum (tipping_pendulum.hpp), from phi = 15 degrees at rest, until phi = 45 degrees,
+    // when its face lands. The bake tips it by microcollisions at the edge (physics.md,
+    // "Tipping"), a first-order method whose error the bounds below state.
     const Document doc = shipped_scene("tipping_cube.lua");
     const int box = model_named(doc, "box");
     auto timeline = timeline_of(doc);
     timeline->bake(5.0);
-    const double w2 = 3.0 * G / (2.0 * std::sqrt(2.0)), deg = M_PI / 180.0;
+    const double w2 = tipping::pendulum_rate(G, 1.0), deg = M_PI / 180.0;
     double phi = 15.0 * deg, rate = 0.0, t = 0.0, biggest = 0.0;
     const double h = 1e-6;
     double next_check = 0.01;
     while (phi < 45.0 * deg) {
-        const double k1p = rate, k1v = w2 * std::sin(phi);
-        const double k2p = rate + 0.5 * h * k1v, k2v = w2 * std::sin(phi + 0.5 * h * k1p);
-        const double k3p = rate + 0.5 * h * k2v, k3v = w2 * std::sin(phi + 0.5 * h * k2p);
-        const double k4p = rate + h * k3v, k4v = w2 * std::sin(phi + h * k3p);
-        phi += h / 6.0 * (k1p + 2.0 * k2p + 2.0 * k3p + k4p);
-        rate += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+        tipping::step(w2, h, phi, rate);
         t += h;
         if (t >= next_check && phi < 44.0 * deg) {
             // The cube's turn about z is 45 degrees less phi; its centre stays 1/sqrt(2) from
