@@ -552,6 +552,10 @@ void EventBake::predict_turning_obstacle(int i, size_t o, double now, double lim
     // pair of triangles, and a model hopping on a face (tipping by microcollisions) makes many
     // short predictions. Past the window, it is predicted again (a recheck).
     double window = limit;
+    auto recheck_after_window = [&] {
+        if (window < limit && now + window < next.t)
+            next = predicted(now + window, EventKind::kRecheck);
+    };
     std::vector<uint32_t> near;
     if (ob.boxes.size() > 4) {
         const double speed = glm::length(path.v), accel = glm::length(path.a),
@@ -567,11 +571,7 @@ void EventBake::predict_turning_obstacle(int i, size_t o, double now, double lim
             if (reach.overlaps(ob.boxes[k]))
                 near.insert(near.end(), ob.shape->triangles[k].begin(),
                             ob.shape->triangles[k].end());
-        if (near.empty()) {
-            if (window < limit && now + window < next.t)
-                next = predicted(now + window, EventKind::kRecheck);
-            return;
-        }
+        if (near.empty()) return recheck_after_window();
     }
     const TurningMesh soup{ob.shape->vertices.data(),
                            ob.shape->vertices.size(),
@@ -601,11 +601,7 @@ void EventBake::predict_turning_obstacle(int i, size_t o, double now, double lim
         throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
                                                name_of(scene_->models[b.model]) +
                                                "' would turn to a value that is not finite");
-    if (!c.found() && c.kind != TurningContact::kUndecided) {
-        if (window < limit && now + window < next.t)
-            next = predicted(now + window, EventKind::kRecheck);
-        return;
-    }
+    if (!c.found() && c.kind != TurningContact::kUndecided) return recheck_after_window();
     if (now + c.t >= next.t) return;
     Contact contact;
     contact.t = c.t;

@@ -334,12 +334,14 @@ void EventBake::aim_friction(Body &b, bool rolls) {
         const double slip = glm::length(u);
         bool holds =
             ball ? slip <= 1e-12 * std::max(1.0, glm::length(v) + r * glm::length(w)) : slip == 0.0;
+        // The slip's direction, and the part of a_t across it that turns it.
+        const glm::dvec3 along = slip > 0.0 ? u / slip : glm::dvec3(0.0),
+                         across = a_t - glm::dot(a_t, along) * along;
         // A slip that turns so fast that its next piece would not move the clock is what
         // rounding left of a slip that has ended (a model sent across a slope, stopping): it
         // holds from here (a model that does not turn stops).
-        const glm::dvec3 across_u = slip > 0.0 ? a_t - glm::dot(a_t, u) / (slip * slip) * u : a_t;
-        if (!holds && !rolls && glm::length(across_u) > 1e-12 * pull &&
-            b.t0 + kAimTurn * slip / glm::length(across_u) == b.t0) {
+        if (!holds && !rolls && glm::length(across) > 1e-12 * pull &&
+            b.t0 + kAimTurn * slip / glm::length(across) == b.t0) {
             holds = true;
             if (!ball) b.path.v = glm::dvec3(0.0);
         }
@@ -357,7 +359,6 @@ void EventBake::aim_friction(Body &b, bool rolls) {
             }
         } else {
             // The slip's rate: a_t + f for the centre, and 5/2 f more for a ball's turn.
-            const glm::dvec3 along = u / slip, across = a_t - glm::dot(a_t, along) * along;
             if (glm::length(across) <= 1e-12 * pull) {
                 f = -b.rub * along;
             } else {
