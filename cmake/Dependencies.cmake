@@ -22,6 +22,8 @@ pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet-float64)
 find_package(Boost 1.71 REQUIRED)
 # Windowing and OpenGL.
 find_package(glfw3 3.3 REQUIRED)
+# Xlib: the editor reads the X server's time of each click (host/editor/click_times.hpp).
+find_package(X11 REQUIRED)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL) # EGL: off-screen rendering without a display
 # Dear ImGui (static, with the GLFW and OpenGL3 backends) and stb.
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui stb)

@@ -1,6 +1,7 @@
 #include "editor/editor_app.hpp"
 
 #include "audio/live_player.hpp"
+#include "editor/click_times.hpp"
 #include "editor/editor_panels.hpp"
 #include "editor/editor_session.hpp"
 #include "editor/gizmo_drawing.hpp"
@@ -23,12 +24,14 @@
 #include <malloc.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
 #include <iostream>
 #include <memory>
+#include <thread>
 #include <vector>
 
 namespace animator {
@@ -44,6 +47,10 @@ struct InputEvent {
     int mods = 0;
     double x = 0, y = 0; // the cursor (screen coordinates) for buttons; the offset for scroll
 };
+
+// A double-click: two presses within half a second (as on Windows) and 6 pixels (ImGui's).
+constexpr double kDoubleClickSeconds = 0.5;
+constexpr double kDoubleClickPixels = 6.0;
 
 struct WindowState {
     std::deque<InputEvent> events;
@@ -69,9 +76,16 @@ struct WindowState {
     GLFWmousebuttonfun imgui_mouse = nullptr;
     struct ButtonChange {
         int button, action, mods;
+        int clicks; // a press: how many in a row it made (2: a double-click), counted when it happened
     };
     std::deque<ButtonChange> imgui_buttons;
     bool replaying_buttons = false;
+    // Clicks are counted by when the X server says they happened (click_times.hpp), not by the
+    // frames that hand them to ImGui; the count of a press handed over this frame, by button,
+    // replaces ImGui's after its NewFrame (count_imgui_clicks).
+    ServerTimes *server_times = nullptr;
+    ClickCounter clicks{kDoubleClickSeconds, kDoubleClickPixels};
+    int clicks_fed[ImGuiMouseButton_COUNT] = {};
 };
 
 WindowState &state_of(GLFWwindow *w) { return *static_cast<WindowState *>(glfwGetWindowUserPointer(w)); }
@@ -218,16 +232,22 @@ void install_queued_callbacks(GLFWwindow *window) {
     // (feed_imgui_buttons), whose replay reaches ours again through ImGui's and is skipped.
     state_of(window).imgui_mouse = glfwSetMouseButtonCallback(window, [](GLFWwindow *w, int button, int action, int mods) {
         on_mouse_button(w, button, action, mods);
-        state_of(w).imgui_buttons.push_back({button, action, mods});
+        auto &s = state_of(w);
+        const auto server_ms = s.server_times ? s.server_times->take(button, action == GLFW_PRESS) : std::nullopt;
+        const InputEvent &e = s.events.back(); // on_mouse_button's, where the pointer was
+        const int clicks = action == GLFW_PRESS ? s.clicks.press(button, {server_ms, glfwGetTime(), e.x, e.y}) : 0;
+        s.imgui_buttons.push_back({button, action, mods, clicks});
     });
 }
 
 // Before a frame, after feed_imgui_keys: hands ImGui the queued button changes, at most one of
 // each button (so a second click of a double-click comes a frame after the first's release).
-// True when it handed one: the frame's clock is then kept short, so that clicks queued during
-// a slow frame stay as close together to ImGui as they were to the user.
+// True when it handed one: the frame's clock is then kept short, so that a click queued during
+// a slow frame is as brief to ImGui as it was to the user (a button that repeats while held
+// steps once).
 bool feed_imgui_buttons(GLFWwindow *window) {
     auto &s = state_of(window);
+    std::fill(std::begin(s.clicks_fed), std::end(s.clicks_fed), 0);
     std::vector<int> changed;
     bool fed = false;
     while (!s.imgui_buttons.empty()) {
@@ -240,9 +260,20 @@ bool feed_imgui_buttons(GLFWwindow *window) {
             s.imgui_mouse(window, b.button, b.action, b.mods);
             s.replaying_buttons = false;
         }
+        if (b.clicks > 0 && b.button >= 0 && b.button < ImGuiMouseButton_COUNT) s.clicks_fed[b.button] = b.clicks;
         fed = true;
     }
     return fed;
+}
+
+// After ImGui::NewFrame: a press handed over this frame counts as the click it was when it
+// happened (feed_imgui_buttons), whatever ImGui's clock made of the frames between.
+void count_imgui_clicks(const WindowState &s, ImGuiIO &io) {
+    for (int b = 0; b < ImGuiMouseButton_COUNT; ++b) {
+        if (s.clicks_fed[b] == 0 || !io.MouseClicked[b]) continue;
+        io.MouseClickedCount[b] = io.MouseClickedLastCount[b] = static_cast<ImU16>(s.clicks_fed[b]);
+        io.MouseDoubleClicked[b] = s.clicks_fed[b] == 2;
+    }
 }
 
 // Before a frame: hands ImGui the queued key changes, stopping at a second change of a key it
@@ -309,6 +340,14 @@ bool signals_wanted() {
     return v && *v && std::strcmp(v, "0") != 0;
 }
 
+// ANIMATOR_EDITOR_SLOW_FRAMES=MS: every frame takes at least MS milliseconds. A test's stand-in
+// for a busy machine (a sanitizer build while other tests run), where a frame can take longer
+// than a double-click: what the user did must still come through as they did it.
+double slow_frame_seconds() {
+    const char *v = std::getenv("ANIMATOR_EDITOR_SLOW_FRAMES");
+    return v ? std::max(0.0, std::atof(v)) / 1000.0 : 0.0;
+}
+
 void announce_idle(const WindowState &s, std::int64_t time_ms) {
     std::cout << "animator: idle (inputs " << s.inputs << ", moves " << s.moves << ", time " << time_ms << " ms)"
               << std::endl;
@@ -356,6 +395,8 @@ int run_editor(const EditorOptions &options) {
     }
     WindowState window_state;
     glfwSetWindowUserPointer(window, &window_state);
+    ServerTimes server_times(window);
+    window_state.server_times = &server_times;
     glfwMakeContextCurrent(window);
     glfwSwapInterval(1);
     if (gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)) == 0) {
@@ -371,10 +412,10 @@ int run_editor(const EditorOptions &options) {
     ImGui::CreateContext();
     ImGuiIO &io = ImGui::GetIO();
     io.IniFilename = nullptr; // no imgui.ini left in the user's folder
-    // A double-click (the Outliner's rename) within half a second, as on Windows: ImGui's 0.3 s
-    // is measured between the frames that see the clicks, and a frame drawn on a busy machine
-    // can take longer than that.
-    io.MouseDoubleClickTime = 0.5f;
+    // Double-clicks are counted by the X server's times (count_imgui_clicks); ImGui's own
+    // measure, between the frames that see the clicks, keeps to the same rule.
+    io.MouseDoubleClickTime = static_cast<float>(kDoubleClickSeconds);
+    io.MouseDoubleClickMaxDist = static_cast<float>(kDoubleClickPixels);
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     install_queued_callbacks(window);
@@ -427,6 +468,7 @@ int run_editor(const EditorOptions &options) {
         double settle_until = glfwGetTime() + kSettleSeconds;
         bool quitting = false;
         const bool signals = signals_wanted();
+        const double slow_frames = slow_frame_seconds();
         FrameRate frame_rate;
         PathCache path_lines;
         std::unique_ptr<ScreenOverlay> gizmo_overlay; // made with the first gizmo drawn
@@ -435,20 +477,20 @@ int run_editor(const EditorOptions &options) {
         std::uint64_t previewed = 0; // the drag's document last said baked (signals)
         while (!quitting) {
             const bool busy = session.playing() || session.baking() || pointer.down() || frames_to_draw > 0;
-            if (busy || !window_state.imgui_keys.empty() || !window_state.imgui_buttons.empty()) glfwPollEvents();
-            else if (panels.output_busy()) glfwWaitEventsTimeout(1.0 / 30.0); // a render's progress
-            else if (glfwGetTime() < settle_until) glfwWaitEventsTimeout(1.0 / 60.0);
+            if (busy || !window_state.imgui_keys.empty() || !window_state.imgui_buttons.empty()) server_times.poll();
+            else if (panels.output_busy()) server_times.wait(1.0 / 30.0); // a render's progress
+            else if (glfwGetTime() < settle_until) server_times.wait(1.0 / 60.0);
             else if (frame_rate.text() != "idle") {
                 // One last frame, so the status line says "idle" rather than the rate of the
                 // frames just drawn, which would stand still on the screen while it sleeps.
                 frame_rate.idle();
                 frames_to_draw = 1;
-                glfwPollEvents();
+                server_times.poll();
             } else {
                 if (signals) announce_idle(window_state, session.time_ms());
                 // Asleep until the next event, or until an autosave is due (unsaved work only).
-                if (const auto due = autosaver.seconds_to_wait(glfwGetTime())) glfwWaitEventsTimeout(*due + 0.005);
-                else glfwWaitEvents();
+                if (const auto due = autosaver.seconds_to_wait(glfwGetTime())) server_times.wait(*due + 0.005);
+                else server_times.wait();
             }
             if (window_state.woke) {
                 frames_to_draw = 3; // ImGui settles within a few frames
@@ -460,9 +502,10 @@ int run_editor(const EditorOptions &options) {
             feed_imgui_keys(window);
             const bool buttons_fed = feed_imgui_buttons(window);
             ImGui_ImplGlfw_NewFrame();
-            // Clicks that waited in the queue reach ImGui as close together as they came.
+            // A click that waited in the queue reaches ImGui as brief as it was (feed_imgui_buttons).
             if (buttons_fed || !window_state.imgui_buttons.empty()) io.DeltaTime = std::min(io.DeltaTime, 1.0f / 60.0f);
             ImGui::NewFrame();
+            count_imgui_clicks(window_state, io);
 
             int fb_w = 0, fb_h = 0, win_w = 0, win_h = 0;
             glfwGetFramebufferSize(window, &fb_w, &fb_h);
@@ -727,6 +770,7 @@ int run_editor(const EditorOptions &options) {
             glViewport(0, 0, fb_w, fb_h);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             glfwSwapBuffers(window);
+            if (slow_frames > 0.0) std::this_thread::sleep_for(std::chrono::duration<double>(slow_frames));
             frame_rate.frame(glfwGetTime());
             if (session.playing()) ++play_frames;
             if (frames_to_draw > 0) --frames_to_draw;

@@ -304,7 +304,7 @@ SANITIZER_PATTERNS = [r'ERROR: AddressSanitizer', r'ERROR: LeakSanitizer', r'run
 class Editor:
     """One run of `animator` in the case's working folder, with its window found."""
 
-    def __init__(self, case, args, name='run'):
+    def __init__(self, case, args, name='run', extra_env=None):
         self.case = case
         self.name = name
         self.out_path = os.path.join(case.dir, name + '.stdout.txt')
@@ -316,6 +316,7 @@ class Editor:
         # Autosave's recovery files (docs/manual.md) go to the case's own folder, never the
         # user's ~/.local/state, where one left by a killed run would greet another case.
         env['XDG_STATE_HOME'] = case.state
+        env.update(extra_env or {})
         # Keys, clicks and scroll notches sent so far (each press and each release is one), and
         # the cursor moves the editor had seen at its last idle signal: settle() waits for the
         # editor to have handled at least these and gone to sleep.
@@ -601,8 +602,9 @@ class Case:
         self.shots += 1
         return self.shots
 
-    def start(self, *args, name=None):
-        e = Editor(self, args, name or 'run%d' % (len(self.editors) + 1))
+    def start(self, *args, name=None, env=None):
+        """Starts the editor with these arguments (and, with `env`, these environment variables)."""
+        e = Editor(self, args, name or 'run%d' % (len(self.editors) + 1), env)
         self.editors.append(e)
         return e
 
