@@ -84,14 +84,9 @@ void ServerTimes::poll() {
 }
 
 void ServerTimes::wait(double seconds) {
-    if (!display_) return glfwWaitEventsTimeout(seconds);
-    wait_on_connection(static_cast<int>(std::ceil(seconds * 1000.0)));
-    poll();
-}
-
-void ServerTimes::wait() {
-    if (!display_) return glfwWaitEvents();
-    wait_on_connection(-1);
+    const bool forever = seconds < 0.0;
+    if (!display_) return forever ? glfwWaitEvents() : glfwWaitEventsTimeout(seconds);
+    wait_on_connection(forever ? -1 : static_cast<int>(std::ceil(seconds * 1000.0)));
     poll();
 }
 

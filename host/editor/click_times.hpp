@@ -45,12 +45,11 @@ class ClickCounter {
 class ServerTimes {
   public:
     explicit ServerTimes(GLFWwindow *window);
-    // glfwPollEvents, glfwWaitEventsTimeout (seconds) and glfwWaitEvents, reading the queue's
-    // stamps first: waiting is done on the X connection, so an event that wakes the editor is
-    // still in the queue to be read.
+    // glfwPollEvents, and glfwWaitEventsTimeout (seconds; below 0, glfwWaitEvents), reading the
+    // queue's stamps first: waiting is done on the X connection, so an event that wakes the
+    // editor is still in the queue to be read.
     void poll();
-    void wait(double seconds);
-    void wait();
+    void wait(double seconds = -1.0);
     // In a GLFW mouse button callback: the server's time of this change (GLFW's button and
     // action), if it was read before GLFW took it.
     std::optional<std::uint32_t> take(int button, bool press);

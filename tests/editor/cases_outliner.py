@@ -149,12 +149,7 @@ def case_outliner_rename(c):
     c.copy('assets/scenes/puppet.lua')
     e = c.start('puppet.lua')
     # The left shoulder joint (an empty: nothing to click in the view).
-    x, y = row_name(3)
-    e.xdo('mousemove', '--window', e.window, x, y)
-    time.sleep(0.2)
-    e.xdo('click', '--repeat', 2, '--delay', 80, 1)
-    e.sent += 4
-    e.settle()
+    e.click_twice(*row_name(3))
     e.type('hinge')  # the field starts with the old name selected: typing replaces it
     e.key('Return')
     e.wait_log(r"^animator: renamed 'left_shoulder' to 'hinge'$", 'the rename said')
@@ -169,12 +164,7 @@ def case_outliner_rename(c):
     check(list(doc['models']).index('hinge') == 3, 'the renamed joint moved in the model order')
 
     # Another model's name: refused, and said.
-    x, y = row_name(2)  # the head
-    e.xdo('mousemove', '--window', e.window, x, y)
-    time.sleep(0.2)
-    e.xdo('click', '--repeat', 2, '--delay', 80, 1)
-    e.sent += 4
-    e.settle()
+    e.click_twice(*row_name(2))  # the head
     e.type('torso')
     e.key('Return')
     e.wait_log(r"^animator: cannot rename 'head' to 'torso': another model is named so", 'the refusal said')
@@ -226,23 +216,13 @@ def case_outliner_rename_slow(c):
     e = c.start('puppet.lua', env={'ANIMATOR_EDITOR_SLOW_FRAMES': '700'})
     # Two clicks a second apart on the head's row: it is selected, no name field opens, so `n`
     # typed next is the editor's key (it says where Blender's sidebar is) and Return renames nothing.
-    x, y = row_name(2)
-    e.xdo('mousemove', '--window', e.window, x, y)
-    time.sleep(0.2)
-    e.xdo('click', '--repeat', 2, '--delay', 1000, 1)
-    e.sent += 4
-    e.settle()
+    e.click_twice(*row_name(2), gap_ms=1000)
     e.type('n')
     e.key('Return')
     e.wait_log(r"^animator: n: Blender's sidebar", 'the editor to take `n` as its key')
     check(not re.search(r"renamed 'head'", e.stdout()), 'two clicks a second apart renamed the head')
     # A double-click on the left shoulder joint's row: renamed.
-    x, y = row_name(3)
-    e.xdo('mousemove', '--window', e.window, x, y)
-    time.sleep(0.2)
-    e.xdo('click', '--repeat', 2, '--delay', 80, 1)
-    e.sent += 4
-    e.settle()
+    e.click_twice(*row_name(3))
     e.type('hinge')
     e.key('Return')
     e.wait_log(r"^animator: renamed 'left_shoulder' to 'hinge'$", 'the rename said')

@@ -471,6 +471,17 @@ class Editor:
         if settle:
             self.settle()
 
+    def click_twice(self, x, y, gap_ms=80):
+        """Moves there and, once the editor has seen the pointer arrive, clicks the left button
+        twice, `gap_ms` apart; returns once the editor has handled both clicks."""
+        # Two moves: at least one changes the cursor's place, so the editor sees a move.
+        self.xdo('mousemove', '--window', self.window, x, y + 1)
+        self.xdo('mousemove', '--window', self.window, x, y)
+        self.settle(moved=True)
+        self.xdo('click', '--repeat', 2, '--delay', gap_ms, 1)
+        self.sent += 4
+        self.settle()
+
     def drag(self, start, end, button=3, steps=10, settle=True):
         self.xdo('mousemove', '--window', self.window, *start)
         time.sleep(0.15)
