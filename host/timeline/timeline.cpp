@@ -91,6 +91,7 @@ glm::dquat orientation_at(const RotationSegment &s, double t) {
         return glm::normalize(q * glm::conjugate(s.principal));
     }
     const glm::dquat q0(s.q0.w, s.q0.x, s.q0.y, s.q0.z);
+    if (s.hinge) return glm::normalize(glm::angleAxis(s.hinge->angle(t) - s.hinge->angle(s.t0), s.axis) * q0);
     const glm::dvec3 w(s.w.x, s.w.y, s.w.z);
     if (s.alpha != glm::dvec3(0.0)) return ani::spun_up(glm::normalize(q0), w, s.alpha, t - s.t0);
     const double speed = glm::length(w);
@@ -104,6 +105,11 @@ glm::dvec3 angular_velocity_at(const RotationSegment &s, double t) {
         glm::dvec3 w;
         s.free->evaluate(t, q, w);
         return w;
+    }
+    if (s.hinge) {
+        double angle, rate;
+        s.hinge->evaluate(t, angle, rate);
+        return rate * s.axis;
     }
     return glm::dvec3(s.w.x, s.w.y, s.w.z) + (t - s.t0) * s.alpha;
 }
@@ -320,6 +326,29 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         r.q0 = s->q0;
         r.w = s->w0;
         r.alpha = glm::dvec3(s->alpha.x, s->alpha.y, s->alpha.z);
+        (*ctx->rotations)[s->model].push_back(std::move(r));
+    };
+    sink.hinge = [](void *c, const ani_hinge_segment *s) {
+        auto *ctx = static_cast<BakeContext *>(c);
+        if (s->model >= ctx->rotations->size() || !ctx->refused.empty()) return;
+        std::string why = ani::Pendulum::refusal(s->omega2, s->angle0, s->rate0);
+        const double numbers[] = {s->t0, s->t1, s->q0.w, s->q0.x, s->q0.y, s->q0.z, s->axis.x, s->axis.y, s->axis.z,
+                                  s->pivot.x, s->pivot.y, s->pivot.z};
+        if (why.empty() && !all_finite(numbers)) why = "a time, the orientation, the axis or the pivot is not finite";
+        const glm::dquat q0(s->q0.w, s->q0.x, s->q0.y, s->q0.z);
+        const glm::dvec3 axis(s->axis.x, s->axis.y, s->axis.z);
+        if (why.empty() && glm::length(q0) == 0.0) why = "the orientation is zero";
+        if (why.empty() && std::abs(glm::length(axis) - 1.0) > 1e-9) why = "the axis is not a unit vector";
+        if (ctx->refuse(s->model, "hinge", s->t0, why)) return;
+        RotationSegment r;
+        r.model = s->model;
+        r.t0 = s->t0;
+        r.t1 = s->t1;
+        r.q0 = s->q0;
+        r.w = {s->rate0 * axis.x, s->rate0 * axis.y, s->rate0 * axis.z};
+        r.axis = axis;
+        r.pivot = glm::dvec3(s->pivot.x, s->pivot.y, s->pivot.z);
+        r.hinge = std::make_shared<const ani::Pendulum>(s->omega2, s->angle0, s->rate0, s->t0);
         (*ctx->rotations)[s->model].push_back(std::move(r));
     };
     sink.overlap = [](void *c, const ani_overlap *o) {

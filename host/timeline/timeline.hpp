@@ -9,6 +9,7 @@
 #include "timeline/keyed_motion.hpp"
 
 #include <animator/free_rotation.hpp>
+#include <animator/pendulum.hpp>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -49,6 +50,10 @@ struct RotationSegment : ani_rotation_segment {
     glm::dvec3 pivot{0.0};
     // A spin-up segment's angular acceleration (ani_spin_up_segment; `w` is then w0).
     glm::dvec3 alpha{0.0};
+    // A hinge segment's pendulum and the line's direction (ani_hinge_segment: the model turns
+    // by psi(t) - psi(t0) about `axis` after q0, about `pivot`).
+    std::shared_ptr<const ani::Pendulum> hinge;
+    glm::dvec3 axis{0.0};
 };
 
 // The world orientation and angular velocity (rad/s, world axes) of a rotation segment at t.

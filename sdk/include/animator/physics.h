@@ -153,6 +153,25 @@ typedef struct ani_spin_up_segment {
     ani_vec3 alpha; /* angular acceleration, radians per second squared, world frame */
 } ani_spin_up_segment;
 
+/* Since ABI 1.6: a model's orientation over [t0, t1] while it turns about a fixed line under
+ * gravity (a box tipping over the edge it stands on): the angle psi of its centre of mass about
+ * that line obeys the pendulum psi'' = -omega2 sin psi, from angle0 and rate0 at t0, in the closed
+ * form of animator/pendulum.hpp (ani::Pendulum(omega2, angle0, rate0, t0)), and the model's
+ * orientation at t is q(t) = turn(axis, psi(t) - angle0) q0; its angular velocity psi'(t) axis. The model turns about
+ * `pivot`, a point of the line, in its own frame as scaled; while such a segment covers t, the
+ * model's motion segment gives where that point is (it stands still: v0 = a = 0) and its origin is
+ * there minus R(t) pivot, as for a free-rotation segment. */
+typedef struct ani_hinge_segment {
+    uint32_t model;
+    double t0, t1;  /* seconds */
+    ani_quat q0;    /* unit; world orientation of the model at t0 */
+    ani_vec3 axis;  /* unit, world: the direction of the line it turns about */
+    double angle0;  /* psi at t0, radians (0: its centre of mass straight below the line) */
+    double rate0;   /* psi' at t0, rad/s, right-handed about axis */
+    double omega2;  /* > 0, 1/s^2: m g r / I about the line, g across it, r its centre's distance */
+    ani_vec3 pivot; /* the point of the line it turns about, in the model's own frame as scaled */
+} ani_hinge_segment;
+
 /* Since ABI 1.2: two models found overlapping when they start to interact (at the start of a
  * bake, when a model becomes free inside another, or when its keys take it back inside one).
  * The backend treats them as touching (docs/physics.md, "Models that start overlapping") and
@@ -192,6 +211,11 @@ typedef struct ani_bake_sink {
      * sets this field, possibly to NULL): the spin-up segments of models the backend turns, in
      * time order with their other rotation segments. The host refuses one that is not finite. */
     void (*spin_up)(void *context, const ani_spin_up_segment *segment);
+    /* Since ABI 1.6 (a backend built for 1.6 runs only in a host of 1.6 or newer, which always
+     * sets this field, possibly to NULL): the hinge segments of models the backend tips over, in
+     * time order with their other rotation segments. The host refuses one that is not finite,
+     * whose axis is not unit or whose omega2 is not positive (ani::Pendulum::refusal). */
+    void (*hinge)(void *context, const ani_hinge_segment *segment);
 } ani_bake_sink;
 
 typedef struct ani_physics_api {
