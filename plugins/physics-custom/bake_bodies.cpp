@@ -332,8 +332,9 @@ Pose EventBake::pose(const Body &b, double t) const {
     } else {
         p.center = b.path.at(t - b.t0);
         p.velocity = b.path.velocity(t - b.t0);
-        if (b.turning() && b.pivot != glm::dvec3(0.0)) { // the origin, from the centre of mass
-            const glm::dvec3 arm = b.spin.at(t) * b.pivot;
+        const glm::dvec3 pivot = b.hinge ? b.hinge->pivot : b.pivot; // what `path` follows
+        if (b.turning() && pivot != glm::dvec3(0.0)) { // the origin, from the centre of mass
+            const glm::dvec3 arm = b.spin.at(t) * pivot;
             p.center -= arm;
             p.velocity -= glm::cross(b.spin.rate(t), arm);
         }
@@ -397,7 +398,8 @@ std::vector<glm::dvec3> EventBake::placed_vertices(const Body &b, double t) cons
     if (b.shape) return b.shape->vertices;
     const glm::dmat3 turn = glm::dmat3(glm::mat3_cast(b.spin.at(t)));
     std::vector<glm::dvec3> out;
-    for (const glm::dvec3 &v : b.turning_vertices) out.push_back(turn * v);
+    for (const glm::dvec3 &v : b.hinge ? b.hinge->vertices : b.turning_vertices)
+        out.push_back(turn * v);
     return out;
 }
 
@@ -469,7 +471,7 @@ void EventBake::emit_spin(const Body &b, double t) {
         throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
                                                name_of(scene_->models[b.model]) +
                                                "' would turn to a value that is not finite");
-    // What the three kinds of segment share: the model, the span and the orientation at its start.
+    // What the four kinds of segment share: the model, the span and the orientation at its start.
     auto segment = [&](auto s) {
         s.model = b.model;
         s.t0 = from;
@@ -477,7 +479,18 @@ void EventBake::emit_spin(const Body &b, double t) {
         s.q0 = ani_quat{q.w, q.x, q.y, q.z};
         return s;
     };
-    if (b.spin.alpha != glm::dvec3(0.0)) { // friction turns it on its support
+    if (b.spin.hinge) { // tipping over an edge
+        if (!sink_->hinge) return;
+        ani_hinge_segment s = segment(ani_hinge_segment{});
+        s.axis = ani(b.spin.axis);
+        double angle, rate;
+        b.spin.hinge->evaluate(from, angle, rate);
+        s.angle0 = angle;
+        s.rate0 = rate;
+        s.omega2 = b.spin.hinge->omega2();
+        s.pivot = ani(b.hinge ? b.hinge->pivot : b.pivot);
+        sink_->hinge(sink_->context, &s);
+    } else if (b.spin.alpha != glm::dvec3(0.0)) { // friction turns it on its support
         if (!sink_->spin_up) return;
         ani_spin_up_segment s = segment(ani_spin_up_segment{});
         s.w0 = ani(w);

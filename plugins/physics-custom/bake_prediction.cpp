@@ -46,7 +46,7 @@ double EventBake::point_speed(const Body &b, double t, double dt) const {
     if (b.free_sphere()) return glm::length(b.path.velocity(t - b.t0)) + glm::length(b.path.a) * dt;
     if (b.turning()) // its centre's speed, and |w| times its reach from its centre of mass
         return glm::length(b.path.velocity(t - b.t0)) + glm::length(b.path.a) * dt +
-               b.spin.rate_bound() * b.turning_reach;
+               b.spin.rate_bound() * b.turning_reach_now();
     const double h = std::max(1e-6, dt);
     const Pose p = pose(b, t), q = pose(b, t + h);
     const double reach = b.sphere ? 0.0 : b.reach;
@@ -373,6 +373,11 @@ void EventBake::predict_obstacles(int i, double now, double limit, Predicted &ne
         if (b.turning()) {
             // Resting or sliding on it without turning: it leaves it by predict_leave.
             if (b.support == static_cast<int>(o) && b.spin.w == glm::dvec3(0.0)) continue;
+            if (b.hinge && b.hinge->support == static_cast<int>(o)) { // tipping over its edge
+                predict_hinge(b, now, next);
+                if (next.kind == EventKind::kObstacle && next.t - now < limit) limit = next.t - now;
+                continue;
+            }
             ++tested;
             predict_turning_obstacle(i, o, now, limit, next);
             if (next.kind == EventKind::kObstacle && next.t - now < limit) limit = next.t - now;
@@ -512,7 +517,7 @@ TurningPath EventBake::turning_path(const Body &b, double now) const {
     path.a = b.path.a;
     path.q0 = b.spin.at(now);
     path.w = b.spin.w;
-    if (b.spin.torque_free()) { // its angular velocity changes: bounded over all time
+    if (b.spin.torque_free() || b.spin.hinge) { // w changes: bounded over all time
         const Spin spin = b.spin;
         path.turn = [spin, now](double t) { return spin.at(now + t); };
         path.turn_rate = [spin, now](double t) { return spin.rate(now + t); };
@@ -524,8 +529,9 @@ TurningPath EventBake::turning_path(const Body &b, double now) const {
 
 TurningMesh EventBake::turning_mesh(const Body &b) const {
     const ani_mesh_view &mesh = mesh_of(b);
-    return {b.turning_vertices.data(),
-            b.turning_vertices.size(),
+    const std::vector<glm::dvec3> &vertices = b.hinge ? b.hinge->vertices : b.turning_vertices;
+    return {vertices.data(),
+            vertices.size(),
             mesh.triangles,
             mesh.triangle_count,
             b.edges.data(),
@@ -545,7 +551,7 @@ void EventBake::predict_turning_obstacle(int i, size_t o, double now, double lim
     // Broad phase: the centre cannot come nearer the obstacle's bounding sphere than it is
     // by more than it travels.
     const double travel = glm::length(path.v) * limit + 0.5 * glm::length(path.a) * limit * limit;
-    if (glm::length(path.c0 - ob.center) - b.turning_reach - ob.radius > travel) return;
+    if (glm::length(path.c0 - ob.center) - b.turning_reach_now() - ob.radius > travel) return;
     const TurningMesh mesh = turning_mesh(b);
     // Of a larger obstacle (a staircase), only the triangles it can reach within a window in
     // which it travels no further than its own size: each step of the advancement tests every
@@ -559,14 +565,14 @@ void EventBake::predict_turning_obstacle(int i, size_t o, double now, double lim
     std::vector<uint32_t> near;
     if (ob.boxes.size() > 4) {
         const double speed = glm::length(path.v), accel = glm::length(path.a),
-                     size = b.turning_reach;
+                     size = b.turning_reach_now();
         if (travel > size) // speed w + accel w^2 / 2 = size
             window = accel > 0.0
                          ? 2.0 * size / (speed + std::sqrt(speed * speed + 2.0 * accel * size))
                          : size / speed;
         Box reach = swept_box(Path{path.c0, path.v, path.a}, window);
-        reach.lo -= glm::dvec3(b.turning_reach + 1e-6);
-        reach.hi += glm::dvec3(b.turning_reach + 1e-6);
+        reach.lo -= glm::dvec3(b.turning_reach_now() + 1e-6);
+        reach.hi += glm::dvec3(b.turning_reach_now() + 1e-6);
         for (size_t k = 0; k < ob.boxes.size(); ++k)
             if (reach.overlaps(ob.boxes[k]))
                 near.insert(near.end(), ob.shape->triangles[k].begin(),

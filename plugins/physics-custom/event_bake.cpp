@@ -98,6 +98,11 @@ void EventBake::advance_to_end() {
 
 void EventBake::handle(int i, const Predicted &event, double now) {
     Body &b = bodies_[static_cast<size_t>(i)];
+    // A body tipping over an edge meets anything, or its hinge ends: it turns freely from here,
+    // and the response sees it as any other turning body (bake_hinge.cpp).
+    if (b.hinge && event.kind != EventKind::kRecheck && event.kind != EventKind::kRelease &&
+        event.kind != EventKind::kNone)
+        unhinge(b, now);
     switch (event.kind) {
     case EventKind::kNone:
         break;
@@ -142,6 +147,7 @@ void EventBake::handle(int i, const Predicted &event, double now) {
             break;
         }
         if (event.contact.normal == glm::dvec3(0.0)) break; // undecided: look again
+        unhinge(o, now);
         if (grazing(point_velocity(b, event.contact.point, now) -
                         point_velocity(o, event.contact.point, now),
                     event.contact.normal)) {
@@ -176,6 +182,8 @@ void EventBake::handle(int i, const Predicted &event, double now) {
         break;
     case EventKind::kFriction:
         friction_changes(b, now, event.other == 1);
+        break;
+    case EventKind::kHinge: // unhinged above
         break;
     case EventKind::kSettle: // the Zeno bounces' accumulation time: resting from here
         rebase(b, now);
@@ -214,6 +222,7 @@ void EventBake::report_counts() {
         {"conservative advancements", count_.advancements},
         {"releases from keys", count_.releases},
         {"mesh feature tests", count_.mesh_tests},
+        {"tips about an edge", count_.hinges},
     };
     // Each slice reports its own work: the host adds them up.
     for (size_t k = 0; k < std::size(counts); ++k) {

@@ -60,6 +60,22 @@ inline const char *name_of(const ani_physics_model &m) {
     return m.desc && m.desc->name ? m.desc->name : "?";
 }
 
+// A turning model tipping over an edge it stands on, on a face of a static model (bake_hinge.cpp):
+// it turns about the fixed line through `point` along its spin's axis as the pendulum says, held
+// there by the contact forces its motion needs, until a vertex lands on the face (`landing`) or
+// those forces fail first (`ends`: the edge would lift off or slip).
+struct Hinge {
+    int support = -1;       // the static model (its obstacle's index)
+    glm::dvec3 point{0.0};  // the foot of its centre of mass on the line, world: still
+    glm::dvec3 pivot{0.0};  // that point in the model's own frame as scaled (its segments')
+    glm::dvec3 normal{0.0}; // the face's unit normal
+    std::vector<glm::dvec3> vertices; // its turning_vertices relative to `point`, not its centre
+    double reach = 0.0;               // the farthest of them from `point`
+    double landing = kNever;
+    std::vector<glm::dvec3> landing_points; // world: every vertex on the face then
+    double ends = kNever;
+};
+
 // A model that takes part in collisions and moves: a sphere (Dynamics or Gravity on), or any
 // model with a mesh while its keys drive it (a moving wall). Over the bake a body is keyed (its
 // keys move it), free (a closed-form segment), or waiting (keyed, but with nothing to collide).
@@ -127,6 +143,9 @@ struct Body {
     // it turns, `path` is that point's and its vertices are relative to it.
     glm::dvec3 pivot{0.0};
     glm::dmat3 scale{1.0};
+    // Tipping over an edge (bake_hinge.cpp): while set, `path` is its hinge point's (still) and
+    // its spin the hinge's.
+    std::shared_ptr<const Hinge> hinge;
 
     bool keyed() const { return mode == Mode::kKeyed; }
     bool free_sphere() const { return sphere && mode == Mode::kFree; }
@@ -136,8 +155,10 @@ struct Body {
         return mode == Mode::kFree &&
                (motion == ANI_MOTION_REST ||
                 (path.v == glm::dvec3(0.0) && path.a == glm::dvec3(0.0))) &&
-               (!turning() || spin.w == glm::dvec3(0.0));
+               (!turning() || spin.w == glm::dvec3(0.0)) && !hinge;
     }
+    // The farthest any of its vertices is from the point its path follows.
+    double turning_reach_now() const { return hinge ? hinge->reach : turning_reach; }
 };
 
 // The triangles of a static model, in world space, with their bounding sphere.
@@ -172,7 +193,8 @@ enum class EventKind {
     kRecheck,
     kLeave,
     kSettle,
-    kFriction // sliding on its support: it stops, or its friction is aimed again
+    kFriction, // sliding on its support: it stops, or its friction is aimed again
+    kHinge     // tipping over an edge, the contact forces it needs fail: it turns freely
 };
 struct Predicted {
     double t = kNever;
@@ -295,6 +317,13 @@ class EventBake {
     void rebase(Body &b, double t);
     void restart_spin(Body &b, double t);
     std::optional<TurningShape> check_turning(uint32_t i, bool sphere, double t);
+    // Tipping over an edge (bake_hinge.cpp).
+    bool try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v, const glm::dvec3 &w,
+                   double t);
+    void unhinge(Body &b, double t);
+    void predict_hinge(const Body &b, double now, Predicted &next) const;
+    bool on_flat_region(const Obstacle &o, const glm::dvec3 &n, double d,
+                        const glm::dvec3 &x) const;
     TurningShape turning_shape(uint32_t i, double t) const;
     void set_turning(Body &b, TurningShape shape);
 
@@ -442,11 +471,12 @@ class EventBake {
     OverlapMemory &memory_;                  // overlaps found by the earlier slices of the bake
     struct {
         std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0,
-                    collisions = 0, advancements = 0, releases = 0, mesh_tests = 0;
+                    collisions = 0, advancements = 0, releases = 0, mesh_tests = 0,
+                    hinges = 0;
     } count_;
     std::size_t reports_ = 0;
     std::size_t sleepers_ = 0;        // bodies asleep on others
-    std::array<double, 9> counted_{}; // the counts reported by the earlier slices
+    std::array<double, 10> counted_{}; // the counts reported by the earlier slices
     std::vector<bool> is_body_;       // per model: a body (the others are reported each slice)
     double horizon_ = 0.0;            // how far predictions look
     ScenePrint fingerprint_;          // the scene the bake goes on with

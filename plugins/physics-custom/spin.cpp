@@ -14,11 +14,27 @@ void Spin::start(double t, const glm::dquat &q, const glm::dvec3 &rate) {
     w = rate;
     alpha = glm::dvec3(0.0);
     free.reset();
+    hinge.reset();
     if (moments.x > 0.0)
         free = std::make_shared<const ani::FreeRotation>(moments, q0 * principal, w, t0);
 }
 
+void Spin::hinge_on(double t, const glm::dquat &q, const glm::dvec3 &unit_axis,
+                    std::shared_ptr<const ani::Pendulum> p) {
+    start(t, q, glm::dvec3(0.0));
+    free.reset();
+    axis = unit_axis;
+    hinge = std::move(p);
+    hinge_angle0 = hinge->angle(t);
+    w = rate(t);
+}
+
 glm::dvec3 Spin::rate(double t) const {
+    if (hinge) {
+        double angle, rate;
+        hinge->evaluate(t, angle, rate);
+        return rate * axis;
+    }
     if (!torque_free()) return w + (t - t0) * alpha;
     glm::dquat q;
     glm::dvec3 rate;
@@ -27,6 +43,7 @@ glm::dvec3 Spin::rate(double t) const {
 }
 
 double Spin::rate_bound() const {
+    if (hinge) return (1.0 + 1e-12) * hinge->max_rate();
     const double speed = glm::length(w);
     if (!torque_free()) return speed;
     const glm::dvec3 body = glm::conjugate(q0 * principal) * w;
@@ -35,6 +52,7 @@ double Spin::rate_bound() const {
 }
 
 double Spin::rate_change_bound() const {
+    if (hinge) return (1.0 + 1e-12) * hinge->omega2(); // |psi''| = w^2 |sin psi|, about a fixed axis
     if (!torque_free()) return 0.0;
     const glm::dvec3 body = glm::conjugate(q0 * principal) * w;
     return (1.0 + 1e-12) * glm::length(moments * body) * rate_bound() / moments.x;
@@ -49,6 +67,7 @@ glm::dmat3 Spin::inverse_inertia(double t) const {
 }
 
 glm::dquat Spin::at(double t) const {
+    if (hinge) return glm::normalize(glm::angleAxis(hinge->angle(t) - hinge_angle0, axis) * q0);
     if (torque_free()) {
         glm::dquat q;
         glm::dvec3 rate;

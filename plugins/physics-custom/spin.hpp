@@ -6,6 +6,7 @@
 #pragma once
 
 #include <animator/free_rotation.hpp>
+#include <animator/pendulum.hpp>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
@@ -28,9 +29,18 @@ struct Spin {
     glm::dvec3 moments{0.0};
     glm::dquat principal{1.0, 0.0, 0.0, 0.0};
     std::shared_ptr<const ani::FreeRotation> free;
+    // Tipping over an edge (bake_hinge.cpp): it turns about the fixed world axis `axis` as the
+    // pendulum says, q(t) = turn(axis, angle(t) - angle(t0)) q0 (reported as hinge segments,
+    // ABI 1.6). start() clears it; hinge_on() sets it.
+    std::shared_ptr<const ani::Pendulum> hinge;
+    glm::dvec3 axis{0.0};
+    double hinge_angle0 = 0.0; // the pendulum's angle at t0
 
     // Turns from orientation q at angular velocity w at time t.
     void start(double t, const glm::dquat &q, const glm::dvec3 &w);
+    // Turns from orientation q at time t about the unit axis as the pendulum p says.
+    void hinge_on(double t, const glm::dquat &q, const glm::dvec3 &unit_axis,
+                  std::shared_ptr<const ani::Pendulum> p);
     glm::dquat at(double t) const;
     glm::dvec3 rate(double t) const; // the angular velocity at t
     // Whether its angular velocity changes as it turns (reported as free-rotation segments).

@@ -1,0 +1,230 @@
+// The event-driven bake's tipping (physics.md, "Tipping"): a turning model that stands on an edge
+// of a face of a static model, its centre of mass not over that edge, turns about it as an
+// upside-down pendulum, in closed form (animator/pendulum.hpp), until a vertex lands on the face,
+// or until the contact forces that motion needs would pull the edge down or exceed friction
+// (then it turns freely, and microcollisions take it on). Relies on bake_response.cpp, which calls
+// try_hinge where it would otherwise start microcollisions at an edge.
+#include "event_bake_detail.hpp"
+
+namespace physics_custom::bake {
+
+namespace {
+
+// The rotation of x by `angle` about the unit axis u (Rodrigues).
+glm::dvec3 turned(const glm::dvec3 &x, const glm::dvec3 &u, double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return c * x + s * glm::cross(u, x) + (1.0 - c) * glm::dot(u, x) * u;
+}
+
+} // namespace
+
+// Whether x, on the plane n . x = d, is on a triangle of the obstacle in that plane.
+bool EventBake::on_flat_region(const Obstacle &o, const glm::dvec3 &n, double d,
+                               const glm::dvec3 &x) const {
+    const double slack = 1e-9 * std::max(1.0, glm::length(x));
+    for (size_t k = 0; k < o.normals.size(); ++k) {
+        if (!(glm::dot(o.normals[k], n) > 1.0 - 1e-9) ||
+            std::abs(o.offsets[k] - d) > 1e-9 * (1.0 + std::abs(d)))
+            continue;
+        const glm::dvec3 q =
+            closest_point_on_triangle(x, o.corners[3 * k], o.corners[3 * k + 1], o.corners[3 * k + 2]);
+        if (glm::length(q - x) <= slack) return true;
+    }
+    return false;
+}
+
+// Body i, a turning model touching obstacle o's face (normal n) at time t and leaving it too slowly
+// to follow its bounces (bake_response.cpp's microcollisions), with velocity v and angular velocity
+// w after the contact's impulse: when it stands on one edge of that face, level, its centre of mass
+// over the edge's span, and the edge can hold it (the impulse that makes the edge's points still
+// within the friction cone), it turns about that edge from here, its angular momentum about the
+// edge kept (a plastic contact). True when it does.
+bool EventBake::try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v,
+                          const glm::dvec3 &w, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    if (!b.turning() || b.hinge || !b.dynamics) return false;
+    const glm::dvec3 g = b.free_a;
+    const double gl = glm::length(g);
+    if (!(gl > 0.0) || !(glm::dot(g, n) < 0.0)) return false;
+    const Obstacle &ob = obstacles_[static_cast<size_t>(o)];
+    const glm::dvec3 c = b.path.at(t - b.t0);
+    const glm::dquat q = b.spin.at(t);
+    const glm::dmat3 R = glm::mat3_cast(q);
+    const double size = std::max(1.0, 2.0 * b.turning_reach);
+    std::vector<glm::dvec3> x;
+    double low = kNever;
+    for (const glm::dvec3 &tv : b.turning_vertices) {
+        x.push_back(c + R * tv);
+        low = std::min(low, glm::dot(n, x.back()));
+    }
+    // The face's plane: of the faces facing along n, the one through its lowest vertex.
+    double d = kNever;
+    for (size_t k = 0; k < ob.normals.size(); ++k)
+        if (glm::dot(ob.normals[k], n) > 1.0 - 1e-9 && std::abs(ob.offsets[k] - low) <= 1e-6 * size &&
+            (d == kNever || std::abs(ob.offsets[k] - low) < std::abs(d - low)))
+            d = ob.offsets[k];
+    if (d == kNever) return false;
+    // Its feet (settle_on's: within 1e-6 of its size of the plane) on one line, at least 1e-6 of
+    // its size long: an edge, not a corner or a face.
+    constexpr double kTipSlack = 1e-6;
+    std::vector<size_t> feet;
+    for (size_t k = 0; k < x.size(); ++k)
+        if (glm::dot(n, x[k]) - d <= kTipSlack * size) feet.push_back(k);
+    if (feet.size() < 2) return false;
+    const glm::dvec3 a = x[feet[0]];
+    glm::dvec3 e = a;
+    for (size_t k : feet)
+        if (glm::length(x[k] - a) > glm::length(e - a)) e = x[k];
+    const double length = glm::length(e - a);
+    if (!(length > kTipSlack * size)) return false;
+    const glm::dvec3 u = (e - a) / length;
+    for (size_t k : feet) {
+        const glm::dvec3 off = x[k] - a;
+        if (glm::length(off - glm::dot(off, u) * u) > 1e-9 * size) return false; // on a face
+        if (!on_flat_region(ob, n, d, x[k] - (glm::dot(n, x[k]) - d) * n)) return false;
+    }
+    // Level, so that gravity turns it about the edge alone; its centre over the edge's span.
+    if (std::abs(glm::dot(u, g)) > 1e-9 * gl) return false;
+    const double s = glm::dot(c - a, u);
+    if (!(s > 1e-9 * length && s < (1.0 - 1e-9) * length)) return false;
+    const glm::dvec3 P = a + s * u, r0 = c - P;
+    const double rho = glm::length(r0);
+    if (!(rho > 1e-9 * size)) return false;
+    // About the edge: the moment of inertia, the edge a principal direction (no wobble that would
+    // need a torque across it), and the angular momentum it keeps.
+    const double m = collision_mass(b);
+    const glm::dmat3 I = b.spin.moments.x > 0.0 ? glm::inverse(b.spin.inverse_inertia(t))
+                                                : glm::dmat3(1.0 / b.inv_inertia);
+    const double Iu = glm::dot(u, I * u);
+    if (glm::length(I * u - Iu * u) > 1e-9 * Iu) return false;
+    const double Ih = Iu + m * rho * rho;
+    const double rate0 = glm::dot(u, I * w + m * glm::cross(r0, v)) / Ih;
+    // The impulse that makes the edge still: within the friction cone, and pushing.
+    const Material mo = material_of(*scene_->models[ob.model].desc);
+    const double mu = combined_friction(b.material.friction, mo.friction);
+    const glm::dvec3 J = m * (rate0 * glm::cross(u, r0) - v);
+    const double Jn = glm::dot(J, n), tiny = 1e-12 * m * std::max(1.0, glm::length(v));
+    if (Jn < -tiny || glm::length(J - Jn * n) > mu * Jn + tiny) return false;
+    // The pendulum: psi from straight down (g) about u, psi'' = -w^2 sin psi, w^2 = m g rho / Ih.
+    const glm::dvec3 down = g / gl, side = glm::cross(u, down);
+    const double psi0 = std::atan2(glm::dot(r0, side), glm::dot(r0, down));
+    auto pendulum = std::make_shared<const ani::Pendulum>(m * gl * rho / Ih, psi0, rate0, t);
+    auto h = std::make_shared<Hinge>();
+    h->support = o;
+    h->point = P;
+    h->normal = n;
+    h->pivot = b.pivot + glm::transpose(R) * (P - c);
+    for (const glm::dvec3 &tv : b.turning_vertices) {
+        h->vertices.push_back(tv - (h->pivot - b.pivot));
+        h->reach = std::max(h->reach, glm::length(h->vertices.back()));
+    }
+    // Nothing of the obstacle above the face's plane within its reach: the landing on the face is
+    // then its first contact with the obstacle.
+    for (const glm::dvec3 &corner : ob.shape->vertices)
+        if (glm::dot(n, corner) - d > 1e-9 * size && glm::length(corner - P) <= h->reach * (1.0 + 1e-9))
+            return false;
+    // The landing: the first time a vertex off the edge meets the plane, on its circle about the
+    // edge: height(delta) = H + B cos(delta) + C sin(delta) = 0 for a turn delta = psi - psi0.
+    for (size_t k = 0; k < x.size(); ++k) {
+        if (std::find(feet.begin(), feet.end(), k) != feet.end()) continue;
+        const glm::dvec3 y = x[k] - P, across = y - glm::dot(y, u) * u;
+        const double H = glm::dot(n, P) - d + glm::dot(y, u) * glm::dot(n, u),
+                     B = glm::dot(n, across), C = glm::dot(n, glm::cross(u, across)),
+                     span = std::hypot(B, C);
+        if (!(span > 0.0) || std::abs(H) > span) continue;
+        const double phase = std::atan2(C, B), half = std::acos(std::clamp(-H / span, -1.0, 1.0));
+        for (double delta : {phase - half, phase + half})
+            h->landing = std::min(h->landing, pendulum->first_time_at(psi0 + delta, t));
+    }
+    if (!(h->landing < kNever) || !(h->landing > t)) return false;
+    const double turn_at_landing = pendulum->angle(h->landing) - psi0;
+    for (size_t k = 0; k < x.size(); ++k) {
+        const glm::dvec3 at = P + turned(x[k] - P, u, turn_at_landing);
+        if (glm::dot(n, at) - d <= 1e-9 * size) {
+            if (!on_flat_region(ob, n, d, at - (glm::dot(n, at) - d) * n)) return false;
+            h->landing_points.push_back(at);
+        }
+    }
+    // The contact's point: the one farthest from the edge, the fastest to land.
+    auto off_edge = [&](const glm::dvec3 &p) { return glm::length(glm::cross(p - P, u)); };
+    std::sort(h->landing_points.begin(), h->landing_points.end(),
+              [&](const glm::dvec3 &x1, const glm::dvec3 &x2) { return off_edge(x1) > off_edge(x2); });
+    // The contact force the motion needs, R = m (a - g) with a = psi'' u x r - psi'^2 r: pushing
+    // (n . R >= 0) and within the friction cone. Checked at 256 times of the tip and, where it
+    // fails, its first failure found by bisection (the force is a trigonometric polynomial of
+    // degree 2 in psi: at most four sign changes over a turn).
+    auto holds = [&](double time) {
+        double psi, rate;
+        pendulum->evaluate(time, psi, rate);
+        const glm::dvec3 r = turned(r0, u, psi - psi0);
+        const glm::dvec3 accel = -pendulum->omega2() * std::sin(psi) * glm::cross(u, r) - rate * rate * r;
+        const glm::dvec3 F = m * (accel - g);
+        const double N = glm::dot(F, n), slack = 1e-12 * m * gl;
+        return N >= -slack && glm::length(F - N * n) <= mu * N + slack;
+    };
+    if (!holds(t)) return false;
+    constexpr int kSamples = 256;
+    double before = t;
+    for (int k = 1; k <= kSamples; ++k) {
+        const double at = t + (h->landing - t) * k / kSamples;
+        if (holds(at)) {
+            before = at;
+            continue;
+        }
+        double lo = before, hi = at;
+        while (hi - lo > 1e-15 * std::max(1.0, std::abs(hi))) {
+            const double mid = 0.5 * (lo + hi);
+            if (mid <= lo || mid >= hi) break;
+            (holds(mid) ? lo : hi) = mid;
+        }
+        h->ends = lo;
+        break;
+    }
+    if (!(h->ends > t)) return false;
+    // From here it turns about the edge: its path is the still point P's.
+    close_segment(b, t);
+    emit_spin(b, t);
+    b.t0 = t;
+    b.path = Path{P, glm::dvec3(0.0), glm::dvec3(0.0)};
+    b.motion = ANI_MOTION_FREE;
+    b.settles_at = kNever;
+    b.spin.hinge_on(t, q, u, std::move(pendulum));
+    b.hinge = std::move(h);
+    ++b.version;
+    ++count_.hinges;
+    return true;
+}
+
+// A tipping body turns freely from t on, where the hinge has put it: its centre of mass back on a
+// parabola, with the velocity and angular velocity the hinge gives it then.
+void EventBake::unhinge(Body &b, double t) {
+    if (!b.hinge) return;
+    const glm::dquat q = b.spin.at(t);
+    const glm::dvec3 w = b.spin.rate(t);
+    const glm::dvec3 arm = glm::mat3_cast(q) * (b.pivot - b.hinge->pivot); // hinge point to centre
+    close_segment(b, t);
+    emit_spin(b, t);
+    b.t0 = t;
+    b.path = Path{b.hinge->point + arm, glm::cross(w, arm), b.free_a};
+    b.spin.start(t, q, w);
+    b.hinge.reset();
+    ++b.version;
+}
+
+// A tipping body's own next event: its landing on the face, or the end of the hinge.
+void EventBake::predict_hinge(const Body &b, double now, Predicted &next) const {
+    const Hinge &h = *b.hinge;
+    if (h.landing <= h.ends) {
+        if (!(h.landing < next.t)) return;
+        Contact contact;
+        contact.t = h.landing - now;
+        contact.normal = h.normal;
+        contact.point = h.landing_points.front();
+        next = predicted(h.landing, EventKind::kObstacle, h.support, 0, contact);
+        next.points = h.landing_points;
+    } else if (h.ends < next.t) {
+        next = predicted(h.ends, EventKind::kHinge);
+    }
+}
+
+} // namespace physics_custom::bake
