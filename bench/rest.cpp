@@ -52,8 +52,9 @@ double worst(double until, const std::function<double(double)> &f) {
 // degrees at rest, at t (tests/physics/tipping_pendulum.hpp), until the face lands at 45 degrees.
 double tipped(double t) {
     const double w2 = tipping::pendulum_rate(G, 1.0), h = 1e-6, end = glm::radians(45.0);
-    double phi = glm::radians(15.0), rate = 0.0;
-    for (double s = 0.0; s + 0.5 * h < t && phi < end; s += h) tipping::step(w2, h, phi, rate);
+    double phi = glm::radians(15.0), rate = 0.0, s = 0.0;
+    for (; s + h <= t && phi < end; s += h) tipping::step(w2, h, phi, rate);
+    if (phi < end && t > s) tipping::step(w2, t - s, phi, rate); // the last piece, to t exactly
     return glm::degrees(std::min(phi, end));
 }
 
