@@ -64,6 +64,16 @@ struct BakeContext {
     }
 };
 
+// What every kind of rotation segment gives: its model, its span and its orientation at t0.
+template <class Segment> RotationSegment rotation_segment(const Segment &s) {
+    RotationSegment r;
+    r.model = s.model;
+    r.t0 = s.t0;
+    r.t1 = s.t1;
+    r.q0 = s.q0;
+    return r;
+}
+
 template <std::size_t N> bool all_finite(const double (&numbers)[N]) {
     return std::all_of(numbers, numbers + N, [](double x) { return std::isfinite(x); });
 }
@@ -299,11 +309,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         if (why.empty() && !all_finite(numbers)) why = "a time, an orientation or the pivot is not finite";
         if (why.empty() && (glm::length(q0) == 0.0 || glm::length(principal) == 0.0)) why = "an orientation is zero";
         if (ctx->refuse(s->model, "free-rotation", s->t0, why)) return;
-        RotationSegment r;
-        r.model = s->model;
-        r.t0 = s->t0;
-        r.t1 = s->t1;
-        r.q0 = s->q0;
+        RotationSegment r = rotation_segment(*s);
         r.w = s->w0;
         r.principal = glm::normalize(principal);
         r.pivot = glm::dvec3(s->pivot.x, s->pivot.y, s->pivot.z);
@@ -319,11 +325,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         const glm::dquat q0(s->q0.w, s->q0.x, s->q0.y, s->q0.z);
         if (why.empty() && glm::length(q0) == 0.0) why = "the orientation is zero";
         if (ctx->refuse(s->model, "spin-up", s->t0, why)) return;
-        RotationSegment r;
-        r.model = s->model;
-        r.t0 = s->t0;
-        r.t1 = s->t1;
-        r.q0 = s->q0;
+        RotationSegment r = rotation_segment(*s);
         r.w = s->w0;
         r.alpha = glm::dvec3(s->alpha.x, s->alpha.y, s->alpha.z);
         (*ctx->rotations)[s->model].push_back(std::move(r));
@@ -340,11 +342,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         if (why.empty() && glm::length(q0) == 0.0) why = "the orientation is zero";
         if (why.empty() && std::abs(glm::length(axis) - 1.0) > 1e-9) why = "the axis is not a unit vector";
         if (ctx->refuse(s->model, "hinge", s->t0, why)) return;
-        RotationSegment r;
-        r.model = s->model;
-        r.t0 = s->t0;
-        r.t1 = s->t1;
-        r.q0 = s->q0;
+        RotationSegment r = rotation_segment(*s);
         r.w = {s->rate0 * axis.x, s->rate0 * axis.y, s->rate0 * axis.z};
         r.axis = axis;
         r.pivot = glm::dvec3(s->pivot.x, s->pivot.y, s->pivot.z);
