@@ -135,6 +135,33 @@ std::vector<aiVector3D> smooth_normals(const aiMesh &mesh) {
 
 } // namespace
 
+std::shared_ptr<const Mesh> stand_in_mesh() {
+    static const std::shared_ptr<const Mesh> cube = [] {
+        Mesh m;
+        for (int axis = 0; axis < 3; ++axis)
+            for (double side : {-1.0, 1.0}) { // a face: 4 corners with its normal, 2 triangles
+                glm::dvec3 n(0.0), u(0.0), v(0.0);
+                n[axis] = side;
+                u[(axis + 1) % 3] = 1.0;
+                v[(axis + 2) % 3] = 1.0;
+                if (side < 0.0) std::swap(u, v); // counter-clockwise seen from outside
+                const auto base = static_cast<std::uint32_t>(m.positions.size());
+                for (int k = 0; k < 4; ++k) {
+                    const double a = (k == 1 || k == 2) ? 1.0 : -1.0, b = k >= 2 ? 1.0 : -1.0;
+                    m.positions.push_back(n + a * u + b * v);
+                    m.normals.push_back(n);
+                    m.uvs.emplace_back(0.5 * (a + 1.0), 0.5 * (b + 1.0));
+                }
+                for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.triangles.push_back(base + i);
+            }
+        m.has_uvs = true;
+        m.stand_in = true;
+        compute_bounding_sphere(m);
+        return std::make_shared<const Mesh>(std::move(m));
+    }();
+    return cube;
+}
+
 void compute_bounding_sphere(Mesh &mesh) {
     std::set<std::tuple<double, double, double>> distinct;
     for (const glm::dvec3 &p : mesh.positions) distinct.emplace(p.x, p.y, p.z);
@@ -171,8 +198,9 @@ std::vector<std::shared_ptr<const Mesh>> load_meshes(const std::vector<std::stri
         }
         const auto path = assets.resolve(ANI_ASSET_MESH, id, document);
         if (!path) {
-            warnings.push_back("mesh '" + id + "' not found (" + assets.searched(ANI_ASSET_MESH, id, document) + ")");
-            out.push_back(nullptr);
+            warnings.push_back("mesh '" + id + "' not found (" + assets.searched(ANI_ASSET_MESH, id, document) +
+                               "); shown as a stand-in cube until it is there");
+            out.push_back(stand_in_mesh());
             continue;
         }
         auto it = loaded.find(*path);

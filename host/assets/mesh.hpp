@@ -29,6 +29,9 @@ struct Mesh {
     glm::dvec3 bound_center{0.0};
     double bound_radius = 0.0;
     bool has_uvs = false;
+    // Drawn in place of a mesh that was not found (stand_in_mesh): the renderer shows it plainly
+    // as a placeholder; it collides as the cube it is.
+    bool stand_in = false;
 
     std::size_t triangle_count() const { return triangles.size() / 3; }
 };
@@ -54,8 +57,14 @@ void compute_bounding_sphere(Mesh &mesh);
 // centroid beyond 0.9 of the radius), which a tetrahedron or a cube is not.
 bool approximates_sphere(const Mesh &mesh);
 
-// Loads the meshes named by `ids` for the document at `document` (one per id, null for "" or a
-// mesh that cannot be found or read, with a warning), each file once.
+// The stand-in for a mesh that is not found: the course's unit cube, -1 to 1 on each axis (so a
+// node scaled for its mesh shows about where and how large the mesh would be), `stand_in` set.
+std::shared_ptr<const Mesh> stand_in_mesh();
+
+// Loads the meshes named by `ids` for the document at `document` (one per id, each file once):
+// null for ""; for a mesh that is not found, the stand-in, with a warning naming the mesh and
+// where it was looked for (the document keeps the id: the real mesh is used once it is there);
+// null for a mesh that cannot be read, with a warning.
 std::vector<std::shared_ptr<const Mesh>> load_meshes(const std::vector<std::string> &ids,
                                                      const class AssetPaths &assets,
                                                      const std::filesystem::path &document,

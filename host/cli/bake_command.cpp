@@ -142,7 +142,7 @@ int run_bake(const BakeOptions &o) {
         apply_params(doc, backend, o.params);
         const auto start = std::chrono::steady_clock::now();
         Timeline timeline(doc, env.plugins, o.backend);
-        load_document_meshes(timeline, env, o.file);
+        load_document_meshes(timeline, env, o.file, opened->warnings);
         ProgressBar bar;
         timeline.bake(until, [&](double f) { return bar(f); });
         const double wall =

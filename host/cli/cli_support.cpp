@@ -71,13 +71,40 @@ void apply_params(Document &doc, const std::string &backend,
     doc.set_settings(settings);
 }
 
+namespace {
+std::size_t warnings_said = 0;
+} // namespace
+
+bool &strict_mode() {
+    static bool strict = false;
+    return strict;
+}
+
+void warn(const std::string &message) {
+    std::cerr << "animator: warning: " << message << "\n";
+    ++warnings_said;
+}
+
+void count_warnings(std::size_t n) { warnings_said += n; }
+
+void stop_if_strict(const std::string &file) {
+    if (strict_mode() && warnings_said > 0)
+        throw std::runtime_error(file + ": " + std::to_string(warnings_said) +
+                                 (warnings_said == 1 ? " warning" : " warnings") +
+                                 " (said above), which --strict makes errors");
+}
+
 std::optional<OpenedDocument> open_or_report(PluginRegistry &plugins, const std::string &file) {
+    std::optional<OpenedDocument> opened;
     try {
-        return open_document(plugins, file);
+        opened = open_document(plugins, file);
     } catch (const DocumentIoError &e) {
         std::cerr << "animator: " << e.what() << "\n";
         return std::nullopt;
     }
+    count_warnings(opened->warnings.size());
+    stop_if_strict(file);
+    return opened;
 }
 
 std::optional<double> bake_end(const Document &doc, const std::string &file, double until) {
@@ -101,11 +128,12 @@ std::vector<std::string> param_names(PluginRegistry &plugins, const std::string 
 }
 
 void load_document_meshes(Timeline &timeline, const Environment &env,
-                          const std::filesystem::path &file) {
+                          const std::filesystem::path &file, const std::vector<std::string> &said) {
     std::vector<std::string> mesh_ids, warnings;
     for (const Model &m : timeline.document().models()) mesh_ids.push_back(m.mesh);
     timeline.set_meshes(load_meshes(mesh_ids, env.assets, file, warnings));
-    for (const std::string &w : warnings) std::cerr << "animator: warning: " << w << "\n";
+    for (const std::string &w : not_said_before(std::move(warnings), said)) warn(w);
+    stop_if_strict(file.string());
 }
 
 } // namespace animator::cli

@@ -15,6 +15,17 @@
 
 namespace animator::cli {
 
+// --strict (a flag of every subcommand, for scripts): the warnings a file gives (a renamed node,
+// a dropped shear, a mesh read leniently) are errors.
+bool &strict_mode();
+// Says a warning on stderr ("animator: warning: ..."), and counts it.
+void warn(const std::string &message);
+// Counts warnings said elsewhere (a reader's, which the plugins' log said).
+void count_warnings(std::size_t n);
+// With --strict, after any warning: throws std::runtime_error naming the file and the count (the
+// command stops there, exit 1, before it writes anything).
+void stop_if_strict(const std::string &file);
+
 // A CSV field, quoted when it has to be.
 std::string csv_field(const std::string &s);
 
@@ -53,8 +64,8 @@ void apply_params(Document &doc, const std::string &backend,
 std::vector<std::string> param_names(PluginRegistry &plugins, const std::string &plugin_id);
 
 // Gives the timeline the meshes of the document's models (found next to `file` too); warnings
-// go to stderr.
+// go to stderr, but for those its reader `said` already.
 void load_document_meshes(Timeline &timeline, const Environment &env,
-                          const std::filesystem::path &file);
+                          const std::filesystem::path &file, const std::vector<std::string> &said);
 
 } // namespace animator::cli

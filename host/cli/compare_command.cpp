@@ -108,7 +108,7 @@ int run_compare(const CompareOptions &o) {
         std::vector<std::unique_ptr<Timeline>> timelines;
         for (const std::string &b : backends) {
             timelines.push_back(std::make_unique<Timeline>(doc, env.plugins, b));
-            load_document_meshes(*timelines.back(), env, o.file);
+            load_document_meshes(*timelines.back(), env, o.file, opened->warnings);
             ProgressBar bar("baking with " + b);
             timelines.back()->bake(until, [&](double f) { return bar(f); });
         }

@@ -1,4 +1,5 @@
 // `animator info FILE`: a document's settings, models and keyframes, as text.
+#include "cli/cli_support.hpp"
 #include "cli/commands.hpp"
 
 #include "assets/mesh.hpp"
@@ -35,7 +36,7 @@ std::string describe_mesh(const AssetPaths &assets, const std::string &id, const
     if (auto path = assets.resolve(ANI_ASSET_MESH, id, document)) {
         try {
             const LoadedMesh loaded = load_mesh(*path);
-            for (const std::string &w : loaded.warnings) std::cerr << "animator: warning: " << w << "\n";
+            for (const std::string &w : loaded.warnings) warn(w);
             out << " (" << path->string() << ": " << loaded.mesh.triangle_count()
                 << " triangles, bounding sphere " << vec(loaded.mesh.bound_center) << " r "
                 << loaded.mesh.bound_radius << ")";
@@ -111,8 +112,10 @@ void add_info_command(CLI::App &app, std::function<int()> &run) {
             Environment env;
             try {
                 OpenedDocument opened = open_document(env.plugins, *file);
+                count_warnings(opened.warnings.size());
                 std::cout << "file: " << *file << " (read by " << opened.format_id << ")\n";
                 print_document(std::cout, opened.document, env.assets, *file);
+                stop_if_strict(*file); // after the meshes' warnings too
                 return static_cast<int>(kSuccess);
             } catch (const DocumentIoError &e) {
                 std::cerr << "animator: " << e.what() << "\n";

@@ -1,5 +1,6 @@
 // animator: the command line face of the program. The editor (`animator [edit] FILE`) and the
 // later subcommands (bake, render, compare, soundtrack) plug in here beside `plugins` and `info`.
+#include "cli/cli_support.hpp"
 #include "cli/commands.hpp"
 
 #include <iostream>
@@ -11,6 +12,10 @@ int run_cli(int argc, char **argv) {
     CLI::App app{"animator: a 3D keyframe animator in which models obey physics", "animator"};
     app.set_version_flag("--version", "animator 0.1.0");
     app.require_subcommand(0, 1);
+    // Given before or after the subcommand (which falls through to these options).
+    app.add_flag("--strict", animator::cli::strict_mode(),
+                 "treat the warnings a file gives (renamed nodes, dropped shear, meshes read leniently) as errors: exit 1");
+    app.fallthrough();
 
     std::function<int()> run;
     add_plugins_command(app, run);

@@ -180,7 +180,8 @@ int run_render(const RenderCommandOptions &o) {
         std::vector<std::string> mesh_ids, warnings;
         for (const Model &m : doc.models()) mesh_ids.push_back(m.mesh);
         const auto meshes = load_meshes(mesh_ids, env.assets, o.file, warnings);
-        for (const std::string &w : warnings) std::cerr << "animator: warning: " << w << "\n";
+        for (const std::string &w : not_said_before(std::move(warnings), opened->warnings)) warn(w);
+        stop_if_strict(o.file);
         timeline.set_meshes(meshes);
         {
             ProgressBar bar("baking");

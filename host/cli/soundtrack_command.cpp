@@ -37,7 +37,7 @@ int run_soundtrack(const SoundtrackOptions &o) {
         audio::load_document_sounds(doc, bank);
 
         Timeline timeline(doc, env.plugins, o.backend);
-        load_document_meshes(timeline, env, o.file);
+        load_document_meshes(timeline, env, o.file, opened->warnings);
         {
             ProgressBar bar("baking");
             timeline.bake(*end, [&](double f) { return bar(f); });

@@ -441,8 +441,7 @@ int run_editor(const EditorOptions &options) {
         } else if (!session.open(file, error)) {
             panels.show_error("Could not open " + file.string(), error);
         } else {
-            for (const std::string &w : session.warnings()) panels.say("warning: " + w, true);
-            panels.say("opened " + file.string());
+            panels.say(opened_message("opened " + file.string(), session.warnings()), !session.warnings().empty());
             if (!options.file.empty()) panels.files().remember(file); // Open Recent (not the demo)
         }
         // Autosave (recovery.hpp): work left unsaved by a crash or a kill is offered back.

@@ -52,9 +52,10 @@ bool EditorSession::load(const fs::path &file, const fs::path &path, std::string
     try {
         OpenedDocument opened = open_document(env_.plugins, file);
         auto timeline = std::make_unique<Timeline>(opened.document, env_.plugins);
-        std::vector<std::string> ids, warnings;
+        std::vector<std::string> ids, more, warnings = std::move(opened.warnings); // the reader's first
         for (const Model &m : opened.document.models()) ids.push_back(m.mesh);
-        auto meshes = load_meshes(ids, env_.assets, path, warnings);
+        auto meshes = load_meshes(ids, env_.assets, path, more);
+        for (std::string &w : not_said_before(std::move(more), warnings)) warnings.push_back(std::move(w));
         timeline->set_meshes(meshes);
         // Nothing can fail from here on: the new document replaces the old one whole.
         doc_ = std::move(opened.document);

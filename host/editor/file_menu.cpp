@@ -112,6 +112,14 @@ void FileMenu::request_load(EditorSession &session, const Load &load) {
     this->load(session, load);
 }
 
+std::string opened_message(const std::string &done, const std::vector<std::string> &warnings) {
+    if (warnings.empty()) return done;
+    std::string message = done + ", with " + std::to_string(warnings.size()) +
+                          (warnings.size() == 1 ? " warning: " : " warnings: ");
+    for (size_t k = 0; k < warnings.size(); ++k) message += (k ? " | " : "") + warnings[k];
+    return message;
+}
+
 void FileMenu::load(EditorSession &session, const Load &l) {
     std::string error;
     const bool ok = l.as_new ? session.new_from_scene(l.path, error) : session.open(l.path, error);
@@ -125,12 +133,14 @@ void FileMenu::load(EditorSession &session, const Load &l) {
         show_error_("Could not open " + l.path.string(), error);
         return;
     }
-    for (const std::string &w : session.warnings()) say_("warning: " + w, true);
+    const bool warned = !session.warnings().empty();
     if (l.as_new) {
-        say_("new animation from " + l.path.string() + " (Save asks where to write it)", false);
+        say_(opened_message("new animation from " + l.path.string() + " (Save asks where to write it)",
+                            session.warnings()),
+             warned);
         return;
     }
-    say_("opened " + l.path.filename().string(), false); // its folder is in Open Recent
+    say_(opened_message("opened " + l.path.filename().string(), session.warnings()), warned); // its folder is in Open Recent
     recent_.add(l.path);
     store_recent();
     opened_ = l.path;

@@ -13,8 +13,14 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace animator {
+
+// The message line after a file is opened: `done` ("opened scene.lua"), and, when reading it
+// warned (a renamed node, a dropped shear, a mesh read leniently), every warning after it: the
+// message line shows one message, so they are not said one over another.
+std::string opened_message(const std::string &done, const std::vector<std::string> &warnings);
 
 class FileMenu {
   public:

@@ -36,6 +36,19 @@ std::string known_extensions(const std::vector<const PluginInfo *> &formats, uin
 
 } // namespace
 
+std::vector<std::string> not_said_before(std::vector<std::string> more, const std::vector<std::string> &said) {
+    auto ends_with = [](const std::string &s, const std::string &end) {
+        return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
+    };
+    more.erase(std::remove_if(more.begin(), more.end(),
+                              [&](const std::string &w) {
+                                  return std::any_of(said.begin(), said.end(),
+                                                     [&](const std::string &s) { return ends_with(s, ": " + w); });
+                              }),
+               more.end());
+    return more;
+}
+
 OpenedDocument open_document(PluginRegistry &plugins, const fs::path &path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw DocumentIoError(path.string() + ": cannot open the file");
@@ -65,11 +78,17 @@ OpenedDocument open_document(PluginRegistry &plugins, const fs::path &path) {
     const auto &api = best_instance->api<ani_file_format_api>();
     const ani_document_view *view = nullptr;
     ani_status status{};
+    std::vector<std::string> warnings;
+    struct Capture { // the reader's warnings, while it reads
+        PluginRegistry &plugins;
+        ~Capture() { plugins.capture_warnings("", nullptr); }
+    } capture{plugins};
+    plugins.capture_warnings(best->id, &warnings);
     if (api.read(best_instance->handle(), path.c_str(), &view, &status) != ANI_OK || !view)
         throw DocumentIoError(status.message[0] ? std::string(status.message)
                                                 : path.string() + ": could not be read");
     try {
-        OpenedDocument opened{document_from_view(*view), best->id};
+        OpenedDocument opened{document_from_view(*view), best->id, std::move(warnings)};
         api.release(best_instance->handle(), view);
         return opened;
     } catch (const DocumentError &e) {

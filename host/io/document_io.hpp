@@ -19,7 +19,14 @@ struct DocumentIoError : std::runtime_error {
 struct OpenedDocument {
     Document document;
     std::string format_id; // the plugin that read it
+    // What it warned about while reading (a renamed node, a dropped shear), "file:line: ...", as
+    // it also said them in the log.
+    std::vector<std::string> warnings;
 };
+
+// The warnings of `more` that `said` has not said already: a reader says "file:line: W" where the
+// host, loading the same document's meshes, would say W again (a mesh not found).
+std::vector<std::string> not_said_before(std::vector<std::string> more, const std::vector<std::string> &said);
 
 // Reads `path` with the file-format plugin that is surest it reads it. Throws DocumentIoError.
 OpenedDocument open_document(PluginRegistry &plugins, const std::filesystem::path &path);

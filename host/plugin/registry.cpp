@@ -88,6 +88,12 @@ PluginRegistry::~PluginRegistry() {
         if (lib->state == Library::State::Loaded) lib->entry->deinit();
 }
 
+void PluginRegistry::capture_warnings(const std::string &plugin_id, std::vector<std::string> *into) {
+    std::lock_guard<std::mutex> lock(log_mutex_);
+    capture_id_ = plugin_id;
+    capture_ = into;
+}
+
 void PluginRegistry::host_log(const ani_host *host, ani_log_level level, const char *plugin_id,
                               const char *message) {
     if (!host || !host->host_data) return;
@@ -95,6 +101,8 @@ void PluginRegistry::host_log(const ani_host *host, ani_log_level level, const c
     std::lock_guard<std::mutex> lock(self->log_mutex_);
     if (level < ANI_LOG_DEBUG || level > ANI_LOG_ERROR) level = ANI_LOG_ERROR;
     self->log_(level, plugin_id ? plugin_id : "?", message ? message : "");
+    if (level == ANI_LOG_WARNING && self->capture_ && plugin_id && self->capture_id_ == plugin_id)
+        self->capture_->push_back(message ? message : "");
 }
 
 const void *PluginRegistry::host_get_extension(const ani_host *host, const char *extension_id) {

@@ -50,6 +50,10 @@ class PluginRegistry {
     // The executable's folder, then ANIMATOR_PLUGIN_PATH.
     static std::vector<std::filesystem::path> default_search_dirs();
 
+    // While `into` is set, the warnings plugin `plugin_id` logs are kept there too, besides the
+    // log (open_document: what a reader says about the file it reads). nullptr stops it.
+    void capture_warnings(const std::string &plugin_id, std::vector<std::string> *into);
+
     // Opens every library found (for `animator plugins`).
     void load_all();
     // The plugin with this id, opening only the library that provides it; null if none does.
@@ -82,6 +86,8 @@ class PluginRegistry {
     std::map<std::string, const void *> extensions_;
     LogSink log_;
     std::mutex log_mutex_;
+    std::string capture_id_;                      // capture_warnings()
+    std::vector<std::string> *capture_ = nullptr;
     ani_host host_{};
 };
 

@@ -166,6 +166,9 @@ void Renderer::draw_skybox() {
 
 void Renderer::draw_model(int m, bool selected, uint32_t without) {
     const Model &model = models_[static_cast<size_t>(m)];
+    // A stand-in for a mesh not found: plain magenta, as a placeholder reads in any 3D program.
+    const bool stand_in = meshes_[static_cast<size_t>(m)] && meshes_[static_cast<size_t>(m)]->stand_in;
+    if (stand_in) without |= ANI_SHADE_TEXTURE | ANI_SHADE_REFLECTION | ANI_SHADE_REFRACTION;
     const GpuTexture *image = model.texture.empty() ? nullptr : texture(model.texture);
     const uint32_t features =
         model_features(model, image != nullptr, settings_.cel_shading, selected) & ~without;
@@ -196,6 +199,11 @@ void Renderer::draw_model(int m, bool selected, uint32_t without) {
     u.transparency = static_cast<float>(model.transparency);
     u.refractive_index = static_cast<float>(model.refractive_index);
     u.selected = selected;
+    if (stand_in) {
+        u.kd = glm::vec3(1.0f, 0.0f, 1.0f);
+        u.ks = glm::vec3(0.0f);
+        u.tint = u.reflectivity = u.transparency = 0.0f;
+    }
     apply_uniforms(program, *programs_, frame_uniforms_, &u);
     gpu_meshes_[static_cast<size_t>(m)]->draw();
 }

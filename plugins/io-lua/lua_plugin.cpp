@@ -114,8 +114,8 @@ ani_status_code lua_read(void *instance, const char *path, const ani_document_vi
         const bool ran = run_in_process() ? lua_scene::run_scene(file, text, scene, error)
                                           : run_scene_isolated(file, text, scene, error);
         auto doc = std::make_unique<ani::OwnedDocument>();
-        if (!ran || !lua_scene::build_document(scene, file, self->host, *doc, error))
-            throw ani::Failure(ANI_ERR_PARSE, error);
+        if (!ran) throw ani::Failure(ANI_ERR_PARSE, error);
+        lua_scene::build_document(scene, file, self->host, *doc);
         *document = &doc->view;
         self->read_documents[&doc->view] = std::move(doc);
     });

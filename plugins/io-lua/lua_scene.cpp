@@ -6,7 +6,9 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtx/euler_angles.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <deque>
 #include <map>
 #include <optional>
@@ -60,6 +62,13 @@ struct Scene {
     std::deque<Node> nodes;
     std::deque<Material> materials;
     std::map<std::string, int> by_name;
+    // Names used twice, or empty (the course's code allows both): each node renamed to be unique,
+    // with its line, as written and as renamed.
+    struct Rename {
+        int line;
+        std::string from, to;
+    };
+    std::vector<Rename> renames;
     std::size_t data_bytes = 0;
     std::optional<int> settings_line, camera_line;
     SceneResult settings; // the settings and camera; its models are filled at the end
@@ -98,17 +107,35 @@ std::string checked_string(lua_State *L, int arg) {
     return std::string(s, size);
 }
 
+// A name no node has yet, Blender's way: the name itself when free, otherwise its stem (the name
+// without a ".NNN" ending) with the first free ending .001, .002, ...; an empty name is "node".
+std::string unique_name(const Scene &scene, const std::string &wanted) {
+    if (!wanted.empty() && !scene.by_name.count(wanted)) return wanted;
+    std::string stem = wanted.empty() ? "node" : wanted;
+    const std::size_t dot = stem.size() >= 4 ? stem.size() - 4 : std::string::npos;
+    if (dot != std::string::npos && stem[dot] == '.' && dot > 0 &&
+        std::all_of(stem.begin() + static_cast<std::ptrdiff_t>(dot) + 1, stem.end(),
+                    [](char c) { return c >= '0' && c <= '9'; }))
+        stem.resize(dot);
+    if (wanted.empty() && !scene.by_name.count(stem)) return stem;
+    for (int k = 1;; ++k) {
+        char ending[16];
+        std::snprintf(ending, sizeof ending, ".%03d", k);
+        if (!scene.by_name.count(stem + ending)) return stem + ending;
+    }
+}
+
 int push_node(lua_State *L, Node node) {
-    if (node.name.empty()) return luaL_error(L, "a node needs a non-empty name");
-    // The name is kept twice (in the node and as the key of by_name), with a map entry's overhead.
-    charge(L, sizeof(Node) + 2 * node.name.size() + node.mesh.size() + 64);
+    // The name is kept twice (in the node and as the key of by_name), with a map entry's overhead;
+    // a renamed node's first name too.
+    charge(L, sizeof(Node) + 3 * node.name.size() + node.mesh.size() + 96);
     node.line = current_line(L);
     Scene &scene = scene_of(L);
     const int index = static_cast<int>(scene.nodes.size());
-    const auto [it, fresh] = scene.by_name.emplace(node.name, index);
-    if (!fresh)
-        return luaL_error(L, "a node named '%s' already exists (made on line %d)", node.name.c_str(),
-                          scene.nodes[static_cast<size_t>(it->second)].line);
+    const std::string name = unique_name(scene, node.name);
+    if (name != node.name) scene.renames.push_back({node.line, node.name, name});
+    node.name = name;
+    scene.by_name.emplace(node.name, index);
     scene.nodes.push_back(std::move(node));
     // The userdata's allocation may run finalizers that make nodes too: `index` is already fixed.
     *static_cast<int *>(lua_newuserdatauv(L, sizeof(int), 0)) = index;
@@ -592,6 +619,16 @@ bool run_scene(const std::string &path, const std::string &text, SceneResult &ou
     out = std::move(scene.settings);
     out.models.clear();
     out.warnings.clear();
+    if (!scene.renames.empty()) { // one warning for all of them
+        std::string w = path + ":" + std::to_string(scene.renames.front().line) + ": " +
+                        std::to_string(scene.renames.size()) +
+                        (scene.renames.size() == 1 ? " node name was" : " node names were") +
+                        " used before or empty, renamed to be unique:";
+        for (const Scene::Rename &r : scene.renames)
+            w += " line " + std::to_string(r.line) + " '" + r.from + "' -> '" + r.to + "';";
+        w.back() = '.';
+        out.warnings.push_back(std::move(w));
+    }
     return flatten(scene, *root_index, path, out, error);
 }
 

@@ -8,13 +8,15 @@ namespace lua_scene {
 
 namespace {
 
-// The first model, by line, whose mesh the host cannot find; the scene ran where no file is seen,
-// so its meshes are looked for here.
-bool resolve_meshes(const SceneResult &scene, const std::string &path, const ani_host *host, std::string &error) {
+// A warning for each model, by line, whose mesh the host cannot find (a mesh the author made and
+// did not publish): the host shows a stand-in until it is there, and the document keeps its id.
+// The scene ran where no file is seen, so its meshes are looked for here.
+void resolve_meshes(const SceneResult &scene, const std::string &path, const ani_host *host,
+                    std::vector<std::string> &warnings) {
     const auto *assets = host && host->get_extension
                              ? static_cast<const ani_assets_ext *>(host->get_extension(host, ANI_EXT_ASSETS))
                              : nullptr;
-    if (!assets) return true;
+    if (!assets) return;
     std::vector<const SceneModel *> by_line;
     for (const SceneModel &m : scene.models)
         if (!m.mesh.empty()) by_line.push_back(&m);
@@ -22,21 +24,21 @@ bool resolve_meshes(const SceneResult &scene, const std::string &path, const ani
                      [](const SceneModel *a, const SceneModel *b) { return a->line < b->line; });
     for (const SceneModel *m : by_line) {
         char where[2048];
-        if (!assets->resolve(host, ANI_ASSET_MESH, m->mesh.c_str(), path.c_str(), where, sizeof where)) {
-            error = path + ":" + std::to_string(m->line) + ": unknown mesh '" + m->mesh + "' (" + where + ")";
-            return false;
-        }
+        if (!assets->resolve(host, ANI_ASSET_MESH, m->mesh.c_str(), path.c_str(), where, sizeof where))
+            // (The host's own words for it, after the line: it then does not say it twice.)
+            warnings.push_back(path + ":" + std::to_string(m->line) + ": mesh '" + m->mesh + "' not found (" +
+                               where + "); shown as a stand-in cube until it is there");
     }
-    return true;
 }
 
 } // namespace
 
-bool build_document(const SceneResult &scene, const std::string &path, const ani_host *host,
-                    ani::OwnedDocument &doc, std::string &error) {
-    if (!resolve_meshes(scene, path, host, error)) return false;
+void build_document(const SceneResult &scene, const std::string &path, const ani_host *host,
+                    ani::OwnedDocument &doc) {
+    std::vector<std::string> warnings = scene.warnings;
+    resolve_meshes(scene, path, host, warnings);
     if (host && host->log)
-        for (const std::string &warning : scene.warnings) host->log(host, ANI_LOG_WARNING, "format.lua", warning.c_str());
+        for (const std::string &warning : warnings) host->log(host, ANI_LOG_WARNING, "format.lua", warning.c_str());
 
     std::vector<ani_model_state> states;
     for (const SceneModel &n : scene.models) {
@@ -82,7 +84,6 @@ bool build_document(const SceneResult &scene, const std::string &path, const ani
     doc.keyframes.push_back(k);
     doc.states.push_back(std::move(states));
     doc.finish();
-    return true;
 }
 
 } // namespace lua_scene

@@ -1,5 +1,5 @@
 // Scene data (what a scene file made) as the document the host opens: one keyframe at t = 0,
-// each mesh found in the host's asset folders, the scene's warnings in the host's log.
+// each mesh looked for in the host's asset folders (one not found is a warning), the scene's warnings in the host's log.
 #pragma once
 
 #include "scene_result.hpp"
@@ -11,8 +11,8 @@
 
 namespace lua_scene {
 
-// On failure (a mesh that is not found) returns false with "path:line: ..." in `error`.
-bool build_document(const SceneResult &scene, const std::string &path, const ani_host *host,
-                    ani::OwnedDocument &doc, std::string &error);
+// The scene's warnings, and one for each mesh that is not found, go to the host's log.
+void build_document(const SceneResult &scene, const std::string &path, const ani_host *host,
+                    ani::OwnedDocument &doc);
 
 } // namespace lua_scene

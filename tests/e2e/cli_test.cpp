@@ -349,3 +349,38 @@ TEST_CASE("animator bake --trace gives each model's world orientation and angula
         CHECK(c.q[0] >= 0.0);
     }
 }
+
+namespace fs = std::filesystem;
+
+TEST_CASE("with --strict, on any subcommand, a file's warnings are errors: exit 1, nothing written") {
+    const fs::path dir = test::fresh_dir("cli_strict");
+    const fs::path scene = dir / "puppet.lua";
+    test::write_file(scene, "local root = gr.node('root')\nlocal a = gr.mesh('cube', 'arm')\nroot:add_child(a)\n"
+                            "local b = gr.mesh('cube', 'arm')\nroot:add_child(b)\nreturn root\n");
+    const std::string rename = "puppet.lua:4: 1 node name was used before or empty, renamed to be unique: line 4 'arm' -> 'arm.001'.";
+    // Without it: a warning, and the work done.
+    auto info = test::run_animator("info " + scene.string());
+    CHECK(info.exit_code == 0);
+    CHECK_THAT(info.out, Catch::Contains(rename));
+    CHECK_THAT(info.out, Catch::Contains("arm.001: mesh cube"));
+    auto bake = test::run_animator("bake " + scene.string() + " --until 0.1 --trace " + (dir / "a.csv").string());
+    CHECK(bake.exit_code == 0);
+    CHECK(fs::exists(dir / "a.csv"));
+    // With it, before or after the subcommand: the warning, an error that names the file, exit 1.
+    for (const std::string &args :
+         {"--strict info " + scene.string(), "info --strict " + scene.string(),
+          "bake --strict " + scene.string() + " --until 0.1 --trace " + (dir / "b.csv").string(),
+          "render " + scene.string() + " --strict --to 0.1 --out " + (dir / "frames").string(),
+          "soundtrack --strict " + scene.string() + " --out " + (dir / "s.wav").string()}) {
+        CAPTURE(args);
+        auto r = test::run_animator(args);
+        CHECK(r.exit_code == 1);
+        CHECK_THAT(r.out, Catch::Contains(rename));
+        CHECK_THAT(r.out, Catch::Contains(scene.string() + ": 1 warning (said above), which --strict makes errors"));
+    }
+    CHECK_FALSE(fs::exists(dir / "b.csv"));
+    CHECK_FALSE(fs::exists(dir / "frames"));
+    CHECK_FALSE(fs::exists(dir / "s.wav"));
+    // A file without warnings is not refused.
+    CHECK(test::run_animator("--strict info " + drop).exit_code == 0);
+}

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <glm/vec3.hpp>
 
 using namespace animator;
 namespace fs = std::filesystem;
@@ -91,4 +92,44 @@ TEST_CASE("animator render takes shading parameters and reports bad input") {
     CHECK(help.exit_code == 0);
     CHECK_THAT(help.out,
                Catch::Contains("--out") && Catch::Contains("--size") && Catch::Contains("--fps"));
+}
+
+TEST_CASE("animator render draws a mesh that is not found as a plain magenta stand-in cube") {
+    // A scene from the course naming a mesh its author did not publish, in green, straight ahead
+    // of the camera; beside it a real cube in green. The stand-in is the course's unit cube,
+    // plain magenta whatever its material; the real cube keeps its colour.
+    const fs::path dir = test::fresh_dir("render_stand_in");
+    test::write_file(dir / "face.lua",
+                     "gr.camera{eye = {0, 0, 8}, look_at = {0, 0, 0}, up = {0, 1, 0}, fov = 50}\n"
+                     "local root = gr.node('root')\n"
+                     "local green = gr.material({0.1, 0.8, 0.1}, {0, 0, 0}, 10)\n"
+                     "local face = gr.mesh('luffy-face', 'face')\n"
+                     "face:translate(-1.5, 0, 0)\n"
+                     "face:set_material(green)\n"
+                     "root:add_child(face)\n"
+                     "local cube = gr.mesh('cube', 'cube')\n"
+                     "cube:translate(1.5, 0, 0)\n"
+                     "cube:set_material(green)\n"
+                     "root:add_child(cube)\n"
+                     "return root\n");
+    const auto r = test::run_animator("render " + (dir / "face.lua").string() + " --out " + (dir / "out").string() +
+                                          " --to 0 --size 160x120",
+                                      kNoDisplay);
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("face.lua:4: mesh 'luffy-face' not found ("));
+    size_t said = 0;
+    for (size_t k = r.out.find("not found"); k != std::string::npos; k = r.out.find("not found", k + 1)) ++said;
+    CHECK(said == 1); // said once, with its line
+    const Image image = load_image(dir / "out" / "frame_00000.png");
+    auto at = [&](int x, int y) {
+        const size_t i = 3 * (static_cast<size_t>(y) * static_cast<size_t>(image.width) + static_cast<size_t>(x));
+        return glm::ivec3(image.rgb[i], image.rgb[i + 1], image.rgb[i + 2]);
+    };
+    // The stand-in's centre, about 40 px left of the image's, and the cube's, 40 px right.
+    const glm::ivec3 stand_in = at(80 - 40, 60), cube = at(80 + 40, 60);
+    CAPTURE(stand_in.r, stand_in.g, stand_in.b, cube.r, cube.g, cube.b);
+    CHECK(stand_in.r > 3 * stand_in.g + 20);
+    CHECK(stand_in.b > 3 * stand_in.g + 20);
+    CHECK(cube.g > 2 * cube.r + 20);
 }
