@@ -69,6 +69,9 @@ struct Scene {
         std::string from, to;
     };
     std::vector<Rename> renames;
+    // What the script did that the course's code allowed and we take leniently, by line (said
+    // as warnings "path:line: text" at the end).
+    std::vector<std::pair<int, std::string>> notes;
     std::size_t data_bytes = 0;
     std::optional<int> settings_line, camera_line;
     SceneResult settings; // the settings and camera; its models are filled at the end
@@ -244,14 +247,44 @@ int gr_mesh(lua_State *L) {
 
 // gr.joint(name, {xmin, xinit, xmax}, {ymin, yinit, ymax}): a node turned to its initial angles.
 // The ranges are checked, not kept: the document has no joint limits yet.
+// Says that a call had `given` arguments where the course's API takes `takes`: the rest ignored.
+void note_extra_arguments(lua_State *L, const char *call, int takes, int given) {
+    if (given <= takes) return;
+    const std::string text = std::string(call) + " takes " + std::to_string(takes) + " arguments; the " +
+                             std::to_string(given - takes) + " more given (a student extension?) " +
+                             (given - takes == 1 ? "is" : "are") + " ignored";
+    charge(L, text.size() + 32);
+    scene_of(L).notes.emplace_back(current_line(L), text);
+}
+
 int gr_joint(lua_State *L) {
     Node n;
     n.name = checked_string(L, 1);
-    const auto x = numbers(L, 2, 3, "the joint's x range");
-    const auto y = numbers(L, 3, 3, "the joint's y range");
-    for (const auto &r : {x, y})
-        if (!(r[0] <= r[1] && r[1] <= r[2])) return luaL_error(L, "a joint range must be {min, init, max} with min <= init <= max");
-    n.local = glm::rotate(glm::dmat4(1.0), glm::radians(y[1]), glm::dvec3(0, 1, 0)) *
+    const int given = lua_gettop(L);
+    auto x = numbers(L, 2, 3, "the joint's x range");
+    auto y = numbers(L, 3, 3, "the joint's y range");
+    // A fourth table of three numbers is a z range (an extension some students made): used.
+    const bool has_z = given >= 4 && lua_istable(L, 4) && lua_rawlen(L, 4) == 3;
+    std::vector<double> z = has_z ? numbers(L, 4, 3, "the joint's z range") : std::vector<double>{0.0, 0.0, 0.0};
+    note_extra_arguments(L, "gr.joint", has_z ? 4 : 3, given);
+    const char *axis = "xyz";
+    int k = 0;
+    for (auto *r : {&x, &y, &z}) {
+        const char a = axis[k++];
+        if (!((*r)[0] <= (*r)[2]))
+            return luaL_error(L, "the joint's %c range must be {min, init, max} with min <= max", a);
+        if ((*r)[1] < (*r)[0] || (*r)[1] > (*r)[2]) { // the course's viewer clamped it
+            const double clamped = std::clamp((*r)[1], (*r)[0], (*r)[2]);
+            char text[200];
+            std::snprintf(text, sizeof text, "joint '%.40s': its %c angle %g is outside its range [%g, %g]; it starts at %g",
+                          n.name.c_str(), a, (*r)[1], (*r)[0], (*r)[2], clamped);
+            charge(L, sizeof text + 32);
+            scene_of(L).notes.emplace_back(current_line(L), text);
+            (*r)[1] = clamped;
+        }
+    }
+    n.local = glm::rotate(glm::dmat4(1.0), glm::radians(z[1]), glm::dvec3(0, 0, 1)) *
+              glm::rotate(glm::dmat4(1.0), glm::radians(y[1]), glm::dvec3(0, 1, 0)) *
               glm::rotate(glm::dmat4(1.0), glm::radians(x[1]), glm::dvec3(1, 0, 0));
     return push_node(L, std::move(n));
 }
@@ -266,6 +299,7 @@ int gr_material(lua_State *L) {
         if (c < 0.0 || c > 1.0) return luaL_error(L, "material colours must be in [0, 1]");
     m.shininess = luaL_checknumber(L, 3);
     if (!(m.shininess >= 0.0) || !std::isfinite(m.shininess)) return luaL_error(L, "shininess must be >= 0");
+    note_extra_arguments(L, "gr.material", 3, lua_gettop(L));
     charge(L, sizeof(Material));
     Scene &scene = scene_of(L);
     const int index = static_cast<int>(scene.materials.size());
@@ -629,6 +663,7 @@ bool run_scene(const std::string &path, const std::string &text, SceneResult &ou
         w.back() = '.';
         out.warnings.push_back(std::move(w));
     }
+    for (const auto &[line, note] : scene.notes) out.warnings.push_back(path + ":" + std::to_string(line) + ": " + note);
     return flatten(scene, *root_index, path, out, error);
 }
 

@@ -347,3 +347,37 @@ TEST_CASE("names used twice or empty load as the course's code allowed, renamed 
     // A scene without such names says nothing.
     CHECK(open_document(registry(), test::source_dir() / "assets/scenes/simple.lua").warnings.empty());
 }
+
+TEST_CASE("joints and materials as students wrote them: an angle outside its range starts clamped, "
+          "a z range is used, and extra arguments are ignored, each with a warning at its line") {
+    const fs::path path = test::fresh_dir("lua_joints") / "puppet.lua";
+    test::write_file(path, "local root = gr.node('root')\n"
+                           "local neck = gr.joint('neck', {-30, 45, 30}, {-10, 0, 10}, {-90, 20, 90})\n"
+                           "root:add_child(neck)\n"
+                           "local m = gr.material({0.5, 0.5, 0.5}, {0.1, 0.1, 0.1}, 10, 0.5, 'mirror')\n"
+                           "local head = gr.mesh('sphere', 'head')\n"
+                           "head:set_material(m)\n"
+                           "neck:add_child(head)\n"
+                           "local wrist = gr.joint('wrist', {0, 10, 20}, {0, 0, 0}, 'extra')\n"
+                           "root:add_child(wrist)\n"
+                           "return root\n");
+    const OpenedDocument opened = open_document(registry(), path);
+    const std::string p = path.string();
+    CHECK(opened.warnings == std::vector<std::string>{
+                                 p + ":2: joint 'neck': its x angle 45 is outside its range [-30, 30]; it starts at 30",
+                                 p + ":4: gr.material takes 3 arguments; the 2 more given (a student extension?) are ignored",
+                                 p + ":8: gr.joint takes 3 arguments; the 1 more given (a student extension?) is ignored"});
+    // The neck starts turned x = 30 (clamped), then y = 0, then z = 20 (its z range's initial
+    // angle): its matrix Rz(20) Ry(0) Rx(30), whatever Euler angles the document holds it by.
+    const auto &states = opened.document.keyframe_at(0).states;
+    const glm::dvec3 a = glm::radians(states[0]->angles);
+    const glm::dmat4 held = glm::eulerAngleXYZ(a.x, a.y, a.z);
+    const glm::dmat4 expected = glm::rotate(glm::dmat4(1.0), glm::radians(20.0), glm::dvec3(0, 0, 1)) *
+                                glm::rotate(glm::dmat4(1.0), glm::radians(30.0), glm::dvec3(1, 0, 0));
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) CHECK(std::abs(held[c][r] - expected[c][r]) < 1e-12);
+    CHECK(states[2]->angles.x == Approx(10.0)); // the wrist, within its range
+    // The material's three arguments are used.
+    CHECK(opened.document.models()[1].material.kd == glm::dvec3(0.5));
+    CHECK(opened.document.models()[1].material.shininess == 10.0);
+}
