@@ -30,6 +30,8 @@ pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui stb)
 find_package(SFML 2.5 COMPONENTS audio system REQUIRED)
 find_package(Catch2 2 REQUIRED)
 find_package(CLI11 REQUIRED)
+# JSON (headers only): `animator info --json`.
+find_package(nlohmann_json 3 REQUIRED)
 
 # glad: the OpenGL 3.3 core loader, generated at build time by Debian's python3-glad.
 find_program(GLAD_EXECUTABLE glad REQUIRED)

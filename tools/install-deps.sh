@@ -7,6 +7,7 @@ packages=(
   build-essential cmake pkg-config python3
   libbullet-dev libglfw3-dev libx11-dev python3-glad libimgui-dev libglm-dev libassimp-dev
   libsfml-dev liblua5.4-dev libstb-dev catch2 libcli11-dev
+  nlohmann-json3-dev  # `animator info --json` (and its tests)
   libboost-dev  # Boost.Math's elliptic functions: physics.custom's exact free rotation
   libgl-dev xvfb xauth xdotool imagemagick mesa-utils libgl1-mesa-dri
   libegl-dev libegl-mesa0

@@ -1,10 +1,14 @@
-// `animator info FILE`: a document's settings, models and keyframes, as text.
+// `animator info FILE`: a document's settings, models and keyframes, as text, or with --json the
+// whole document as JSON (docs/info-json.md).
 #include "cli/cli_support.hpp"
 #include "cli/commands.hpp"
 
 #include "assets/mesh.hpp"
 #include "io/document_io.hpp"
 #include "io/environment.hpp"
+#include "render/scene_math.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <map>
 
@@ -103,16 +107,103 @@ void print_document(std::ostream &out, const Document &doc, const AssetPaths &as
 
 } // namespace
 
+namespace {
+
+using nlohmann::json;
+
+json numbers(const glm::dvec3 &v) { return json::array({v.x, v.y, v.z}); }
+
+json state_json(const ModelState &s) {
+    return {{"center", numbers(s.center)}, {"angles", numbers(s.angles)}, {"scale", numbers(s.scale)}};
+}
+
+json camera_json(const CameraState &c) {
+    return {{"position", numbers(c.position)},
+            {"rotation", json::array({c.rotation.w, c.rotation.x, c.rotation.y, c.rotation.z})},
+            {"fov", c.fov_degrees}};
+}
+
+// The whole document (docs/info-json.md): every number as read, and each model's world matrix at
+// t = 0, column-major, as the renderer and the physics place it.
+json document_json(const OpenedDocument &opened, const std::string &file) {
+    const Document &doc = opened.document;
+    const Settings &s = doc.settings();
+    json settings = {{"max_time_ms", s.max_time_ms},
+                     {"gravity", s.gravity},
+                     {"down", std::string(1, "xyz"[static_cast<int>(s.down_axis)])},
+                     {"cel_shading", s.cel_shading},
+                     {"skybox", s.skybox},
+                     {"physics_backend", s.physics_backend},
+                     {"interpolation", s.interpolation}};
+    std::vector<ModelPose> poses;
+    const Keyframe &first = doc.keyframe_at(0); // it keys every model
+    for (const auto &state : first.states) {
+        ModelPose p;
+        if (state) {
+            p.center = state->center;
+            p.angles = state->angles;
+            p.scale = state->scale;
+        }
+        poses.push_back(p);
+    }
+    std::vector<glm::dmat4> world;
+    world_matrices(doc.models(), poses, world);
+    json models = json::array();
+    for (size_t i = 0; i < doc.models().size(); ++i) {
+        const Model &m = doc.models()[i];
+        json w = json::array();
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) w.push_back(world[i][c][r]);
+        models.push_back({{"name", m.name},
+                          {"mesh", m.mesh},
+                          {"parent", m.parent >= 0 ? json(doc.models()[static_cast<size_t>(m.parent)].name) : json(nullptr)},
+                          {"world", w},
+                          {"material", {{"kd", numbers(m.material.kd)}, {"ks", numbers(m.material.ks)},
+                                        {"shininess", m.material.shininess}}},
+                          {"texture", m.texture},
+                          {"tint", m.tint},
+                          {"reflectivity", m.reflectivity},
+                          {"transparency", m.transparency},
+                          {"refractive_index", m.refractive_index},
+                          {"physics", {{"dynamics", m.dynamics}, {"gravity", m.gravity}, {"mass", m.mass},
+                                       {"velocity", numbers(m.initial_velocity)}, {"restitution", m.restitution},
+                                       {"friction", m.friction}, {"rotates", m.rotates},
+                                       {"angular_velocity", numbers(m.angular_velocity)}}},
+                          {"sounds", {{"collision", m.collision_sound}, {"moving", m.moving_sound}}}});
+    }
+    json keyframes = json::array();
+    for (const Keyframe &k : doc.keyframes()) {
+        json states = json::object();
+        for (size_t i = 0; i < k.states.size(); ++i)
+            if (k.states[i]) states[doc.models()[i].name] = state_json(*k.states[i]);
+        keyframes.push_back({{"time_ms", k.time_ms},
+                             {"camera", k.camera ? camera_json(*k.camera) : json(nullptr)},
+                             {"states", states}});
+    }
+    return {{"file", file},          {"format", opened.format_id}, {"settings", settings}, {"models", models},
+            {"keyframes", keyframes}, {"lights", json::array()},  {"warnings", opened.warnings}};
+}
+
+} // namespace
+
 void add_info_command(CLI::App &app, std::function<int()> &run) {
     CLI::App *cmd = app.add_subcommand("info", "Print a document's models, keyframes and settings");
     auto file = std::make_shared<std::string>();
+    auto as_json = std::make_shared<bool>(false);
     cmd->add_option("FILE", *file, "an animation (.ani) or scene file")->required();
-    cmd->callback([&run, file] {
-        run = [file] {
+    cmd->add_flag("--json", *as_json, "the whole document as JSON on stdout (docs/info-json.md): every model's name, "
+                                      "mesh and world matrix at t = 0, the settings, keyframes, lights and warnings");
+    cmd->callback([&run, file, as_json] {
+        run = [file, as_json] {
             Environment env;
             try {
                 OpenedDocument opened = open_document(env.plugins, *file);
                 count_warnings(opened.warnings.size());
+                if (*as_json) {
+                    stop_if_strict(*file);
+                    std::cout << document_json(opened, *file).dump(2) << "\n";
+                    return static_cast<int>(kSuccess);
+                }
                 std::cout << "file: " << *file << " (read by " << opened.format_id << ")\n";
                 print_document(std::cout, opened.document, env.assets, *file);
                 stop_if_strict(*file); // after the meshes' warnings too

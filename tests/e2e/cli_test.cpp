@@ -8,6 +8,10 @@
 #include <map>
 #include <filesystem>
 #include <sstream>
+#include <tuple>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
 
 using namespace animator;
 
@@ -383,4 +387,63 @@ TEST_CASE("with --strict, on any subcommand, a file's warnings are errors: exit 
     CHECK_FALSE(fs::exists(dir / "s.wav"));
     // A file without warnings is not refused.
     CHECK(test::run_animator("--strict info " + drop).exit_code == 0);
+}
+
+TEST_CASE("animator info --json gives the whole document, each model's world matrix at t = 0 as the "
+          "CS488 transform stack makes it") {
+    // A puppet: the root moved (folded into its children), a sheared-free chain of a joint, a
+    // scaled and turned mesh under it, and a duplicate name. The truth: the course's own rule,
+    // written here apart from the reader: each call multiplies on the left of the node's matrix
+    // (M = call M), and a node's world matrix is its parent's times its own.
+    const fs::path dir = test::fresh_dir("cli_info_json");
+    const fs::path scene = dir / "puppet.lua";
+    test::write_file(scene, "local root = gr.node('root')\n"
+                            "root:translate(0, 10, 0)\n"
+                            "local arm = gr.joint('arm', {-90, 45, 90}, {-30, 20, 30})\n"
+                            "arm:translate(1, 2, 3)\n"
+                            "root:add_child(arm)\n"
+                            "local upper = gr.mesh('cube', 'upper')\n"
+                            "upper:scale(0.5, 0.5, 0.5)\n"
+                            "upper:rotate('z', 30)\n"
+                            "upper:translate(0, 1, 0)\n"
+                            "arm:add_child(upper)\n"
+                            "local twin = gr.mesh('sphere', 'upper')\n"
+                            "twin:translate(2, 0, 0)\n"
+                            "root:add_child(twin)\n"
+                            "return root\n");
+    auto r = test::run_animator("info --json " + scene.string());
+    REQUIRE(r.exit_code == 0);
+    // (The output holds stderr too: the rename's warning line, before the JSON.)
+    const size_t start = r.out.find("{\n");
+    REQUIRE(start != std::string::npos);
+    const nlohmann::json doc = nlohmann::json::parse(r.out.substr(start));
+    CHECK(doc["format"] == "format.lua");
+    CHECK(doc["settings"]["down"] == "y");
+    REQUIRE(doc["models"].size() == 3);
+    CHECK(doc["warnings"].size() == 1); // the second 'upper', renamed
+    auto T = [](double x, double y, double z) { return glm::translate(glm::dmat4(1.0), glm::dvec3(x, y, z)); };
+    auto R = [](double degrees, glm::dvec3 axis) { return glm::rotate(glm::dmat4(1.0), glm::radians(degrees), axis); };
+    const glm::dmat4 root = T(0, 10, 0);
+    const glm::dmat4 arm = root * (T(1, 2, 3) * R(20, {0, 1, 0}) * R(45, {1, 0, 0}));
+    const glm::dmat4 upper = arm * (T(0, 1, 0) * R(30, {0, 0, 1}) * glm::scale(glm::dmat4(1.0), glm::dvec3(0.5)));
+    const glm::dmat4 twin = root * T(2, 0, 0);
+    const std::vector<std::tuple<std::string, std::string, std::string, glm::dmat4>> expected = {
+        {"arm", "", "", arm}, {"upper", "cube", "arm", upper}, {"upper.001", "sphere", "", twin}};
+    for (size_t i = 0; i < expected.size(); ++i) {
+        const auto &[name, mesh, parent, world] = expected[i];
+        const nlohmann::json &m = doc["models"][i];
+        CAPTURE(name);
+        CHECK(m["name"] == name);
+        CHECK(m["mesh"] == mesh);
+        if (parent.empty())
+            CHECK(m["parent"].is_null());
+        else
+            CHECK(m["parent"] == parent);
+        REQUIRE(m["world"].size() == 16);
+        for (int c = 0; c < 4; ++c)
+            for (int k = 0; k < 4; ++k) CHECK(std::abs(m["world"][4 * c + k].get<double>() - world[c][k]) < 1e-12);
+    }
+    CHECK(doc["keyframes"][0]["time_ms"] == 0);
+    CHECK(doc["keyframes"][0]["states"].contains("upper.001"));
+    CHECK(doc["lights"].empty());
 }
