@@ -8,6 +8,7 @@ packages=(
   libbullet-dev libglfw3-dev libx11-dev python3-glad libimgui-dev libglm-dev libassimp-dev
   libsfml-dev liblua5.4-dev libstb-dev catch2 libcli11-dev
   nlohmann-json3-dev  # `animator info --json` (and its tests)
+  lua5.4  # the tests' independent CS488 transform stack (tests/data/cs488/shim.lua)
   libboost-dev  # Boost.Math's elliptic functions: physics.custom's exact free rotation
   libgl-dev xvfb xauth xdotool imagemagick mesa-utils libgl1-mesa-dri
   libegl-dev libegl-mesa0

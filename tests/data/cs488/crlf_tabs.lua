@@ -1,0 +1,15 @@
+-- Windows line endings and tabs, as some students saved them.
+local root = gr.node("root")
+	local head = gr.mesh("sphere", "head")
+	head:scale(0.5, 0.6, 0.5)
+	head:translate(0, 3.2, 0)
+	root:add_child(head)
+	local neck = gr.joint("neck", {-30, 10, 30}, {-60, 15, 60})
+	neck:translate(0, 2.6, 0)
+	root:add_child(neck)
+	local nose = gr.mesh("cube", "nose")
+	nose:scale(0.05, 0.05, 0.2)
+	nose:translate(0, 0.6, 0.5)
+	neck:add_child(nose)
+root:rotate("x", -10)
+return root
