@@ -25,6 +25,9 @@ CommandResult run_animator(const std::string &args, const std::string &env = "")
 std::string read_file(const std::filesystem::path &path);
 void write_file(const std::filesystem::path &path, const std::string &text);
 
+// How many times `needle` occurs in `text` (overlapping occurrences too).
+size_t count_in(const std::string &text, const std::string &needle);
+
 // A document of `models` models and `keyframes` keyframes with random but valid content.
 Document random_document(std::mt19937 &rng, int models, int keyframes);
 

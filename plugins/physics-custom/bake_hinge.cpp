@@ -23,9 +23,7 @@ bool EventBake::on_flat_region(const Obstacle &o, const glm::dvec3 &n, double d,
                                const glm::dvec3 &x) const {
     const double slack = 1e-9 * std::max(1.0, glm::length(x));
     for (size_t k = 0; k < o.normals.size(); ++k) {
-        if (!(glm::dot(o.normals[k], n) > 1.0 - 1e-9) ||
-            std::abs(o.offsets[k] - d) > 1e-9 * (1.0 + std::abs(d)))
-            continue;
+        if (!in_plane(o, k, n, d)) continue;
         const glm::dvec3 q =
             closest_point_on_triangle(x, o.corners[3 * k], o.corners[3 * k + 1], o.corners[3 * k + 2]);
         if (glm::length(q - x) <= slack) return true;
@@ -66,7 +64,6 @@ bool EventBake::try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v
     if (d == kNever) return false;
     // Its feet (settle_on's: within 1e-6 of its size of the plane) on one line, at least 1e-6 of
     // its size long: an edge, not a corner or a face.
-    constexpr double kTipSlack = 1e-6;
     std::vector<size_t> feet;
     for (size_t k = 0; k < x.size(); ++k)
         if (glm::dot(n, x[k]) - d <= kTipSlack * size) feet.push_back(k);

@@ -7,9 +7,13 @@ namespace physics_custom::bake {
 
 // ---- resting and sliding on static models ---------------------------------------------
 
+// Whether triangle k of the obstacle lies in the plane n . x = d (to rounding).
+bool EventBake::in_plane(const Obstacle &o, size_t k, const glm::dvec3 &n, double d) {
+    return glm::dot(o.normals[k], n) > 1.0 - 1e-9 && std::abs(o.offsets[k] - d) <= 1e-9 * (1.0 + std::abs(d));
+}
+
 bool EventBake::in_support_plane(const Body &b, const Obstacle &o, size_t k) {
-    return glm::dot(o.normals[k], b.support_n) > 1.0 - 1e-9 &&
-           std::abs(o.offsets[k] - b.support_d) <= 1e-9 * (1.0 + std::abs(b.support_d));
+    return in_plane(o, k, b.support_n, b.support_d);
 }
 
 // A free sphere touching the face of a static model, not moving into or out of it, with its
@@ -112,7 +116,6 @@ bool EventBake::settle_on(int i, int o, const glm::dvec3 &n, double t) {
     // other two, to tip over by nothing at all in microcollisions without end.) One that does
     // not turn stays as its keys left it, on an edge or a corner.
     if (b.turning()) {
-        constexpr double kTipSlack = 1e-6;
         std::vector<glm::dvec3> stand;
         for (const glm::dvec3 &corner : corners)
             if (std::abs(glm::dot(n, placed_c + corner) - held.support_d) <= kTipSlack * size)

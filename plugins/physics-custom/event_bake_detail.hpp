@@ -217,6 +217,10 @@ inline Predicted predicted(double t, EventKind kind, int other = -1, uint64_t ot
     return p;
 }
 
+// How near (times its size) the plane of a face a turning model's vertex stands on it: its feet
+// for the balance check (settle_on) and for the edge it tips over (try_hinge).
+constexpr double kTipSlack = 1e-6;
+
 // Bodies from which on the grid pays for its cell crossings.
 constexpr std::size_t kGridFrom = 16;
 
@@ -421,6 +425,7 @@ class EventBake {
                               const ImpulseBody &io, bool o_wall, const glm::dvec3 &n, double t);
 
     // The rest manager: supports, settling, leaving (bake_rest.cpp).
+    static bool in_plane(const Obstacle &o, size_t k, const glm::dvec3 &n, double d);
     static bool in_support_plane(const Body &b, const Obstacle &o, size_t k);
     bool try_settle(int i, double t);
     bool settle_on(int i, int o, const glm::dvec3 &n, double t);

@@ -21,11 +21,6 @@ using namespace animator;
 namespace {
 const std::string drop = (test::source_dir() / "assets/animations/drop.ani").string();
 
-size_t count_in(const std::string &text, const std::string &needle) {
-    size_t n = 0;
-    for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
-    return n;
-}
 } // namespace
 
 TEST_CASE("animator --help names the subcommands and each subcommand has --help") {
@@ -111,7 +106,7 @@ TEST_CASE("animator info prints every example with its models, keyframes and res
             CHECK_THAT(r.out, !Catch::Contains("not found"));
             CHECK(std::count(r.out.begin(), r.out.end(), '\n') > 10);
             // Each model's mesh was found and loaded (empties say so).
-            CHECK(count_in(r.out, "(none: an empty)") == models - meshed);
+            CHECK(test::count_in(r.out, "(none: an empty)") == models - meshed);
             size_t meshes = 0;
             for (size_t at = r.out.find(" triangles, bounding sphere"); at != std::string::npos;
                  at = r.out.find(" triangles, bounding sphere", at + 1))

@@ -118,9 +118,7 @@ TEST_CASE("animator render draws a mesh that is not found as a plain magenta sta
     INFO(r.out);
     REQUIRE(r.exit_code == 0);
     CHECK_THAT(r.out, Catch::Contains("face.lua:4: mesh 'luffy-face' not found ("));
-    size_t said = 0;
-    for (size_t k = r.out.find("not found"); k != std::string::npos; k = r.out.find("not found", k + 1)) ++said;
-    CHECK(said == 1); // said once, with its line
+    CHECK(test::count_in(r.out, "not found") == 1); // said once, with its line
     const Image image = load_image(dir / "out" / "frame_00000.png");
     auto at = [&](int x, int y) {
         const size_t i = 3 * (static_cast<size_t>(y) * static_cast<size_t>(image.width) + static_cast<size_t>(x));
