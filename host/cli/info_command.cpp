@@ -134,7 +134,15 @@ json document_json(const OpenedDocument &opened, const std::string &file) {
                      {"cel_shading", s.cel_shading},
                      {"skybox", s.skybox},
                      {"physics_backend", s.physics_backend},
-                     {"interpolation", s.interpolation}};
+                     {"interpolation", s.interpolation},
+                     {"ambient", numbers(s.ambient)},
+                     {"render", {{"output", s.render_output}, {"width", s.render_width}, {"height", s.render_height}}}};
+    json lights = json::array();
+    for (const Light &l : s.lights)
+        lights.push_back({{"name", l.name},
+                          {"position", numbers(l.position)},
+                          {"colour", numbers(l.colour)},
+                          {"falloff", numbers(l.falloff)}});
     std::vector<ModelPose> poses;
     const Keyframe &first = doc.keyframe_at(0); // it keys every model
     for (const auto &state : first.states) {
@@ -148,16 +156,23 @@ json document_json(const OpenedDocument &opened, const std::string &file) {
     }
     std::vector<glm::dmat4> world;
     world_matrices(doc.models(), poses, world);
+    apply_rest_shapes(doc.models(), world); // where each mesh is
     json models = json::array();
     for (size_t i = 0; i < doc.models().size(); ++i) {
         const Model &m = doc.models()[i];
         json w = json::array();
         for (int c = 0; c < 4; ++c)
             for (int r = 0; r < 4; ++r) w.push_back(world[i][c][r]);
+        json rest = json::array();
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r) rest.push_back(m.rest[c][r]);
+        json joint = m.joint ? json{{"min", numbers(m.joint->min)}, {"max", numbers(m.joint->max)}} : json(nullptr);
         models.push_back({{"name", m.name},
                           {"mesh", m.mesh},
                           {"parent", m.parent >= 0 ? json(doc.models()[static_cast<size_t>(m.parent)].name) : json(nullptr)},
                           {"world", w},
+                          {"rest", rest},
+                          {"joint", joint},
                           {"material", {{"kd", numbers(m.material.kd)}, {"ks", numbers(m.material.ks)},
                                         {"shininess", m.material.shininess}}},
                           {"texture", m.texture},
@@ -181,7 +196,7 @@ json document_json(const OpenedDocument &opened, const std::string &file) {
                              {"states", states}});
     }
     return {{"file", file},          {"format", opened.format_id}, {"settings", settings}, {"models", models},
-            {"keyframes", keyframes}, {"lights", json::array()},  {"warnings", opened.warnings}};
+            {"keyframes", keyframes}, {"lights", lights},  {"warnings", opened.warnings}};
 }
 
 } // namespace

@@ -1,5 +1,7 @@
 #include "document/document.hpp"
 
+#include <glm/matrix.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -13,6 +15,8 @@ bool finite(const glm::dvec3 &v) {
 }
 bool in_unit(double x) { return x >= 0.0 && x <= 1.0; }
 bool in_unit(const glm::dvec3 &v) { return in_unit(v.x) && in_unit(v.y) && in_unit(v.z); }
+// A colour: finite and >= 0 (above 1 is brighter than white, as the CS488 course allowed).
+bool colour(const glm::dvec3 &v) { return finite(v) && v.x >= 0.0 && v.y >= 0.0 && v.z >= 0.0; }
 
 template <class... Parts> std::string concat(const Parts &...parts) {
     std::ostringstream out;
@@ -30,7 +34,7 @@ bool Model::operator==(const Model &o) const {
            initial_velocity == o.initial_velocity && restitution == o.restitution &&
            friction == o.friction && rotates == o.rotates &&
            angular_velocity == o.angular_velocity && collision_sound == o.collision_sound &&
-           moving_sound == o.moving_sound;
+           moving_sound == o.moving_sound && rest == o.rest && joint == o.joint;
 }
 
 double wrap_degrees(double degrees) {
@@ -41,8 +45,8 @@ double wrap_degrees(double degrees) {
 
 std::string check_model(const Model &m) {
     if (m.name.empty()) return "a model needs a name";
-    if (!in_unit(m.material.kd) || !in_unit(m.material.ks))
-        return concat("model '", m.name, "': kd and ks must be colours in [0, 1]");
+    if (!colour(m.material.kd) || !colour(m.material.ks))
+        return concat("model '", m.name, "': kd and ks must be colours with finite components >= 0");
     if (!std::isfinite(m.material.shininess) || m.material.shininess < 0.0)
         return concat("model '", m.name, "': shininess must be a finite number >= 0");
     if (!in_unit(m.tint)) return concat("model '", m.name, "': tint must be in [0, 1]");
@@ -62,6 +66,18 @@ std::string check_model(const Model &m) {
         return concat("model '", m.name, "': friction must be a finite number >= 0");
     if (!finite(m.angular_velocity))
         return concat("model '", m.name, "': angular velocity must be finite");
+    for (int c = 0; c < 3; ++c)
+        if (!finite(m.rest[c])) return concat("model '", m.name, "': its rest shape must be finite");
+    if (!(glm::determinant(m.rest) > 1e-12))
+        return concat("model '", m.name, "': its rest shape must keep volume > 0 (no mirror, no flattening)");
+    if (m.joint) {
+        const JointRange &j = *m.joint;
+        if (!finite(j.min) || !finite(j.max))
+            return concat("model '", m.name, "': its joint range must be finite");
+        for (int a = 0; a < 3; ++a)
+            if (!(j.min[a] <= j.max[a]))
+                return concat("model '", m.name, "': its joint's ", "xyz"[a], " range must have min <= max");
+    }
     return "";
 }
 
@@ -97,6 +113,17 @@ std::string check_settings(const Settings &s) {
                 if (!std::isfinite(v))
                     return concat("parameter ", plugin, ".", param, " must be finite");
         }
+    if (s.lights.size() > Settings::kMaxLights)
+        return concat("a scene has at most ", Settings::kMaxLights, " lights, this one ", s.lights.size());
+    for (const Light &l : s.lights) {
+        if (!finite(l.position)) return concat("light '", l.name, "': position must be finite");
+        if (!colour(l.colour)) return concat("light '", l.name, "': colour must be finite and >= 0");
+        if (!colour(l.falloff) || !(l.falloff.x + l.falloff.y + l.falloff.z > 0.0))
+            return concat("light '", l.name, "': falloff must be three finite numbers >= 0, not all 0");
+    }
+    if (!colour(s.ambient)) return "ambient light must be finite and >= 0";
+    if (s.render_width < 0 || s.render_height < 0 || s.render_width > 16384 || s.render_height > 16384)
+        return "the render size must be 0 (the default) or 1 to 16384 pixels";
     return "";
 }
 

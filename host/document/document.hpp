@@ -7,6 +7,7 @@
 #pragma once
 
 #include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -35,6 +36,14 @@ struct Material {
     }
 };
 
+// A joint's range (the CS488 puppet's gr.joint): the least and greatest of each of the model's
+// own angles, in degrees read signed (-180, 180], X Y Z as in its state. The editor clamps a turn
+// of the model to it; min == max holds that angle still.
+struct JointRange {
+    glm::dvec3 min{0.0}, max{0.0};
+    bool operator==(const JointRange &o) const { return min == o.min && max == o.max; }
+};
+
 // What the seed's Model Interface holds for one model.
 struct Model {
     std::string name;
@@ -58,6 +67,12 @@ struct Model {
     glm::dvec3 angular_velocity{0.0};       // at t = 0, rad/s about world axes
     std::string collision_sound;
     std::string moving_sound;
+    // A fixed linear shape under the keyed T R S (docs/ani-format.md): the model's mesh is drawn
+    // and collided with as world = parent's T R S ... this T R S * rest. It is the model's own:
+    // children hang from T R S without it. A course scene's shear (a node scaled unevenly after
+    // it was rotated) lives here; the identity otherwise.
+    glm::dmat3 rest{1.0};
+    std::optional<JointRange> joint; // a joint's range, from a course puppet's gr.joint
 
     bool operator==(const Model &o) const;
 };
@@ -102,6 +117,18 @@ struct Keyframe {
 using ParamValue = std::array<double, 4>;
 using ParamValues = std::map<std::string, std::map<std::string, ParamValue>>;
 
+// A point light of the scene (the CS488 ray tracer's gr.light): its light reaches a point at
+// distance d as colour / (falloff[0] + falloff[1] d + falloff[2] d^2).
+struct Light {
+    std::string name;
+    glm::dvec3 position{0.0};
+    glm::dvec3 colour{1.0};
+    glm::dvec3 falloff{1.0, 0.0, 0.0};
+    bool operator==(const Light &o) const {
+        return name == o.name && position == o.position && colour == o.colour && falloff == o.falloff;
+    }
+};
+
 struct Settings {
     static constexpr std::int64_t kMinMaxTimeMs = 1000;      // 1 s
     static constexpr std::int64_t kMaxMaxTimeMs = 300000000; // 300000 s
@@ -117,12 +144,22 @@ struct Settings {
     // kinematic equations): the seed's "interpolation.linear", or "interpolation.smooth".
     std::string interpolation = "interpolation.linear";
     ParamValues params;
+    // The scene's lights; with none, the renderer's default light rides with the camera.
+    static constexpr std::size_t kMaxLights = 8;
+    std::vector<Light> lights;
+    glm::dvec3 ambient{0.2};
+    // What `animator render` writes when not told (a course scene's gr.render): a file name for
+    // a still ("" for none) and a size in pixels (0 for the command's default).
+    std::string render_output;
+    int render_width = 0, render_height = 0;
 
     bool operator==(const Settings &o) const {
         return max_time_ms == o.max_time_ms && gravity == o.gravity && down_axis == o.down_axis &&
                cel_shading == o.cel_shading && skybox == o.skybox &&
                physics_backend == o.physics_backend && interpolation == o.interpolation &&
-               params == o.params;
+               params == o.params && lights == o.lights && ambient == o.ambient &&
+               render_output == o.render_output && render_width == o.render_width &&
+               render_height == o.render_height;
     }
 };
 

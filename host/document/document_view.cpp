@@ -60,6 +60,13 @@ DocumentView::DocumentView(const Document &doc) {
         d.angular_velocity = to_ani(m.angular_velocity);
         d.collision_sound = m.collision_sound.c_str();
         d.moving_sound = m.moving_sound.c_str();
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r) d.rest[3 * c + r] = m.rest[c][r];
+        d.has_joint = m.joint ? 1 : 0;
+        if (m.joint) {
+            d.joint_min = to_ani(m.joint->min);
+            d.joint_max = to_ani(m.joint->max);
+        }
         models_.push_back(d);
     }
     for (const Keyframe &k : doc.keyframes()) {
@@ -107,6 +114,14 @@ DocumentView::DocumentView(const Document &doc) {
     view_.settings.interpolation = s.interpolation.c_str();
     view_.params = params_.data();
     view_.param_count = static_cast<uint32_t>(params_.size());
+    for (const Light &l : s.lights)
+        lights_.push_back(ani_light{l.name.c_str(), to_ani(l.position), to_ani(l.colour), to_ani(l.falloff)});
+    view_.lights = lights_.data();
+    view_.light_count = static_cast<uint32_t>(lights_.size());
+    view_.ambient = to_ani(s.ambient);
+    view_.render_output = s.render_output.c_str();
+    view_.render_width = s.render_width;
+    view_.render_height = s.render_height;
 }
 
 Document document_from_view(const ani_document_view &view) {
@@ -129,6 +144,19 @@ Document document_from_view(const ani_document_view &view) {
         if (!p.plugin_id || !p.param_id) throw DocumentError("a parameter needs a plugin and an id");
         ParamValue &value = settings.params[p.plugin_id][p.param_id];
         for (size_t c = 0; c < 4; ++c) value[c] = p.value.value[c];
+    }
+    if (ANI_DOCUMENT_VIEW_HAS_LIGHTS(&view)) {
+        if (view.light_count > Settings::kMaxLights) // before copying: the count may be anything
+            throw DocumentError("a scene has at most " + std::to_string(Settings::kMaxLights) + " lights, this one " +
+                                std::to_string(view.light_count));
+        for (uint32_t i = 0; i < view.light_count; ++i) {
+            const ani_light &l = view.lights[i];
+            settings.lights.push_back(Light{str(l.name), from_ani(l.position), from_ani(l.colour), from_ani(l.falloff)});
+        }
+        settings.ambient = from_ani(view.ambient);
+        settings.render_output = str(view.render_output);
+        settings.render_width = view.render_width;
+        settings.render_height = view.render_height;
     }
     doc.set_settings(settings);
 
@@ -158,6 +186,11 @@ Document document_from_view(const ani_document_view &view) {
         }
         m.collision_sound = str(d.collision_sound);
         m.moving_sound = str(d.moving_sound);
+        if (ANI_MODEL_DESC_HAS_SHAPE(&d)) {
+            for (int c = 0; c < 3; ++c)
+                for (int r = 0; r < 3; ++r) m.rest[c][r] = d.rest[3 * c + r];
+            if (d.has_joint) m.joint = JointRange{from_ani(d.joint_min), from_ani(d.joint_max)};
+        }
         doc.add_model(m, from_ani(view.keyframes[0].states[i]));
     }
 

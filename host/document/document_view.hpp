@@ -26,6 +26,7 @@ class DocumentView {
     std::vector<std::vector<int32_t>> keyed_;
     std::vector<ani_keyframe_view> keyframes_;
     std::vector<ani_param_setting> params_;
+    std::vector<ani_light> lights_;
     ani_document_view view_{};
 };
 

@@ -501,6 +501,7 @@ std::vector<Sphere> EditorSession::model_spheres(bool selected_only) const {
     const Frame f = frame();
     std::vector<glm::dmat4> world;
     world_matrices(doc_.models(), f.models, world);
+    apply_rest_shapes(doc_.models(), world);
     std::vector<Sphere> spheres;
     const std::set<int> hidden = hidden_models();
     for (size_t m = 0; m < world.size() && m < meshes_.size(); ++m) {

@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace animator {
 
@@ -23,9 +24,14 @@ bool Frustum::may_see(const glm::dvec3 &center, double radius) const {
 void transform_bounding_sphere(const glm::dmat4 &world, const glm::dvec3 &center, double radius,
                                glm::dvec3 &world_center, double &world_radius) {
     world_center = glm::dvec3(world * glm::dvec4(center, 1.0));
-    const double scale =
-        std::max({glm::length(glm::dvec3(world[0])), glm::length(glm::dvec3(world[1])),
-                  glm::length(glm::dvec3(world[2]))});
+    const glm::dvec3 a(world[0]), b(world[1]), c(world[2]);
+    // The most the matrix stretches a direction: its longest column when they are orthogonal (a
+    // T R S), else (a rest shape's shear) at most the root of their squared lengths' sum.
+    const double tolerance = 1e-9 * (glm::dot(a, a) + glm::dot(b, b) + glm::dot(c, c));
+    const bool orthogonal = std::abs(glm::dot(a, b)) <= tolerance && std::abs(glm::dot(b, c)) <= tolerance &&
+                            std::abs(glm::dot(a, c)) <= tolerance;
+    const double scale = orthogonal ? std::max({glm::length(a), glm::length(b), glm::length(c)})
+                                    : std::sqrt(glm::dot(a, a) + glm::dot(b, b) + glm::dot(c, c));
     world_radius = radius * scale;
 }
 

@@ -113,6 +113,7 @@ const GpuTexture *Renderer::texture(const std::string &id) {
 
 void Renderer::prepare_frame(const Frame &frame, int width, int height) {
     world_matrices(models_, frame.models, world_);
+    apply_rest_shapes(models_, world_); // what is drawn: each mesh in its rest shape
     const glm::dmat4 view = view_matrix(frame.camera);
     const double aspect = height > 0 ? static_cast<double>(width) / height : 1.0;
     const glm::dmat4 projection = projection_matrix(frame.camera.fov_degrees, aspect,

@@ -28,6 +28,11 @@ void world_matrices(const std::vector<Model> &models, const std::vector<ModelPos
     }
 }
 
+void apply_rest_shapes(const std::vector<Model> &models, std::vector<glm::dmat4> &frames) {
+    for (size_t m = 0; m < models.size() && m < frames.size(); ++m)
+        if (models[m].rest != glm::dmat3(1.0)) frames[m] = frames[m] * glm::dmat4(models[m].rest);
+}
+
 glm::dmat4 view_matrix(const CameraState &camera) {
     // The inverse of the camera's own matrix T(position) R(rotation).
     const glm::dmat3 to_camera = glm::transpose(glm::mat3_cast(glm::normalize(camera.rotation)));

@@ -17,10 +17,14 @@ namespace animator {
 // T(center) Rx(angles.x) Ry(angles.y) Rz(angles.z) S(scale), angles in degrees.
 glm::dmat4 model_matrix(const ModelPose &pose);
 
-// Every model's world matrix: its parent's world matrix times its own (parents come first in the
-// document). `out` is resized to the number of models and reused, so a frame allocates nothing.
+// Every model's world frame: its parent's frame times its own T R S (parents come first in the
+// document); a model's mesh is drawn at its frame times its rest shape (apply_rest_shapes). `out` is resized to the number of models and reused, so a frame allocates nothing.
 void world_matrices(const std::vector<Model> &models, const std::vector<ModelPose> &poses,
                     std::vector<glm::dmat4> &out);
+
+// Turns world_matrices' frames into the matrices the models' meshes are drawn and collided
+// with: each frame times its model's rest shape (Model::rest, which children do not inherit).
+void apply_rest_shapes(const std::vector<Model> &models, std::vector<glm::dmat4> &frames);
 
 // World to camera, for a camera at `position` turned by the camera-to-world quaternion (the
 // identity looks down -Z with +Y up).

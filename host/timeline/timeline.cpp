@@ -4,6 +4,7 @@
 #include <glm/gtx/euler_angles.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace animator {
@@ -175,28 +176,48 @@ void Timeline::origin_at(int model, const ani_motion_segment &s, double t, glm::
 }
 
 void Timeline::set_meshes(const std::vector<std::shared_ptr<const Mesh>> &meshes) {
-    // One view per distinct mesh: a gas of 10,000 balls shares one sphere's vertex array.
-    std::map<const Mesh *, std::shared_ptr<const MeshView>> views;
+    // One view per distinct mesh and rest shape: a gas of 10,000 balls shares one sphere's vertex
+    // array. A model with a rest shape (a sheared course node) is collided with in that shape, so
+    // its backend gets the mesh's vertices already through it.
+    std::map<std::pair<const Mesh *, std::array<double, 9>>, std::shared_ptr<const MeshView>> views;
     meshes_.clear();
-    for (const auto &mesh : meshes) {
+    for (size_t i = 0; i < meshes.size(); ++i) {
+        const auto &mesh = meshes[i];
         if (!mesh) {
             meshes_.push_back(nullptr);
             continue;
         }
-        auto &shared = views[mesh.get()];
+        const glm::dmat3 rest = i < doc_.models().size() ? doc_.models()[i].rest : glm::dmat3(1.0);
+        std::array<double, 9> key{};
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r) key[static_cast<size_t>(3 * c + r)] = rest[c][r];
+        auto &shared = views[{mesh.get(), key}];
         if (!shared) {
             auto mv = std::make_shared<MeshView>();
             mv->mesh = mesh;
-            for (const glm::dvec3 &p : mesh->positions) mv->positions.insert(mv->positions.end(), {p.x, p.y, p.z});
+            const bool shaped = rest != glm::dmat3(1.0);
+            for (const glm::dvec3 &p : mesh->positions) {
+                const glm::dvec3 q = shaped ? rest * p : p;
+                mv->positions.insert(mv->positions.end(), {q.x, q.y, q.z});
+            }
             ani_mesh_view &v = mv->view;
             v.struct_size = sizeof v;
             v.positions = mv->positions.data();
             v.vertex_count = static_cast<uint32_t>(mesh->positions.size());
             v.triangles = mesh->triangles.data();
             v.triangle_count = static_cast<uint32_t>(mesh->triangle_count());
-            v.bound_center = to_ani(mesh->bound_center);
-            v.bound_radius = mesh->bound_radius;
-            v.is_sphere = approximates_sphere(*mesh) ? 1 : 0;
+            if (shaped) {
+                Mesh through = *mesh;
+                for (glm::dvec3 &p : through.positions) p = rest * p;
+                compute_bounding_sphere(through);
+                v.bound_center = to_ani(through.bound_center);
+                v.bound_radius = through.bound_radius;
+                v.is_sphere = approximates_sphere(through) ? 1 : 0;
+            } else {
+                v.bound_center = to_ani(mesh->bound_center);
+                v.bound_radius = mesh->bound_radius;
+                v.is_sphere = approximates_sphere(*mesh) ? 1 : 0;
+            }
             shared = std::move(mv);
         }
         meshes_.push_back(shared);

@@ -150,7 +150,7 @@ std::string Reader::string(size_t i, const char *what) const {
 ani_vec3 Reader::colour(size_t i, const char *what) const {
     const ani_vec3 c = vec3(i, what);
     for (double x : {c.x, c.y, c.z})
-        if (x < 0.0 || x > 1.0) fail(std::string("expected ") + what + " components in [0, 1]");
+        if (x < 0.0) fail(std::string("expected ") + what + " components >= 0 (1 is full)");
     return c;
 }
 
@@ -214,7 +214,7 @@ void Reader::read_settings(ani::OwnedDocument &doc) {
             expect_count(1, "nothing");
             return;
         }
-        if (key != "param") once(seen);
+        if (key != "param" && key != "light") once(seen);
         if (key == "max_time_ms") {
             expect_count(2, "a time in milliseconds");
             const std::int64_t t = integer(1, "max_time_ms");
@@ -259,9 +259,35 @@ void Reader::read_settings(ani::OwnedDocument &doc) {
             p.param_id = doc.keep(param);
             for (size_t i = 3; i < tokens_.size(); ++i) p.value.value[i - 3] = number(i, "the value");
             doc.params.push_back(p);
+        } else if (key == "ambient") {
+            expect_count(4, "three numbers");
+            doc.view.ambient = colour(1, "ambient");
+        } else if (key == "light") {
+            // light "NAME" position X Y Z colour R G B falloff C0 C1 C2
+            expect_count(14, "'\"NAME\" position X Y Z colour R G B falloff C0 C1 C2'");
+            if (doc.lights.size() >= ANI_MAX_LIGHTS)
+                fail("a scene has at most " + std::to_string(ANI_MAX_LIGHTS) + " lights");
+            expect_word(2, "position");
+            expect_word(6, "colour");
+            expect_word(10, "falloff");
+            ani_light l{};
+            l.name = doc.keep(string(1, "the light name"));
+            l.position = vec3(3, "the light position");
+            l.colour = colour(7, "the light colour");
+            l.falloff = colour(11, "the light falloff");
+            if (!(l.falloff.x + l.falloff.y + l.falloff.z > 0.0)) fail("expected a falloff that is not all 0");
+            doc.lights.push_back(l);
+        } else if (key == "render") {
+            expect_count(4, "'\"FILE\" WIDTH HEIGHT'");
+            doc.view.render_output = doc.keep(string(1, "the render output"));
+            const std::int64_t w = integer(2, "the render width"), h = integer(3, "the render height");
+            if (w < 0 || h < 0 || w > 16384 || h > 16384)
+                fail("expected a render size of 0 (the default) or 1 to 16384 pixels");
+            doc.view.render_width = static_cast<int32_t>(w);
+            doc.view.render_height = static_cast<int32_t>(h);
         } else {
             fail("unknown settings key " + got(0) + "; expected max_time_ms, gravity, down, "
-                 "cel_shading, skybox, physics_backend, interpolation, param or end");
+                 "cel_shading, skybox, physics_backend, interpolation, param, ambient, light, render or end");
         }
     }
 }
@@ -358,11 +384,30 @@ void Reader::read_model(ani::OwnedDocument &doc) {
         } else if (key == "moving_sound") {
             expect_count(2, "a quoted sound name");
             m.moving_sound = doc.keep(string(1, "moving_sound"));
+        } else if (key == "rest") { // row by row
+            expect_count(10, "nine numbers, row by row");
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c) m.rest[3 * c + r] = number(static_cast<size_t>(1 + 3 * r + c), "rest");
+            const double *a = m.rest;
+            const double det = a[0] * (a[4] * a[8] - a[7] * a[5]) - a[3] * (a[1] * a[8] - a[7] * a[2]) +
+                               a[6] * (a[1] * a[5] - a[4] * a[2]);
+            if (!(det > 1e-12)) fail("expected a rest shape with determinant > 0 (no mirror, no flattening)");
+        } else if (key == "joint") {
+            // joint x MIN MAX y MIN MAX z MIN MAX
+            expect_count(10, "'x MIN MAX y MIN MAX z MIN MAX'");
+            expect_word(1, "x");
+            expect_word(4, "y");
+            expect_word(7, "z");
+            m.has_joint = 1;
+            m.joint_min = {number(2, "the joint range"), number(5, "the joint range"), number(8, "the joint range")};
+            m.joint_max = {number(3, "the joint range"), number(6, "the joint range"), number(9, "the joint range")};
+            if (!(m.joint_min.x <= m.joint_max.x && m.joint_min.y <= m.joint_max.y && m.joint_min.z <= m.joint_max.z))
+                fail("expected each joint range as MIN MAX with MIN <= MAX");
         } else {
             fail("unknown model key " + got(0) + "; expected mesh, parent, kd, ks, shininess, "
                  "texture, tint, reflectivity, transparency, refractive_index, dynamics, gravity, "
                  "mass, velocity, restitution, friction, rotates, angular_velocity, collision_sound, "
-                 "moving_sound or end");
+                 "moving_sound, rest, joint or end");
         }
     }
     if (!have_mesh) fail_at(header_line, "model \"" + name + "\" has no 'mesh'");

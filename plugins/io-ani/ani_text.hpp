@@ -9,7 +9,7 @@
 
 namespace ani_format {
 
-constexpr int kVersion = 1;
+constexpr int kVersion = 2; // the newest this reads; a writer writes the oldest that holds the document
 constexpr const char *kMagic = "animator-ani";
 
 // What a file may hold, so that no file, however hostile, costs the reader more than about a

@@ -20,10 +20,30 @@ std::string str(const char *s) { return s ? s : ""; }
 std::string vec(const ani_vec3 &v) { return number(v.x) + " " + number(v.y) + " " + number(v.z); }
 const char *boolean(int32_t b) { return b ? "true" : "false"; }
 
+bool identity(const double (&m)[9]) {
+    for (int i = 0; i < 9; ++i)
+        if (m[i] != (i % 4 == 0 ? 1.0 : 0.0)) return false;
+    return true;
+}
+
+// Version 2 added lights, ambient, render, rest and joint: a document without them is written
+// as version 1, which older readers take.
+int version_needed(const ani_document_view &doc) {
+    if (ANI_DOCUMENT_VIEW_HAS_LIGHTS(&doc) &&
+        (doc.light_count > 0 || doc.ambient.x != 0.2 || doc.ambient.y != 0.2 || doc.ambient.z != 0.2 ||
+         str(doc.render_output) != "" || doc.render_width != 0 || doc.render_height != 0))
+        return 2;
+    for (uint32_t i = 0; i < doc.model_count; ++i)
+        if (ANI_MODEL_DESC_HAS_SHAPE(&doc.models[i]) && (!identity(doc.models[i].rest) || doc.models[i].has_joint))
+            return 2;
+    return 1;
+}
+
 std::string to_text(const ani_document_view &doc) {
     std::ostringstream out;
     const ani_settings_view &s = doc.settings;
-    out << kMagic << " " << kVersion << "\n"
+    const int version = version_needed(doc);
+    out << kMagic << " " << version << "\n"
         << "# An animation of animator: see docs/ani-format.md.\n\n"
         << "settings\n"
         << "  max_time_ms " << s.max_time_ms << "\n"
@@ -38,6 +58,17 @@ std::string to_text(const ani_document_view &doc) {
         out << "  param " << quote(str(p.plugin_id)) << " " << quote(str(p.param_id));
         for (double v : p.value.value) out << " " << number(v);
         out << "\n";
+    }
+    if (version >= 2) {
+        out << "  ambient " << vec(doc.ambient) << "\n";
+        for (uint32_t i = 0; i < doc.light_count; ++i) {
+            const ani_light &l = doc.lights[i];
+            out << "  light " << quote(str(l.name)) << " position " << vec(l.position) << " colour "
+                << vec(l.colour) << " falloff " << vec(l.falloff) << "\n";
+        }
+        if (str(doc.render_output) != "" || doc.render_width != 0 || doc.render_height != 0)
+            out << "  render " << quote(str(doc.render_output)) << " " << doc.render_width << " "
+                << doc.render_height << "\n";
     }
     out << "end\n";
 
@@ -66,8 +97,20 @@ std::string to_text(const ani_document_view &doc) {
             << "  rotates " << boolean(body ? m.rotates : 0) << "\n"
             << "  angular_velocity " << vec(body ? m.angular_velocity : ani_vec3{0.0, 0.0, 0.0}) << "\n"
             << "  collision_sound " << quote(str(m.collision_sound)) << "\n"
-            << "  moving_sound " << quote(str(m.moving_sound)) << "\n"
-            << "end\n";
+            << "  moving_sound " << quote(str(m.moving_sound)) << "\n";
+        if (ANI_MODEL_DESC_HAS_SHAPE(&m)) {
+            if (!identity(m.rest)) { // row by row
+                out << "  rest";
+                for (int r = 0; r < 3; ++r)
+                    for (int c = 0; c < 3; ++c) out << " " << number(m.rest[3 * c + r]);
+                out << "\n";
+            }
+            if (m.has_joint)
+                out << "  joint x " << number(m.joint_min.x) << " " << number(m.joint_max.x) << " y "
+                    << number(m.joint_min.y) << " " << number(m.joint_max.y) << " z " << number(m.joint_min.z)
+                    << " " << number(m.joint_max.z) << "\n";
+        }
+        out << "end\n";
     }
 
     for (uint32_t k = 0; k < doc.keyframe_count; ++k) {

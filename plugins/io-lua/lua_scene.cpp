@@ -37,6 +37,9 @@ struct Node {
     std::string mesh; // "" for gr.node and gr.joint
     int line = 0;     // where it was made
     glm::dmat4 local{1.0};
+    // Where the node's mesh sits in the node's frame (a ray-tracer primitive's centre and size):
+    // its own, not its children's.
+    glm::dmat4 placement{1.0};
     int parent = -1;
     std::vector<int> children;
     int material = -1;
@@ -48,6 +51,8 @@ struct Node {
     glm::dvec3 angular_velocity{0.0};
     std::string texture, collision_sound, moving_sound;
     double tint = 0.0, reflectivity = 0.0, transparency = 0.0, refractive_index = 1.0;
+    bool joint = false; // a gr.joint: its ranges are kept
+    glm::dvec3 joint_min{0.0}, joint_max{0.0};
 };
 
 // The scene as the script builds it.
@@ -245,8 +250,6 @@ int gr_mesh(lua_State *L) {
     return push_node(L, std::move(n));
 }
 
-// gr.joint(name, {xmin, xinit, xmax}, {ymin, yinit, ymax}): a node turned to its initial angles.
-// The ranges are checked, not kept: the document has no joint limits yet.
 // Says that a call had `given` arguments where the course's API takes `takes`: the rest ignored.
 void note_extra_arguments(lua_State *L, const char *call, int takes, int given) {
     if (given <= takes) return;
@@ -257,6 +260,8 @@ void note_extra_arguments(lua_State *L, const char *call, int takes, int given) 
     scene_of(L).notes.emplace_back(current_line(L), text);
 }
 
+// gr.joint(name, {xmin, xinit, xmax}, {ymin, yinit, ymax} [, {zmin, zinit, zmax}]): a node
+// turned to its initial angles, its ranges kept (the editor clamps a turn to them).
 int gr_joint(lua_State *L) {
     Node n;
     n.name = checked_string(L, 1);
@@ -283,6 +288,26 @@ int gr_joint(lua_State *L) {
             (*r)[1] = clamped;
         }
     }
+    // Ranges all within one turn each way and not in whole degrees look like radians; the course's
+    // viewer read degrees, and so do we, as its author saw them.
+    bool small = true, whole = true;
+    for (const auto *r : {&x, &y, &z})
+        for (double v : *r) {
+            small = small && std::abs(v) <= 2.0 * M_PI + 1e-9;
+            whole = whole && v == std::round(v);
+        }
+    if (small && !whole) {
+        char text[240];
+        std::snprintf(text, sizeof text,
+                      "joint '%.40s': its ranges look like radians (all within 2 pi, not whole degrees); they are "
+                      "read as degrees, as the course's viewer read them",
+                      n.name.c_str());
+        charge(L, sizeof text + 32);
+        scene_of(L).notes.emplace_back(current_line(L), text);
+    }
+    n.joint = true;
+    n.joint_min = {x[0], y[0], z[0]};
+    n.joint_max = {x[2], y[2], z[2]};
     n.local = glm::rotate(glm::dmat4(1.0), glm::radians(z[1]), glm::dvec3(0, 0, 1)) *
               glm::rotate(glm::dmat4(1.0), glm::radians(y[1]), glm::dvec3(0, 1, 0)) *
               glm::rotate(glm::dmat4(1.0), glm::radians(x[1]), glm::dvec3(1, 0, 0));
@@ -296,7 +321,13 @@ int gr_material(lua_State *L) {
     m.kd = {kd[0], kd[1], kd[2]};
     m.ks = {ks[0], ks[1], ks[2]};
     for (double c : {kd[0], kd[1], kd[2], ks[0], ks[1], ks[2]})
-        if (c < 0.0 || c > 1.0) return luaL_error(L, "material colours must be in [0, 1]");
+        if (c < 0.0) return luaL_error(L, "material colours must be >= 0");
+    if (std::max({kd[0], kd[1], kd[2], ks[0], ks[1], ks[2]}) > 1.0) { // the course allowed it
+        const std::string text = "a material colour above 1 is kept as written: brighter than white, it may wash "
+                                 "out to white where lit";
+        charge(L, text.size() + 32);
+        scene_of(L).notes.emplace_back(current_line(L), text);
+    }
     m.shininess = luaL_checknumber(L, 3);
     if (!(m.shininess >= 0.0) || !std::isfinite(m.shininess)) return luaL_error(L, "shininess must be >= 0");
     note_extra_arguments(L, "gr.material", 3, lua_gettop(L));
@@ -534,44 +565,51 @@ void register_api(lua_State *L) {
     lua_setglobal(L, "gr");
 }
 
-// The node's local matrix as a keyframe state: T(center) Rx Ry Rz S(scale). A shear (a
-// non-uniform scale under a rotation, in CS488 call order) cannot be held and is dropped.
-bool to_state(const glm::dmat4 &m, const Node &node, const std::string &path, SceneResult &out,
-              ani_model_state &state, std::string &error) {
-    glm::dvec3 axis[3] = {glm::dvec3(m[0]), glm::dvec3(m[1]), glm::dvec3(m[2])};
-    glm::dvec3 scale(0.0);
-    for (int i = 0; i < 3; ++i) {
-        scale[i] = glm::length(axis[i]);
-        if (!(scale[i] > 1e-12) || !std::isfinite(scale[i])) {
-            error = path + ":" + std::to_string(node.line) + ": node '" + node.name + "' has a zero or invalid scale";
-            return false;
-        }
-        axis[i] /= scale[i];
-    }
-    if (std::abs(glm::dot(axis[0], axis[1])) > 1e-6 || std::abs(glm::dot(axis[1], axis[2])) > 1e-6 ||
-        std::abs(glm::dot(axis[0], axis[2])) > 1e-6)
-        out.warnings.push_back(path + ":" + std::to_string(node.line) + ": node '" + node.name +
-                               "' is sheared (scaled unevenly after a rotation); the shear is dropped");
-    glm::dmat4 rotation(1.0);
-    rotation[0] = glm::dvec4(axis[0], 0.0);
-    rotation[1] = glm::dvec4(glm::normalize(axis[1] - glm::dot(axis[1], axis[0]) * axis[0]), 0.0);
-    rotation[2] = glm::dvec4(glm::cross(glm::dvec3(rotation[0]), glm::dvec3(rotation[1])), 0.0);
+// `m` as a keyframe state and a rest shape: m = T(center) Rx Ry Rz S(scale) U, U unit upper
+// triangular (the shear of a node scaled unevenly after a rotation, in CS488 call order; the
+// identity otherwise). R S U is m's QR decomposition: R's columns are m's by Gram-Schmidt.
+bool to_state(const glm::dmat4 &m, const Node &node, const std::string &path, SceneModel &out, glm::dmat3 &shear,
+              std::string &error) {
+    const glm::dmat3 l(m);
+    auto fail = [&](const char *what) {
+        error = path + ":" + std::to_string(node.line) + ": node '" + node.name + "' " + what;
+        return false;
+    };
+    const glm::dvec3 r0 = l[0] / glm::length(l[0]);
+    const glm::dvec3 u1 = l[1] - glm::dot(l[1], r0) * r0;
+    const glm::dvec3 r1 = u1 / glm::length(u1);
+    const glm::dvec3 r2 = glm::cross(r0, r1);
+    const glm::dmat3 rotation(r0, r1, r2);
+    const glm::dmat3 k = glm::transpose(rotation) * l; // upper triangular
+    const glm::dvec3 diagonal(k[0][0], k[1][1], k[2][2]);
+    for (int i = 0; i < 3; ++i)
+        if (!(diagonal[i] > 1e-12) || !std::isfinite(diagonal[i]) || !std::isfinite(k[2][i]))
+            return fail("has a zero or invalid scale");
+    shear = glm::dmat3(1.0);
+    // Column-major: shear[c][r] is row r of column c. What rounding leaves of no shear is none.
+    auto keep = [](double v) { return std::abs(v) < 1e-12 ? 0.0 : v; };
+    shear[1][0] = keep(k[1][0] / diagonal.x);
+    shear[2][0] = keep(k[2][0] / diagonal.x);
+    shear[2][1] = keep(k[2][1] / diagonal.y);
+    // Without shear the scale is the columns' lengths, as exact as it gets.
+    const glm::dvec3 scale = shear == glm::dmat3(1.0) ? glm::dvec3(glm::length(l[0]), glm::length(l[1]), glm::length(l[2]))
+                                                      : diagonal;
     double ax = 0, ay = 0, az = 0;
-    glm::extractEulerAngleXYZ(rotation, ax, ay, az);
+    glm::extractEulerAngleXYZ(glm::dmat4(rotation), ax, ay, az);
     auto wrap = [](double radians) {
         double d = std::fmod(glm::degrees(radians), 360.0);
         if (d < 0.0) d += 360.0;
         if (d >= 360.0 || std::abs(d - 360.0) < 1e-9 || std::abs(d) < 1e-9) d = 0.0;
         return d;
     };
-    state.center = {m[3].x, m[3].y, m[3].z};
-    state.angles = {wrap(ax), wrap(ay), wrap(az)};
-    state.scale = {scale.x, scale.y, scale.z};
-    state.turn = {0.0, 0.0, 0.0};
-    if (!std::isfinite(state.center.x) || !std::isfinite(state.center.y) || !std::isfinite(state.center.z)) {
-        error = path + ":" + std::to_string(node.line) + ": node '" + node.name + "' is moved out of range";
-        return false;
-    }
+    out.state.center = {m[3].x, m[3].y, m[3].z};
+    out.state.angles = {wrap(ax), wrap(ay), wrap(az)};
+    out.state.scale = {scale.x, scale.y, scale.z};
+    out.state.turn = {0.0, 0.0, 0.0};
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) out.rest[3 * c + r] = shear[c][r];
+    if (!std::isfinite(out.state.center.x) || !std::isfinite(out.state.center.y) || !std::isfinite(out.state.center.z))
+        return fail("is moved out of range");
     return true;
 }
 
@@ -621,11 +659,17 @@ bool flatten(const Scene &scene, int root_index, const std::string &path, SceneR
         m.angular_velocity = {n.angular_velocity.x, n.angular_velocity.y, n.angular_velocity.z};
         m.collision_sound = n.collision_sound;
         m.moving_sound = n.moving_sound;
-        if (!to_state(v.prefix * n.local, n, path, out, m.state, error)) return false;
+        m.has_joint = n.joint;
+        m.joint_min = {n.joint_min.x, n.joint_min.y, n.joint_min.z};
+        m.joint_max = {n.joint_max.x, n.joint_max.y, n.joint_max.z};
+        // The model's mesh is at (its parent's T R S) T R S U = (...) prefix local placement.
+        glm::dmat3 shear(1.0);
+        if (!to_state(v.prefix * n.local * n.placement, n, path, m, shear, error)) return false;
         const int index = static_cast<int>(out.models.size());
         out.models.push_back(std::move(m));
-        for (auto it = n.children.rbegin(); it != n.children.rend(); ++it)
-            stack.push_back({*it, index, glm::dmat4(1.0)});
+        // Children hang from prefix local (CS488), which is this model's T R S times U placement^-1.
+        const glm::dmat4 below = glm::dmat4(shear) * glm::inverse(n.placement);
+        for (auto it = n.children.rbegin(); it != n.children.rend(); ++it) stack.push_back({*it, index, below});
     }
     return true;
 }

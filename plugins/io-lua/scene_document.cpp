@@ -62,6 +62,10 @@ void build_document(const SceneResult &scene, const std::string &path, const ani
         m.angular_velocity = n.angular_velocity;
         m.collision_sound = doc.keep(n.collision_sound);
         m.moving_sound = doc.keep(n.moving_sound);
+        std::copy(std::begin(n.rest), std::end(n.rest), m.rest);
+        m.has_joint = n.has_joint ? 1 : 0;
+        m.joint_min = n.joint_min;
+        m.joint_max = n.joint_max;
         doc.models.push_back(m);
         states.push_back(n.state);
     }
@@ -75,6 +79,12 @@ void build_document(const SceneResult &scene, const std::string &path, const ani
     s.skybox = doc.keep(scene.skybox);
     s.physics_backend = doc.keep(scene.backend);
     s.interpolation = doc.keep(scene.interpolation);
+    for (const SceneLight &l : scene.lights)
+        doc.lights.push_back(ani_light{doc.keep(l.name), l.position, l.colour, l.falloff});
+    doc.view.ambient = scene.ambient;
+    doc.view.render_output = doc.keep(scene.render_output);
+    doc.view.render_width = scene.render_width;
+    doc.view.render_height = scene.render_height;
     ani_keyframe_view k{};
     k.struct_size = sizeof k;
     k.time_ms = 0;

@@ -28,6 +28,15 @@ struct SceneModel {
     ani_vec3 angular_velocity{0, 0, 0};
     std::string collision_sound, moving_sound;
     ani_model_state state{}; // at t = 0, relative to the parent
+    double rest[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}; // the shear under T R S, column-major (ABI 1.7)
+    bool has_joint = false;
+    ani_vec3 joint_min{0, 0, 0}, joint_max{0, 0, 0};
+};
+
+// A light of the scene (gr.light).
+struct SceneLight {
+    std::string name;
+    ani_vec3 position{0, 0, 0}, colour{1, 1, 1}, falloff{1, 0, 0};
 };
 
 struct SceneResult {
@@ -38,6 +47,10 @@ struct SceneResult {
     bool cel_shading = false;
     std::string skybox, backend = "physics.custom", interpolation = "interpolation.linear";
     ani_camera_state camera{{0, 0, 0}, {1, 0, 0, 0}, 50.0};
+    std::vector<SceneLight> lights;
+    ani_vec3 ambient{0.2, 0.2, 0.2};
+    std::string render_output; // gr.render's file name and size; "" and 0 when not called
+    int32_t render_width = 0, render_height = 0;
     std::vector<std::string> warnings; // "path:line: ..." for the host's log
 };
 

@@ -8,7 +8,7 @@ namespace lua_scene {
 
 namespace {
 
-constexpr char kMagic[] = "animator-scene 1\n"; // a new layout gets a new number
+constexpr char kMagic[] = "animator-scene 2\n"; // a new layout gets a new number
 constexpr char kResult = 'R', kError = 'E';
 
 // Both ends are the same build of this plugin on the same machine: numbers go as their bytes.
@@ -94,7 +94,8 @@ class Reader {
 
 // The fewest bytes a model or a string can take: what a lying count is checked against.
 constexpr size_t kStringBytes = sizeof(uint64_t);
-constexpr size_t kModelBytes = 6 * kStringBytes + 2 * sizeof(int32_t) + 2 + 25 * sizeof(double);
+constexpr size_t kModelBytes = 6 * kStringBytes + 2 * sizeof(int32_t) + 4 + 40 * sizeof(double);
+constexpr size_t kLightBytes = kStringBytes + 9 * sizeof(double);
 
 } // namespace
 
@@ -114,6 +115,17 @@ std::string encode_result(const SceneResult &r) {
     w.put(r.camera.fov_degrees);
     w.put<uint64_t>(r.warnings.size());
     for (const auto &warning : r.warnings) w.put(warning);
+    w.put<uint64_t>(r.lights.size());
+    for (const SceneLight &l : r.lights) {
+        w.put(l.name);
+        w.put(l.position);
+        w.put(l.colour);
+        w.put(l.falloff);
+    }
+    w.put(r.ambient);
+    w.put(r.render_output);
+    w.put(r.render_width);
+    w.put(r.render_height);
     w.put<uint64_t>(r.models.size());
     for (const SceneModel &m : r.models) {
         w.put(m.name);
@@ -139,6 +151,10 @@ std::string encode_result(const SceneResult &r) {
         w.put(m.collision_sound);
         w.put(m.moving_sound);
         for (const ani_vec3 &v : {m.state.center, m.state.angles, m.state.scale, m.state.turn}) w.put(v);
+        for (double x : m.rest) w.put(x);
+        w.put(m.has_joint);
+        w.put(m.joint_min);
+        w.put(m.joint_max);
     }
     return w.take();
 }
@@ -178,6 +194,18 @@ bool decode_reply(const std::string &bytes, const std::string &path, SceneResult
         s.camera.rotation.z = r.get<double>();
         s.camera.fov_degrees = r.get<double>();
         for (size_t n = r.get_count(kStringBytes); n > 0; --n) s.warnings.push_back(r.get_string());
+        for (size_t n = r.get_count(kLightBytes); n > 0; --n) {
+            SceneLight l;
+            l.name = r.get_string();
+            l.position = r.get_vec3();
+            l.colour = r.get_vec3();
+            l.falloff = r.get_vec3();
+            s.lights.push_back(std::move(l));
+        }
+        s.ambient = r.get_vec3();
+        s.render_output = r.get_string();
+        s.render_width = r.get<int32_t>();
+        s.render_height = r.get<int32_t>();
         const size_t model_count = r.get_count(kModelBytes);
         s.models.reserve(model_count);
         for (size_t i = 0; i < model_count; ++i) {
@@ -210,6 +238,10 @@ bool decode_reply(const std::string &bytes, const std::string &path, SceneResult
             m.state.angles = r.get_vec3();
             m.state.scale = r.get_vec3();
             m.state.turn = r.get_vec3();
+            for (double &x : m.rest) x = r.get<double>();
+            m.has_joint = r.get_bool();
+            m.joint_min = r.get_vec3();
+            m.joint_max = r.get_vec3();
             s.models.push_back(std::move(m));
         }
         if (r.left() != 0) throw Malformed("bytes after the scene");

@@ -79,7 +79,7 @@ TEST_CASE("malformed .ani files fail with the file, the line and what was expect
     const std::vector<Case> cases = {
         {"empty", "", ":1: the file is empty"},
         {"no_magic", "hello 1\n", ":1: expected 'animator-ani'"},
-        {"newer_version", "animator-ani 2\n", ":1: format version 2 was written by a newer animator"},
+        {"newer_version", "animator-ani 3\n", ":1: format version 3 was written by a newer animator"},
         {"version_word", "animator-ani one\n", ":1: expected a whole number for the format version"},
         {"unknown_block", std::string(kValidHeader) + "models\n", ":2: expected 'settings', 'model' or 'keyframe'"},
         {"unknown_setting", std::string(kValidHeader) + "settings\n  speed 3\nend\n", ":3: unknown settings key 'speed'"},
@@ -100,7 +100,12 @@ TEST_CASE("malformed .ani files fail with the file, the line and what was expect
         {"unclosed_string", std::string(kValidHeader) + "model \"b\n", ":2: a string is not closed"},
         {"duplicate_model", std::string(kValidHeader) + model + model, ":5: a model named \"ball\" already exists"},
         {"duplicate_key", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  mesh \"t\"\nend\n", ":4: 'mesh' is given twice"},
-        {"kd_range", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  kd 1 2 0\nend\n", ":4: expected kd components in [0, 1]"},
+        {"kd_range", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  kd 1 -2 0\nend\n", ":4: expected kd components >= 0"},
+        {"light_words", std::string(kValidHeader) + "settings\n  light \"l\" at 0 0 0 colour 1 1 1 falloff 1 0 0\nend\n", ":3: expected 'position', got 'at'"},
+        {"light_falloff", std::string(kValidHeader) + "settings\n  light \"l\" position 0 0 0 colour 1 1 1 falloff 0 0 0\nend\n", ":3: expected a falloff that is not all 0"},
+        {"render_size", std::string(kValidHeader) + "settings\n  render \"a.png\" -1 10\nend\n", ":3: expected a render size of 0"},
+        {"rest_mirror", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  rest -1 0 0 0 1 0 0 0 1\nend\n", ":4: expected a rest shape with determinant > 0"},
+        {"joint_order", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  joint x 10 -10 y 0 0 z 0 0\nend\n", ":4: expected each joint range as MIN MAX with MIN <= MAX"},
         {"missing_number", std::string(kValidHeader) + "model \"b\"\n  mesh \"s\"\n  velocity 1 2\nend\n", ":4: expected three numbers after 'velocity'"},
         {"no_keyframe", std::string(kValidHeader) + model, ":5: the file ends without a 'keyframe 0' block"},
         {"first_not_zero", std::string(kValidHeader) + "keyframe 5\nend\n", ":2: expected the first keyframe at 0 ms"},
@@ -253,4 +258,42 @@ TEST_CASE("a model's rigid-body keys: absent (older files) read as the defaults,
     CHECK_THAT(text, Catch::Contains("model \"old\"\n") && Catch::Contains("  restitution 1\n  friction 0\n"
                                                                            "  rotates false\n  angular_velocity 0 0 0\n"));
     CHECK_THAT(text, Catch::Contains("  restitution 0.25\n  friction 1.5\n  rotates true\n  angular_velocity 0 -2.5 6.28\n"));
+}
+
+TEST_CASE("lights, ambient, render output, rest shapes and joint ranges round trip; only then is the file version 2") {
+    const fs::path dir = test::fresh_dir("ani_scene_keys");
+    Document doc;
+    Model m;
+    m.name = "arm";
+    m.mesh = "cube";
+    m.material.kd = {1.5, 0.25, 0.0}; // above 1: the course allowed it
+    m.rest = glm::dmat3(1.0);
+    m.rest[1][0] = 0.75; // x += 0.75 y: a shear
+    m.rest[2][1] = -0.125;
+    m.joint = JointRange{{-90.0, 0.0, 0.0}, {45.5, 0.0, 10.0}};
+    doc.add_model(m, ModelState{});
+    const fs::path plain = dir / "plain.ani";
+    save_document(registry(), Document(), plain);
+    CHECK(test::read_file(plain).rfind("animator-ani 1\n", 0) == 0); // older readers still take it
+
+    Settings s = doc.settings();
+    s.lights = {Light{"key", {1.0, 2.0, 3.0}, {0.9, 0.8, 0.7}, {1.0, 0.0, 0.25}},
+                Light{"fill", {-4.0, 0.5, 1e-3}, {0.2, 0.2, 1.25}, {0.5, 0.125, 0.0}}};
+    s.ambient = {0.3, 0.1, 0.05};
+    s.render_output = "still.png";
+    s.render_width = 640;
+    s.render_height = 480;
+    doc.set_settings(s);
+    const fs::path path = dir / "scene.ani";
+    save_document(registry(), doc, path);
+    const std::string text = test::read_file(path);
+    CHECK(text.rfind("animator-ani 2\n", 0) == 0);
+    CHECK_THAT(text, Catch::Contains("  light \"key\" position 1 2 3 colour 0.9 0.8 0.7 falloff 1 0 0.25\n"));
+    CHECK_THAT(text, Catch::Contains("  render \"still.png\" 640 480\n"));
+    CHECK_THAT(text, Catch::Contains("  rest 1 0.75 0 0 1 -0.125 0 0 1\n")); // row by row
+    CHECK_THAT(text, Catch::Contains("  joint x -90 45.5 y 0 0 z 0 10\n"));
+    const Document read = open_document(registry(), path).document;
+    CHECK(read == doc);
+    CHECK(read.models()[0].rest[1][0] == 0.75);
+    CHECK(read.settings().lights[1].falloff == glm::dvec3(0.5, 0.125, 0.0));
 }

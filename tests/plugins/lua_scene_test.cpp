@@ -218,8 +218,8 @@ TEST_CASE("scene errors name the file and the line") {
         {"max_time", "gr.settings{max_time = 0.5}\nreturn gr.node('r')\n", "max_time.lua:1: 'max_time' must be in"},
         {"camera_same", "gr.camera{eye = {1, 1, 1}, look_at = {1, 1, 1}}\nreturn gr.node('r')\n",
          "camera_same.lua:1: the camera's look_at must differ"},
-        {"material", "local m = gr.material({2, 0, 0}, {0, 0, 0}, 10)\nreturn gr.node('r')\n",
-         "material.lua:1: material colours must be in [0, 1]"},
+        {"material", "local m = gr.material({0.5, -0.1, 0}, {0, 0, 0}, 10)\nreturn gr.node('r')\n",
+         "material.lua:1: material colours must be >= 0"},
         {"runtime", "local r = gr.node('r')\nlocal x = nil\nx.y = 1\nreturn r\n", "runtime.lua:3: attempt to index"},
     };
     for (const Bad &b : bad) {

@@ -5,7 +5,7 @@
  * for a view returned by a plugin, until the plugin's matching release function).
  *
  * Units: lengths in scene units (1 unit = 1 metre), times in milliseconds for keyframes and max
- * time, angles in degrees, colours RGB in [0, 1].
+ * time, angles in degrees, colours RGB >= 0 (1 is full; the CS488 course allowed brighter).
  */
 #ifndef ANIMATOR_SDK_DOCUMENT_H
 #define ANIMATOR_SDK_DOCUMENT_H
@@ -53,11 +53,22 @@ typedef struct ani_model_desc {
     double friction;           /* >= 0, default 0: frictionless (Coulomb's mu) */
     int32_t rotates;           /* 0 or 1, default 0: turned only by its keys */
     ani_vec3 angular_velocity; /* at t = 0, radians per second about world axes, default 0 */
+    /* Since ABI 1.7 (ANI_MODEL_DESC_HAS_SHAPE; otherwise the identity and no joint). */
+    double rest[9];     /* a fixed linear shape under the keyed T R S, column-major 3x3, det > 0:
+                         * the mesh is at T R S rest; children hang from T R S. A physics backend
+                         * gets the model's mesh already in this shape and may ignore it. */
+    int32_t has_joint;  /* 0 or 1: the model is a joint with a range of its own angles */
+    ani_vec3 joint_min; /* degrees, read signed in (-180, 180], per own axis X Y Z */
+    ani_vec3 joint_max; /* >= joint_min */
 } ani_model_desc;
 
 /* Whether a model description carries the rigid-body fields of ABI 1.3. */
 #define ANI_MODEL_DESC_HAS_BODY(d)                                                             \
     ((d)->struct_size >= offsetof(ani_model_desc, angular_velocity) + sizeof(ani_vec3))
+
+/* Whether a model description carries the rest shape and joint range of ABI 1.7. */
+#define ANI_MODEL_DESC_HAS_SHAPE(d)                                                            \
+    ((d)->struct_size >= offsetof(ani_model_desc, joint_max) + sizeof(ani_vec3))
 
 /* One model's state at one keyframe (the seed's NodeState), in its parent's frame (the world for
  * a model under the root): T(center) Rx(angles.x) Ry(angles.y) Rz(angles.z) S(scale). */
@@ -102,6 +113,17 @@ typedef struct ani_settings_view {
     const char *interpolation;   /* interpolator plugin id, e.g. "interpolation.linear" */
 } ani_settings_view;
 
+/* A point light (since ABI 1.7): it reaches a point at distance d as
+ * colour / (falloff.x + falloff.y d + falloff.z d^2). */
+typedef struct ani_light {
+    const char *name;
+    ani_vec3 position; /* world */
+    ani_vec3 colour;   /* >= 0 */
+    ani_vec3 falloff;  /* >= 0, not all 0; {1, 0, 0} for none */
+} ani_light;
+
+#define ANI_MAX_LIGHTS 8
+
 typedef struct ani_document_view {
     uint32_t struct_size;
     const ani_model_desc *models;
@@ -111,7 +133,17 @@ typedef struct ani_document_view {
     ani_settings_view settings;
     const ani_param_setting *params;
     uint32_t param_count;
+    /* Since ABI 1.7 (ANI_DOCUMENT_VIEW_HAS_LIGHTS; otherwise none, ambient 0.2, no render). */
+    const ani_light *lights;   /* at most ANI_MAX_LIGHTS; none: the renderer's own light */
+    uint32_t light_count;
+    ani_vec3 ambient;          /* >= 0, default 0.2 0.2 0.2 */
+    const char *render_output; /* the still `animator render` writes when not told; "" none */
+    int32_t render_width;      /* pixels, 0 for the command's default */
+    int32_t render_height;
 } ani_document_view;
+
+#define ANI_DOCUMENT_VIEW_HAS_LIGHTS(v)                                                        \
+    ((v)->struct_size >= offsetof(ani_document_view, render_height) + sizeof(int32_t))
 
 #ifdef __cplusplus
 }

@@ -18,6 +18,7 @@ struct OwnedDocument {
     std::vector<std::vector<int32_t>> keyed;          // per keyframe, one per model
     std::vector<ani_keyframe_view> keyframes;
     std::vector<ani_param_setting> params;
+    std::vector<ani_light> lights;
     ani_document_view view{};
 
     const char *keep(const std::string &s) {
@@ -36,6 +37,8 @@ struct OwnedDocument {
         s.skybox = keep("");
         s.physics_backend = keep("physics.custom");
         s.interpolation = keep("interpolation.linear");
+        view.ambient = {0.2, 0.2, 0.2};
+        view.render_output = keep("");
     }
 
     // A model with every property at its default.
@@ -52,6 +55,7 @@ struct OwnedDocument {
         m.refractive_index = 1.0;
         m.mass = 1.0;
         m.restitution = 1.0; // ABI 1.3: elastic, frictionless, turned by keys only
+        m.rest[0] = m.rest[4] = m.rest[8] = 1.0; // ABI 1.7: no rest shape, no joint
         return m;
     }
 
@@ -68,6 +72,8 @@ struct OwnedDocument {
         view.keyframe_count = static_cast<uint32_t>(keyframes.size());
         view.params = params.data();
         view.param_count = static_cast<uint32_t>(params.size());
+        view.lights = lights.data();
+        view.light_count = static_cast<uint32_t>(lights.size());
     }
 };
 
