@@ -61,6 +61,23 @@ TEST_CASE("world matrices compose a model's with its parent's") {
     check_near(apply(world[2], {0, 0, 0}), {9, 1, 0});
 }
 
+TEST_CASE("a rest shape shapes its own model's mesh and not its children's frames") {
+    std::vector<Model> models(2);
+    models[0].rest[1][0] = 0.5; // x += 0.5 y
+    models[1].parent = 0;
+    std::vector<ModelPose> poses(2);
+    poses[0].center = {10, 0, 0};
+    poses[0].scale = {2, 2, 2};
+    poses[1].center = {0, 1, 0};
+    std::vector<glm::dmat4> world;
+    world_matrices(models, poses, world);
+    check_near(apply(world[1], {0, 0, 0}), {10, 2, 0}); // the child hangs from T R S only
+    apply_rest_shapes(models, world);
+    // The parent's mesh corner (1, 1, 0) is sheared to (1.5, 1, 0), then scaled and moved.
+    check_near(apply(world[0], {1, 1, 0}), {13, 2, 0});
+    check_near(apply(world[1], {0, 0, 0}), {10, 2, 0});
+}
+
 TEST_CASE("the view matrix puts the camera at the origin looking down -Z") {
     CameraState camera;
     camera.position = {0, 0, 5};
