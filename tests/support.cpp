@@ -82,6 +82,17 @@ Document random_document(std::mt19937 &rng, int models, int keyframes) {
     s.interpolation = rng() % 2 ? "interpolation.linear" : "interpolation.smooth";
     s.params["physics.bullet"]["step"] = {1.0 / 240.0, 0.0, 0.0, 0.0};
     s.params["shading.phong"]["cel_outline_colour"] = {unit(rng), unit(rng), unit(rng), 1.0};
+    // Version 2's keys in documents of 3 models or more (smaller ones stay version 1 files).
+    const bool scene_keys = models >= 3;
+    if (scene_keys) {
+        for (int l = 0, n = static_cast<int>(rng() % (Settings::kMaxLights + 1)); l < n; ++l)
+            s.lights.push_back(Light{"light " + std::to_string(l), vec(), 2.0 * colour(),
+                                     glm::dvec3(1.0 + unit(rng), unit(rng), unit(rng))});
+        s.ambient = colour();
+        s.render_output = rng() % 2 ? "out \"still\".png" : "";
+        s.render_width = static_cast<int>(rng() % 4000);
+        s.render_height = static_cast<int>(rng() % 4000);
+    }
     doc.set_settings(s);
     for (int i = 0; i < models; ++i) {
         Model m;
@@ -106,6 +117,12 @@ Document random_document(std::mt19937 &rng, int models, int keyframes) {
         m.angular_velocity = vec();
         m.collision_sound = rng() % 2 ? "click" : "";
         m.moving_sound = rng() % 2 ? "hum" : "";
+        if (scene_keys && rng() % 2) {
+            m.material.kd *= 3.0; // colours above 1 (the course allowed them)
+            m.rest[1][0] = any(rng) / 1e3; // a shear keeps the determinant 1
+            m.rest[2][1] = any(rng) / 1e3;
+            m.joint = JointRange{glm::dvec3(-unit(rng) * 180.0, 0.0, -1.0), glm::dvec3(unit(rng) * 180.0, 0.0, 1.0)};
+        }
         doc.add_model(m, state());
     }
     doc.set_camera(0, camera());

@@ -35,12 +35,15 @@ namespace {
 
 extern "C" char **environ;
 
+// Without --size: the document's render size (a course scene's gr.render) where it gives one.
+constexpr int kDefaultWidth = 1280, kDefaultHeight = 720;
+
 struct RenderCommandOptions {
-    std::string file, out, backend, shading = "shading.phong", size = "1280x720", video;
+    std::string file, out, backend, shading = "shading.phong", size, video; // size "": not given
     std::vector<std::string> params;
     double from = 0.0, to = -1.0, fps = 30.0;
     int compression = 5;
-    bool progress = false;
+    bool progress = false, fps_given = false;
 };
 
 // "WxH" into width and height; "" when valid, else what is wrong (CLI11's check convention).
@@ -148,15 +151,35 @@ int run_render(const RenderCommandOptions &o) {
     std::optional<OpenedDocument> opened = open_or_report(env.plugins, o.file);
     if (!opened) return kBadInput;
     Document &doc = opened->document;
+    // Without --out, the still the document names (gr.render's file), relative to its folder.
+    const bool still = o.out.empty();
+    std::filesystem::path still_file;
+    if (still) {
+        if (doc.settings().render_output.empty()) {
+            std::cerr << "animator: " << o.file
+                      << ": --out is required: the document names no render output of its own\n";
+            return kUsage;
+        }
+        if (o.to >= 0.0 || o.fps_given || !o.video.empty()) {
+            std::cerr
+                << "animator: --to, --fps and --video make frames: they need --out (without it "
+                   "one still is drawn, at --from, into the document's render output)\n";
+            return kUsage;
+        }
+        still_file = doc.settings().render_output;
+        if (still_file.is_relative())
+            still_file = std::filesystem::path(o.file).parent_path() / still_file;
+    }
     const double max_time = static_cast<double>(doc.settings().max_time_ms) / 1000.0;
-    const double to = o.to < 0.0 ? max_time : o.to;
+    const double to = still ? o.from : o.to < 0.0 ? max_time : o.to;
     if (to > max_time || o.from > to) {
         std::cerr << "animator: " << o.file << ": frames from " << o.from << " s to " << to
                   << " s are not within the animation (0 to " << max_time << " s)\n";
         return kBadInput;
     }
-    int width = 0, height = 0;
-    parse_size(o.size, &width, &height);
+    int width = doc.settings().render_width > 0 ? doc.settings().render_width : kDefaultWidth;
+    int height = doc.settings().render_height > 0 ? doc.settings().render_height : kDefaultHeight;
+    if (!o.size.empty()) parse_size(o.size, &width, &height);
     try {
         // A parameter the shading plugin declares goes to it; any other to the physics backend.
         const std::string backend = o.backend.empty() ? doc.settings().physics_backend : o.backend;
@@ -194,6 +217,18 @@ int run_render(const RenderCommandOptions &o) {
         Renderer renderer(env.plugins, env.assets, options);
         renderer.set_document(doc, meshes);
         OffscreenFramebuffer framebuffer(width, height);
+        if (still) {
+            std::vector<std::uint8_t> pixels;
+            renderer.draw(timeline.evaluate(o.from), framebuffer.target());
+            framebuffer.read_rgb(pixels);
+            if (still_file.has_parent_path())
+                std::filesystem::create_directories(still_file.parent_path());
+            write_png(still_file, width, height, pixels, o.compression);
+            if (o.progress) std::cout << "frame 1 of 1" << std::endl;
+            std::cout << "wrote " << still_file.string() << " (" << width << "x" << height
+                      << ", the frame at " << o.from << " s)\n";
+            return kSuccess;
+        }
         std::filesystem::create_directories(o.out);
         PngFrameWriter writer(o.out, width, height, 0, o.compression);
 
@@ -226,16 +261,24 @@ int run_render(const RenderCommandOptions &o) {
 void add_render_command(CLI::App &app, std::function<int()> &run) {
     auto o = std::make_shared<RenderCommandOptions>();
     CLI::App *cmd = app.add_subcommand(
-        "render", "Bake an animation and write its frames as PNG files, without a display");
+        "render",
+        "Bake an animation and write its frames as PNG files (or, without --out, the still its "
+        "document names), without a display");
     cmd->add_option("FILE", o->file, "an animation (.ani) or scene (.lua)")->required();
-    cmd->add_option("--out", o->out, "the folder to write frame_00000.png, ... into")->required();
+    cmd->add_option(
+        "--out", o->out,
+        "the folder to write frame_00000.png, ... into (default: none; without it, one still at "
+        "--from is written to the document's own render output, a course scene's gr.render "
+        "file, relative to the document's folder)");
     cmd->add_option("--from", o->from, "the first frame's time in seconds (default 0)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--to", o->to, "the last frame's time in seconds (default: the max time)")
         ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--fps", o->fps, "frames per second (default 30)")
-        ->check(CLI::Range(0.001, 1000.0));
-    cmd->add_option("--size", o->size, "WIDTHxHEIGHT in pixels (default 1280x720)")
+    CLI::Option *fps = cmd->add_option("--fps", o->fps, "frames per second (default 30)")
+                           ->check(CLI::Range(0.001, 1000.0));
+    cmd->add_option("--size", o->size,
+                    "WIDTHxHEIGHT in pixels (default: the document's render size, a course scene's "
+                    "gr.render, else 1280x720)")
         ->check([](const std::string &s) { return parse_size(s); });
     cmd->add_option("--backend", o->backend,
                     "physics backend plugin id (default: the animation's)");
@@ -253,7 +296,10 @@ void add_render_command(CLI::App &app, std::function<int()> &run) {
                   "print a line \"frame K of N\" on stdout as each frame is drawn, for a program "
                   "that shows the progress (the editor's Render); the render then also stops when "
                   "that program ends");
-    cmd->callback([&run, o] { run = [o] { return run_render(*o); }; });
+    cmd->callback([&run, o, fps] {
+        o->fps_given = fps->count() > 0;
+        run = [o] { return run_render(*o); };
+    });
 }
 
 } // namespace animator::cli

@@ -86,4 +86,14 @@ void PngFrameWriter::work() {
     }
 }
 
+void write_png(const std::filesystem::path &file, int width, int height,
+               const std::vector<std::uint8_t> &rgb, int compression) {
+    if (rgb.size() != static_cast<size_t>(width) * static_cast<size_t>(height) * 3)
+        throw RenderError(file.string() + ": the image has not width x height RGB pixels");
+    stbi_write_png_compression_level = std::clamp(compression, 5, 9);
+    stbi_write_force_png_filter = 4;
+    if (!stbi_write_png(file.c_str(), width, height, 3, rgb.data(), width * 3))
+        throw RenderError(file.string() + ": cannot be written");
+}
+
 } // namespace animator

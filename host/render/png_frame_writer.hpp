@@ -59,4 +59,9 @@ class PngFrameWriter {
     std::vector<std::thread> workers_;
 };
 
+// Writes one image (width * height * 3 bytes of RGB, rows top first) as the PNG file `file`, at
+// stb's zlib level `compression` (5 to 9), on this thread. Throws RenderError when it cannot.
+void write_png(const std::filesystem::path &file, int width, int height,
+               const std::vector<std::uint8_t> &rgb, int compression = 5);
+
 } // namespace animator

@@ -121,15 +121,31 @@ void Renderer::prepare_frame(const Frame &frame, int width, int height) {
     view_ = view;
     view_projection_ = projection * view;
     frustum_ = Frustum(view_projection_);
-    const glm::dvec3 light = frame.camera.position + glm::normalize(frame.camera.rotation) *
-                                                         glm::dvec3(options_.light_offset);
-    frame_uniforms_.view = glm::mat4(view);
-    frame_uniforms_.projection = glm::mat4(projection);
-    frame_uniforms_.camera_position = glm::vec3(frame.camera.position);
-    frame_uniforms_.light_position = glm::vec3(light);
-    frame_uniforms_.light_colour = options_.light_colour;
-    frame_uniforms_.ambient = options_.ambient;
-    frame_uniforms_.selected_tint = options_.selected_tint;
+    FrameUniforms &u = frame_uniforms_;
+    u.view = glm::mat4(view);
+    u.projection = glm::mat4(projection);
+    u.camera_position = glm::vec3(frame.camera.position);
+    // The document's lights where it has some, else one riding with the camera.
+    u.light_position.fill(glm::vec3(0.0f));
+    u.light_colour.fill(glm::vec3(0.0f)); // unused slots give no light
+    u.light_falloff.fill(glm::vec3(1.0f, 0.0f, 0.0f));
+    const auto &lights = settings_.lights;
+    if (lights.empty()) {
+        u.light_count = 1;
+        u.light_position[0] =
+            glm::vec3(frame.camera.position +
+                      glm::normalize(frame.camera.rotation) * glm::dvec3(options_.light_offset));
+        u.light_colour[0] = options_.light_colour;
+    } else {
+        u.light_count = static_cast<int>(std::min<size_t>(lights.size(), kMaxShadingLights));
+        for (size_t i = 0; i < static_cast<size_t>(u.light_count); ++i) {
+            u.light_position[i] = glm::vec3(lights[i].position);
+            u.light_colour[i] = glm::vec3(lights[i].colour);
+            u.light_falloff[i] = glm::vec3(lights[i].falloff);
+        }
+    }
+    u.ambient = glm::vec3(settings_.ambient);
+    u.selected_tint = options_.selected_tint;
 }
 
 bool Renderer::visible(int model) const {

@@ -2,6 +2,7 @@
 
 #include <glad/gl.h>
 
+#include <cstdlib>
 #include <vector>
 
 namespace animator {
@@ -74,6 +75,16 @@ int ShaderProgram::uniform_location(const std::string &name) const {
 }
 
 unsigned ShaderProgram::uniform_type(const std::string &name) const {
+    // GL names an active array by its first element, "lights[0]", with its active size.
+    std::string array;
+    long element = -1;
+    const auto open = name.rfind('[');
+    if (open != std::string::npos && name.size() > open + 2 && name.back() == ']') {
+        char *end = nullptr;
+        element = std::strtol(name.c_str() + open + 1, &end, 10);
+        if (end != name.c_str() + name.size() - 1 || element < 0) element = -1;
+        array = name.substr(0, open) + "[0]";
+    }
     GLint count = 0;
     glGetProgramiv(program_, GL_ACTIVE_UNIFORMS, &count);
     char buffer[256];
@@ -83,7 +94,8 @@ unsigned ShaderProgram::uniform_type(const std::string &name) const {
         GLenum type = 0;
         glGetActiveUniform(program_, static_cast<GLuint>(i), sizeof buffer, &length, &size, &type,
                            buffer);
-        if (name == std::string(buffer, static_cast<size_t>(length))) return type;
+        const std::string active(buffer, static_cast<size_t>(length));
+        if (name == active || (element >= 0 && element < size && array == active)) return type;
     }
     return 0;
 }

@@ -25,7 +25,8 @@ class ShaderProgram {
     // The location of a uniform, or -1 when the program has none by that name (or the compiler
     // dropped it as unused).
     int uniform_location(const std::string &name) const;
-    // GL's type of an active uniform (GL_FLOAT_VEC3...), or 0 when it is not active.
+    // GL's type of an active uniform (GL_FLOAT_VEC3...), or 0 when it is not active. An element
+    // of an array ("lights[3]") has the array's type when the array is active that far.
     unsigned uniform_type(const std::string &name) const;
 
   private:

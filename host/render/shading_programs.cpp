@@ -95,7 +95,8 @@ std::unique_ptr<LinkedProgram> ShadingPrograms::link(const ani_shader_program &s
         const std::string name = u.name ? u.name : "";
         const std::string semantic_text = u.semantic ? u.semantic : "";
         std::string param_id;
-        const auto semantic = parse_semantic(semantic_text, param_id);
+        int light = 0;
+        const auto semantic = parse_semantic(semantic_text, param_id, &light);
         if (!semantic)
             throw ShaderError("uniform '" + name + "' has a semantic the host does not know: '" +
                               semantic_text + "'");
@@ -111,6 +112,7 @@ std::unique_ptr<LinkedProgram> ShadingPrograms::link(const ani_shader_program &s
             throw ShaderError("uniform '" + name + "' is declared with another type in the GLSL");
         bound.type = type;
         bound.semantic = *semantic;
+        bound.light = light;
         if (*semantic == UniformSemantic::Param) {
             for (size_t p = 0; p < param_ids_.size(); ++p)
                 if (param_ids_[p] == param_id) bound.param = static_cast<int>(p);

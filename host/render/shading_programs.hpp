@@ -27,6 +27,7 @@ struct BoundUniform {
     ani_uniform_type type = ANI_UNIFORM_FLOAT;
     UniformSemantic semantic = UniformSemantic::Model;
     int param = -1; // for UniformSemantic::Param: the index into ShadingPrograms' values
+    int light = 0;  // for the per-light semantics ("light_position:N"): N
 };
 
 struct LinkedProgram {

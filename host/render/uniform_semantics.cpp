@@ -31,17 +31,39 @@ constexpr Known kKnown[] = {
     {"texture", UniformSemantic::Texture, ANI_UNIFORM_SAMPLER_2D},
     {"skybox", UniformSemantic::Skybox, ANI_UNIFORM_SAMPLER_CUBE},
     {"selected_tint", UniformSemantic::SelectedTint, ANI_UNIFORM_VEC4},
+    {"light_count", UniformSemantic::LightCount, ANI_UNIFORM_INT},
+};
+
+// "light_position:N" and the like: one of the scene's lights, N in 0..kMaxShadingLights-1.
+constexpr Known kPerLight[] = {
+    {"light_position:", UniformSemantic::LightPositionAt, ANI_UNIFORM_VEC3},
+    {"light_colour:", UniformSemantic::LightColourAt, ANI_UNIFORM_VEC3},
+    {"light_falloff:", UniformSemantic::LightFalloffAt, ANI_UNIFORM_VEC3},
 };
 
 constexpr const char kParamPrefix[] = "param:";
 
+// N of "<prefix>N": one decimal digit below kMaxShadingLights, nothing else; -1 otherwise.
+int light_index(const std::string &text, const std::string &prefix) {
+    if (text.size() != prefix.size() + 1 || text.compare(0, prefix.size(), prefix) != 0) return -1;
+    const int n = text.back() - '0';
+    return n >= 0 && n < kMaxShadingLights ? n : -1;
+}
+
 } // namespace
 
-std::optional<UniformSemantic> parse_semantic(const std::string &text, std::string &param_id) {
+std::optional<UniformSemantic> parse_semantic(const std::string &text, std::string &param_id,
+                                              int *light) {
     const std::string prefix = kParamPrefix;
     if (text.size() > prefix.size() && text.compare(0, prefix.size(), prefix) == 0) {
         param_id = text.substr(prefix.size());
         return UniformSemantic::Param;
+    }
+    for (const Known &k : kPerLight) {
+        const int n = light_index(text, k.name);
+        if (n < 0) continue;
+        if (light) *light = n;
+        return k.semantic;
     }
     for (const Known &k : kKnown)
         if (text == k.name) return k.semantic;
@@ -53,6 +75,8 @@ bool semantic_accepts(UniformSemantic semantic, ani_uniform_type type) {
         return type == ANI_UNIFORM_FLOAT || type == ANI_UNIFORM_INT || type == ANI_UNIFORM_VEC3 ||
                type == ANI_UNIFORM_VEC4;
     for (const Known &k : kKnown)
+        if (k.semantic == semantic) return k.type == type;
+    for (const Known &k : kPerLight)
         if (k.semantic == semantic) return k.type == type;
     return false;
 }

@@ -28,12 +28,21 @@ enum class UniformSemantic {
     Texture,
     Skybox,
     SelectedTint,
-    Param, // "param:<id>": one of the plugin's own parameters
+    Param,           // "param:<id>": one of the plugin's own parameters
+    LightCount,      // "light_count": how many of the lights below are in use, 1..8
+    LightPositionAt, // "light_position:N", N in 0..kMaxShadingLights-1
+    LightColourAt,   // "light_colour:N"
+    LightFalloffAt,  // "light_falloff:N": (c0, c1, c2); at d, colour / (c0 + c1 d + c2 d^2)
 };
 
+// The most lights a program is given (ANI_MAX_LIGHTS).
+constexpr int kMaxShadingLights = 8;
+
 // The semantic named `text`, or nothing for one the host does not know. For "param:<id>",
-// `param_id` receives the id.
-std::optional<UniformSemantic> parse_semantic(const std::string &text, std::string &param_id);
+// `param_id` receives the id; for "light_position:N" and the other lights' semantics, `light`
+// (when given) receives N.
+std::optional<UniformSemantic> parse_semantic(const std::string &text, std::string &param_id,
+                                              int *light = nullptr);
 
 // Whether the host can fill a uniform of `type` with `semantic` (a parameter: float, int, vec3 or
 // vec4; the others: the one type shading.h gives them).

@@ -53,10 +53,22 @@ void apply_uniforms(const LinkedProgram &program, const ShadingPrograms &program
             glUniform3fv(at, 1, glm::value_ptr(frame.camera_position));
             break;
         case UniformSemantic::LightPosition:
-            glUniform3fv(at, 1, glm::value_ptr(frame.light_position));
+            glUniform3fv(at, 1, glm::value_ptr(frame.light_position[0]));
             break;
         case UniformSemantic::LightColour:
-            glUniform3fv(at, 1, glm::value_ptr(frame.light_colour));
+            glUniform3fv(at, 1, glm::value_ptr(frame.light_colour[0]));
+            break;
+        case UniformSemantic::LightCount:
+            glUniform1i(at, frame.light_count);
+            break;
+        case UniformSemantic::LightPositionAt:
+            glUniform3fv(at, 1, glm::value_ptr(frame.light_position[static_cast<size_t>(u.light)]));
+            break;
+        case UniformSemantic::LightColourAt:
+            glUniform3fv(at, 1, glm::value_ptr(frame.light_colour[static_cast<size_t>(u.light)]));
+            break;
+        case UniformSemantic::LightFalloffAt:
+            glUniform3fv(at, 1, glm::value_ptr(frame.light_falloff[static_cast<size_t>(u.light)]));
             break;
         case UniformSemantic::Ambient:
             glUniform3fv(at, 1, glm::value_ptr(frame.ambient));

@@ -9,11 +9,18 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <array>
+
 namespace animator {
 
 struct FrameUniforms {
     glm::mat4 view{1.0f}, projection{1.0f};
-    glm::vec3 camera_position{0.0f}, light_position{0.0f}, light_colour{1.0f}, ambient{0.0f};
+    glm::vec3 camera_position{0.0f}, ambient{0.0f};
+    // The lights in use, 1..kMaxShadingLights of them; "light_position" and "light_colour" are
+    // the first one's. Falloff (c0, c1, c2): the light reaching distance d is colour / (c0 + c1 d +
+    // c2 d^2).
+    int light_count = 1;
+    std::array<glm::vec3, kMaxShadingLights> light_position{}, light_colour{}, light_falloff{};
     glm::vec4 selected_tint{0.0f}; // the colour and how much of it covers a selected model
 };
 

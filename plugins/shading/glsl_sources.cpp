@@ -34,8 +34,12 @@ in vec3 world_normal;
 in vec2 texcoord;
 
 uniform vec3 camera_position;
-uniform vec3 light_position;
-uniform vec3 light_colour;
+// The scene's lights (light_count of them, at least 1): the light reaching a point at distance d
+// is colour / (c0 + c1 d + c2 d^2), with falloff (c0, c1, c2).
+uniform int light_count;
+uniform vec3 light_positions[MAX_LIGHTS];
+uniform vec3 light_colours[MAX_LIGHTS];
+uniform vec3 light_falloffs[MAX_LIGHTS];
 uniform vec3 ambient;
 uniform vec3 kd;
 uniform vec3 ks;
@@ -78,18 +82,25 @@ void main() {
     vec3 n = normalize(world_normal);
     if (!gl_FrontFacing) n = -n; // open meshes (a floor) are lit from either side
     vec3 to_eye = normalize(camera_position - world_position);
-    vec3 to_light = normalize(light_position - world_position);
 
     vec3 base = kd;
 #ifdef TEXTURE
     base = mix(texture(model_texture, texcoord).rgb, kd, tint);
 #endif
 
-    float diffuse = max(dot(n, to_light), 0.0);
-    vec3 c = ambient * base + light_colour * base * diffuse;
-    if (shininess < SHININESS_MAX && diffuse > 0.0) {
-        float facing = max(dot(reflect(-to_light, n), to_eye), 0.0);
-        c += light_colour * ks * pow(max(facing, 1e-8), shininess);
+    vec3 c = ambient * base;
+    for (int i = 0; i < MAX_LIGHTS && i < light_count; ++i) {
+        vec3 d = light_positions[i] - world_position;
+        float r = length(d);
+        vec3 f = light_falloffs[i];
+        vec3 light = light_colours[i] / (f.x + f.y * r + f.z * r * r);
+        vec3 to_light = normalize(d);
+        float diffuse = max(dot(n, to_light), 0.0);
+        c += light * base * diffuse;
+        if (shininess < SHININESS_MAX && diffuse > 0.0) {
+            float facing = max(dot(reflect(-to_light, n), to_eye), 0.0);
+            c += light * ks * pow(max(facing, 1e-8), shininess);
+        }
     }
 
 #ifdef REFLECTION
@@ -102,6 +113,8 @@ void main() {
 #endif
 
 #ifdef CEL
+    // Snapped after every light is summed: one light looks as it always did, and where lights
+    // overlap their sum steps up a band (and stops at the top one, as any colour above 1 does).
     float bands = float(cel_bands);
     c = vec3(cel_step(c.r, bands), cel_step(c.g, bands), cel_step(c.b, bands));
     if (cel_outline != 0) {

@@ -2,7 +2,10 @@
 
 #include "glsl_sources.hpp"
 
+#include <animator/document.h>
+
 #include <cstdio>
+#include <iterator>
 
 namespace shading {
 
@@ -13,6 +16,8 @@ std::string header(uint32_t features) {
     char max_line[64];
     (void)std::snprintf(max_line, sizeof max_line, "#define SHININESS_MAX %.1f\n",
                         ANI_SHININESS_MAX);
+    h += max_line;
+    (void)std::snprintf(max_line, sizeof max_line, "#define MAX_LIGHTS %d\n", ANI_MAX_LIGHTS);
     h += max_line;
     if (features & ANI_SHADE_TEXTURE) h += "#define TEXTURE 1\n";
     if (features & ANI_SHADE_REFLECTION) h += "#define REFLECTION 1\n";
@@ -26,6 +31,19 @@ void add(std::vector<ani_uniform_desc> &uniforms, const char *name, ani_uniform_
          const char *semantic) {
     uniforms.push_back({name, type, semantic});
 }
+
+// Each light's uniforms: an element of the GLSL's arrays, and its semantic (shading.h).
+// clang-format off
+#define LIGHT_UNIFORMS(N)                                                                          \
+    {"light_positions[" #N "]", ANI_UNIFORM_VEC3, "light_position:" #N},                           \
+    {"light_colours[" #N "]", ANI_UNIFORM_VEC3, "light_colour:" #N},                               \
+    {"light_falloffs[" #N "]", ANI_UNIFORM_VEC3, "light_falloff:" #N}
+// clang-format on
+const ani_uniform_desc kLightUniforms[] = {LIGHT_UNIFORMS(0), LIGHT_UNIFORMS(1), LIGHT_UNIFORMS(2),
+                                           LIGHT_UNIFORMS(3), LIGHT_UNIFORMS(4), LIGHT_UNIFORMS(5),
+                                           LIGHT_UNIFORMS(6), LIGHT_UNIFORMS(7)};
+#undef LIGHT_UNIFORMS
+static_assert(sizeof kLightUniforms / sizeof kLightUniforms[0] == 3 * ANI_MAX_LIGHTS);
 
 } // namespace
 
@@ -53,8 +71,8 @@ ProgramSource build_program(uint32_t features) {
     add(u, "model", ANI_UNIFORM_MAT4, "model");
     add(u, "normal_matrix", ANI_UNIFORM_MAT3, "normal_matrix");
     add(u, "camera_position", ANI_UNIFORM_VEC3, "camera_position");
-    add(u, "light_position", ANI_UNIFORM_VEC3, "light_position");
-    add(u, "light_colour", ANI_UNIFORM_VEC3, "light_colour");
+    add(u, "light_count", ANI_UNIFORM_INT, "light_count");
+    u.insert(u.end(), std::begin(kLightUniforms), std::end(kLightUniforms));
     add(u, "ambient", ANI_UNIFORM_VEC3, "ambient");
     add(u, "kd", ANI_UNIFORM_VEC3, "kd");
     add(u, "ks", ANI_UNIFORM_VEC3, "ks");

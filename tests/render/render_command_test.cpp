@@ -5,7 +5,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec3.hpp>
 
 using namespace animator;
@@ -130,4 +134,168 @@ TEST_CASE("animator render draws a mesh that is not found as a plain magenta sta
     CHECK(stand_in.r > 3 * stand_in.g + 20);
     CHECK(stand_in.b > 3 * stand_in.g + 20);
     CHECK(cube.g > 2 * cube.r + 20);
+}
+
+TEST_CASE("animator render without --out writes the document's own still at its own size, lit by "
+          "its lights") {
+    // A course scene's gr.render, as saved in an .ani: the still "out.png" at 64x48 (relative to
+    // the document's folder), one red light over a grey floor and no ambient light.
+    const fs::path dir = test::fresh_dir("render_own_output");
+    test::write_file(
+        dir / "lit.ani",
+        "animator-ani 2\n"
+        "settings\n"
+        "  max_time_ms 2000\n"
+        "  ambient 0 0 0\n"
+        "  light \"red\" position 0 1.5 0 colour 1 0 0 falloff 1 0 0.1\n"
+        "  render \"stills/out.png\" 64 48\n"
+        "end\n"
+        "model \"floor\"\n"
+        "  mesh \"plane\"\n"
+        "  kd 0.8 0.8 0.8\n"
+        "  ks 0 0 0\n"
+        "  shininess 128\n"
+        "end\n"
+        "keyframe 0\n"
+        "  camera position 0 4 0 rotation 0.7071067811865476 -0.7071067811865476 0 0 fov 60\n"
+        "  state \"floor\" center 0 0 0 angles 0 0 0 scale 10 1 10 turn 0 0 0\n"
+        "end\n");
+    const std::string file = (dir / "lit.ani").string();
+    const auto r = test::run_animator("render " + file, kNoDisplay);
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out,
+               Catch::Contains("wrote " + (dir / "stills" / "out.png").string() + " (64x48"));
+    const Image still = load_image(dir / "stills" / "out.png");
+    CHECK(still.width == 64);
+    CHECK(still.height == 48);
+    // Straight under the light, 1.5 away: 0.8 / (1 + 0.1 * 1.5^2) of red = 0.653 (167 of 255),
+    // and no green or blue at all: the camera's white light is not there.
+    const size_t centre = 3 * (24 * 64 + 32);
+    CAPTURE(int(still.rgb[centre]), int(still.rgb[centre + 1]), int(still.rgb[centre + 2]));
+    CHECK(std::abs(int(still.rgb[centre]) - 167) <= 3);
+    CHECK(still.rgb[centre + 1] == 0);
+    CHECK(still.rgb[centre + 2] == 0);
+
+    // Frames into --out take the document's size too, unless --size says otherwise.
+    const auto frames = test::run_animator(
+        "render " + file + " --out " + (dir / "frames").string() + " --to 0", kNoDisplay);
+    CHECK(frames.exit_code == 0);
+    CHECK_THAT(frames.out, Catch::Contains("wrote 1 frame of 64x48"));
+    const auto sized = test::run_animator("render " + file + " --out " + (dir / "sized").string() +
+                                              " --to 0 --size 40x30",
+                                          kNoDisplay);
+    CHECK(sized.exit_code == 0);
+    CHECK(load_image(dir / "sized" / "frame_00000.png").width == 40);
+    // And --size applies to the still as well.
+    fs::remove(dir / "stills" / "out.png");
+    CHECK(test::run_animator("render " + file + " --size 32x20", kNoDisplay).exit_code == 0);
+    CHECK(load_image(dir / "stills" / "out.png").height == 20);
+
+    // A still is one frame: --to, --fps and --video need --out.
+    CHECK(test::run_animator("render " + file + " --to 1").exit_code == 2);
+    CHECK(test::run_animator("render " + file + " --fps 10").exit_code == 2);
+    auto help = test::run_animator("render --help");
+    CHECK_THAT(help.out, Catch::Contains("gr.render"));
+}
+
+namespace {
+// Which side of the 2D convex polygon `hull` (counter-clockwise) `p` is on, in pixels: > 0 inside
+// by that distance, < 0 outside.
+double inside_by(const std::vector<glm::dvec2> &hull, glm::dvec2 p) {
+    double least = 1e300;
+    for (size_t i = 0; i < hull.size(); ++i) {
+        const glm::dvec2 a = hull[i], b = hull[(i + 1) % hull.size()], e = b - a;
+        least = std::min(least, (e.x * (p.y - a.y) - e.y * (p.x - a.x)) / glm::length(e));
+    }
+    return least;
+}
+
+// The convex hull (Andrew's monotone chain, counter-clockwise) of points in the plane.
+std::vector<glm::dvec2> convex_hull(std::vector<glm::dvec2> p) {
+    std::sort(p.begin(), p.end(), [](glm::dvec2 a, glm::dvec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    auto cross = [](glm::dvec2 o, glm::dvec2 a, glm::dvec2 b) {
+        return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    };
+    std::vector<glm::dvec2> h(2 * p.size());
+    size_t k = 0;
+    for (size_t i = 0; i < p.size(); ++i) {
+        while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+        h[k++] = p[i];
+    }
+    for (size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
+        while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+        h[k++] = p[i];
+    }
+    h.resize(k - 1);
+    return h;
+}
+} // namespace
+
+TEST_CASE("animator render draws a course puppet's sheared part as its author saw it") {
+    // A joint turned, then scaled unevenly (CS488: M = call M, so its matrix is S R: a shear), and
+    // a cube under it, moved along the joint's sheared x. The truth is the course's matrices,
+    // multiplied here with glm, and the camera's projection from the scene's own gr.camera: the
+    // cube's eight corners projected, their hull filled. Pixels well inside it must be the cube,
+    // pixels well outside it background, among them those that the cube would cover were the
+    // shear dropped (T R S alone).
+    const fs::path dir = test::fresh_dir("render_sheared");
+    test::write_file(dir / "sheared.lua", "gr.camera{eye = {0, 0, 9}, look_at = {0, 0, 0}, up = {0, 1, 0}, fov = 50}\n"
+                                          "local root = gr.node('root')\n"
+                                          "local joint = gr.joint('joint', {-90, 0, 90}, {-90, 0, 90})\n"
+                                          "joint:rotate('z', 40)\n"
+                                          "joint:scale(2.2, 0.6, 1)\n"
+                                          "root:add_child(joint)\n"
+                                          "local box = gr.mesh('cube', 'box')\n"
+                                          "box:translate(0.4, 0, 0)\n"
+                                          "box:set_material(gr.material({0.1, 0.9, 0.1}, {0, 0, 0}, 10))\n"
+                                          "joint:add_child(box)\n"
+                                          "return root\n");
+    const int width = 200, height = 150;
+    const auto r = test::run_animator("render " + (dir / "sheared.lua").string() + " --out " +
+                                          (dir / "frames").string() + " --to 0 --size 200x150",
+                                      kNoDisplay);
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    const Image image = load_image(dir / "frames" / "frame_00000.png");
+    REQUIRE(image.width == width);
+
+    const glm::dmat4 I(1.0);
+    const glm::dmat4 joint = glm::scale(I, {2.2, 0.6, 1.0}) * glm::rotate(I, glm::radians(40.0), {0, 0, 1});
+    const glm::dmat4 sheared = joint * glm::translate(I, {0.4, 0, 0});
+    // The same parts with the shear dropped: turned, then scaled along the turned axes.
+    const glm::dmat4 dropped =
+        glm::rotate(I, glm::radians(40.0), {0, 0, 1}) * glm::scale(I, {2.2, 0.6, 1.0}) * glm::translate(I, {0.4, 0, 0});
+    const glm::dmat4 view = glm::lookAt(glm::dvec3(0, 0, 9), glm::dvec3(0), glm::dvec3(0, 1, 0));
+    const glm::dmat4 projection = glm::perspective(glm::radians(50.0), double(width) / height, 0.1, 100.0);
+    auto outline = [&](const glm::dmat4 &world) {
+        std::vector<glm::dvec2> corners;
+        for (int i = 0; i < 8; ++i) {
+            const glm::dvec4 c = projection * view * world * glm::dvec4(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1, 1);
+            corners.push_back({(c.x / c.w + 1.0) / 2.0 * width, (1.0 - c.y / c.w) / 2.0 * height});
+        }
+        return convex_hull(corners);
+    };
+    const std::vector<glm::dvec2> truth = outline(sheared), without = outline(dropped);
+    auto is_cube = [&](int x, int y) {
+        const size_t at = 3 * (static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x));
+        const int red = image.rgb[at], green = image.rgb[at + 1], blue = image.rgb[at + 2];
+        return green > 40 && green > 2 * red && green > 2 * blue;
+    };
+    int inside = 0, outside = 0, wrong = 0, only_dropped = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const glm::dvec2 p(x + 0.5, y + 0.5);
+            const double d = inside_by(truth, p);
+            if (std::abs(d) < 2.0) continue; // the edge's pixels: antialiasing and rounding
+            const bool cube = is_cube(x, y);
+            if (d > 0) ++inside;
+            else ++outside;
+            if (cube != (d > 0)) ++wrong;
+            if (d < 0 && inside_by(without, p) > 2.0) ++only_dropped;
+        }
+    CAPTURE(inside, outside, wrong, only_dropped);
+    CHECK(inside > 1000);
+    CHECK(only_dropped > 300); // the shear matters here: dropping it would cover these pixels
+    CHECK(wrong == 0);
 }

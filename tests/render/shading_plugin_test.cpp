@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstring>
+#include <set>
 
 using namespace animator;
 using namespace animator::test;
@@ -50,6 +51,12 @@ TEST_CASE("shading.phong hands over a program with exactly the uniforms of each 
     REQUIRE(program_for(0, plain) == ANI_OK);
     CHECK(has(plain, "kd"));
     CHECK(has(plain, "shininess"));
+    // Every light of the scene (shading.h's lights): how many, and each one's place, colour,
+    // falloff.
+    for (const char *light :
+         {"light_count", "light_position:0", "light_colour:0", "light_falloff:0",
+          "light_position:7", "light_colour:7", "light_falloff:7"})
+        CHECK(has(plain, light));
     for (const char *unused : {"texture", "skybox", "tint", "reflectivity", "transparency",
                                "selected_tint", "param:cel_bands"})
         CHECK_FALSE(has(plain, unused));
@@ -84,6 +91,14 @@ TEST_CASE("every shading.phong program compiles and links on Mesa, with every un
         CAPTURE(feature_names(features));
         const LinkedProgram &p = programs.get(features);
         CHECK_FALSE(p.built_in);
+        // Each element of the lights' arrays is found and filled: lights 0..7, once each.
+        std::set<int> positions, falloffs;
+        for (const BoundUniform &u : p.uniforms) {
+            if (u.semantic == UniformSemantic::LightPositionAt) positions.insert(u.light);
+            if (u.semantic == UniformSemantic::LightFalloffAt) falloffs.insert(u.light);
+        }
+        CHECK(positions.size() == kMaxShadingLights);
+        CHECK(falloffs.size() == kMaxShadingLights);
     }
     CHECK_FALSE(programs.get(ANI_SHADE_SKYBOX_PASS).built_in);
     for (const std::string &line : log) UNSCOPED_INFO(line);

@@ -1,6 +1,8 @@
 // The SDK's uniform semantics, as the host reads them.
 #include "render/uniform_semantics.hpp"
 
+#include <animator/document.h>
+
 #include <catch2/catch.hpp>
 
 using namespace animator;
@@ -45,4 +47,34 @@ TEST_CASE("every semantic of shading.h is known with its type, and param:<id> na
     CHECK_FALSE(parse_semantic("colour", param));
     CHECK_FALSE(parse_semantic("param:", param));
     CHECK_FALSE(parse_semantic("", param));
+}
+
+TEST_CASE("the lights' semantics: light_count, and light_position:N, light_colour:N, "
+          "light_falloff:N for N in 0..7") {
+    std::string param;
+    CHECK(parse_semantic("light_count", param) == UniformSemantic::LightCount);
+    CHECK(semantic_accepts(UniformSemantic::LightCount, ANI_UNIFORM_INT));
+    CHECK_FALSE(semantic_accepts(UniformSemantic::LightCount, ANI_UNIFORM_FLOAT));
+    const std::pair<const char *, UniformSemantic> per_light[] = {
+        {"light_position:", UniformSemantic::LightPositionAt},
+        {"light_colour:", UniformSemantic::LightColourAt},
+        {"light_falloff:", UniformSemantic::LightFalloffAt},
+    };
+    for (const auto &[prefix, semantic] : per_light) {
+        CAPTURE(prefix);
+        for (int n = 0; n < kMaxShadingLights; ++n) {
+            int light = -1;
+            CHECK(parse_semantic(prefix + std::to_string(n), param, &light) == semantic);
+            CHECK(light == n);
+        }
+        CHECK(semantic_accepts(semantic, ANI_UNIFORM_VEC3));
+        CHECK_FALSE(semantic_accepts(semantic, ANI_UNIFORM_VEC4));
+        for (const char *bad : {"8", "", "-1", "01", "1 ", "x"})
+            CHECK_FALSE(parse_semantic(prefix + std::string(bad), param));
+    }
+    // The single light's semantics are still there: light 0.
+    CHECK(parse_semantic("light_position", param) == UniformSemantic::LightPosition);
+    CHECK(parse_semantic("light_colour", param) == UniformSemantic::LightColour);
+    CHECK_FALSE(parse_semantic("light_falloff", param));
+    CHECK(kMaxShadingLights == ANI_MAX_LIGHTS);
 }

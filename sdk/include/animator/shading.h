@@ -38,7 +38,8 @@ typedef enum ani_uniform_type {
  * "view", "projection", "normal_matrix", "camera_position", "light_position", "light_colour",
  * "ambient", "kd", "ks", "shininess", "tint", "reflectivity", "transparency",
  * "refractive_index", "texture", "skybox", "selected_tint", and "param:<id>" for the value of
- * one of the plugin's own parameters. */
+ * one of the plugin's own parameters; since the scene's lights (appended, no ABI change):
+ * "light_count", and "light_position:N", "light_colour:N", "light_falloff:N" for N in 0..7. */
 typedef struct ani_uniform_desc {
     const char *name; /* as in the GLSL */
     int32_t type;     /* ani_uniform_type */
@@ -88,7 +89,17 @@ typedef struct ani_shading_api {
  *   texture          sampler2D the model's texture  skybox      samplerCube the scene's skybox
  *   selected_tint    vec4  rgb, and in alpha how much of it covers a selected model
  *   param:<id>       float, int, vec3 or vec4: the plugin parameter's value[0..n)
- * The skybox pass gets view, projection and skybox; it drops the view's translation itself. */
+ * The skybox pass gets view, projection and skybox; it drops the view's translation itself.
+ *
+ * The scene's lights (appended; a plugin that reads only light_position and light_colour gets
+ * light 0, the first of the document's or, when it has none, the one riding with the camera):
+ *   light_count      int   how many lights are in use, 1..ANI_MAX_LIGHTS (8, document.h)
+ *   light_position:N vec3  world, light N (N a single digit, 0..7)
+ *   light_colour:N   vec3  its colour, >= 0, may exceed 1; 0 for N >= light_count
+ *   light_falloff:N  vec3  (c0, c1, c2): the light reaching distance d is
+ *                          colour / (c0 + c1 d + c2 d^2); (1, 0, 0) for the camera's light and
+ *                          for N >= light_count
+ * A uniform array element may carry one ("light_positions[3]" with "light_position:3"). */
 
 #ifdef __cplusplus
 }
