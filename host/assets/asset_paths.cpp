@@ -70,9 +70,17 @@ std::vector<fs::path> AssetPaths::candidates(ani_asset_kind kind, const std::str
         const fs::path relative = document.empty() ? fs::path(id) : document.parent_path() / id;
         out.push_back(relative);
     }
-    for (const fs::path &root : roots_)
-        for (const std::string &ext : extensions_of(kind))
-            out.push_back(root / folder_of(kind) / (id + ext));
+    // An id that already names its file ("plane.obj", as the course's ray-tracer scenes write
+    // meshes) is that file in each asset folder, not "plane.obj.obj".
+    const std::vector<std::string> extensions = extensions_of(kind);
+    const bool has_extension = std::any_of(extensions.begin(), extensions.end(), [&](const std::string &ext) {
+        return !ext.empty() && id.size() > ext.size() && id.compare(id.size() - ext.size(), ext.size(), ext) == 0;
+    });
+    for (const fs::path &root : roots_) {
+        if (has_extension) out.push_back(root / folder_of(kind) / id);
+        else
+            for (const std::string &ext : extensions) out.push_back(root / folder_of(kind) / (id + ext));
+    }
     return out;
 }
 

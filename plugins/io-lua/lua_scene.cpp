@@ -7,11 +7,13 @@
 #include <glm/gtx/euler_angles.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <deque>
 #include <map>
 #include <optional>
+#include <set>
 
 namespace lua_scene {
 
@@ -19,6 +21,7 @@ namespace {
 
 const char *kNodeMeta = "animator.node";
 const char *kMaterialMeta = "animator.material";
+const char *kLightMeta = "animator.light";
 
 // What the scene may build on our side of the sandbox, beyond Lua's own memory budget: nodes,
 // their names and sound and texture names are copies that outlive Lua's strings.
@@ -26,6 +29,11 @@ constexpr std::size_t kSceneDataBudget = 256u << 20; // 256 MiB
 // How far up add_child looks for a cycle: deeper trees are refused, so that building one
 // cannot cost time that no instruction count sees (a chain of n nodes would cost n^2 / 2).
 constexpr int kMaxDepth = 1000;
+// How many ancestors add_child may visit in all, looking for a cycle, once some node is under more
+// than one parent (an instance): a graph of instances may have many paths up from a node.
+constexpr std::size_t kWalkBudget = 50'000'000;
+// Our torus mesh's tube radius (its ring's is 1).
+constexpr double kTorusTube = 0.3;
 
 struct Material {
     glm::dvec3 kd{0.7}, ks{0.3};
@@ -40,8 +48,11 @@ struct Node {
     // Where the node's mesh sits in the node's frame (a ray-tracer primitive's centre and size):
     // its own, not its children's.
     glm::dmat4 placement{1.0};
-    int parent = -1;
+    // Its parents: more than one when it is an instance (the course's A4 adds one node under
+    // several); each use becomes a model of its own.
+    std::vector<int> parents;
     std::vector<int> children;
+    unsigned mark = 0; // add_child's visit stamp
     int material = -1;
     bool dynamics = false, gravity = false;
     double mass = 1.0;
@@ -79,6 +90,19 @@ struct Scene {
     std::vector<std::pair<int, std::string>> notes;
     std::size_t data_bytes = 0;
     std::optional<int> settings_line, camera_line;
+    // gr.light's lights; those gr.render is given become the document's.
+    struct Light {
+        glm::dvec3 position, colour, falloff;
+    };
+    std::deque<Light> lights;
+    std::optional<int> render_line; // gr.render's first call: its root is the scene's when none is returned
+    int render_root = -1;
+    bool render_again = false;
+    bool instanced = false; // some node is under more than one parent
+    unsigned epoch = 0;     // add_child's search for a cycle
+    std::vector<int> walk;
+    std::size_t walk_steps = 0;
+    std::map<std::string, int> next_ending; // unique_name's: per stem, every lower ending is taken
     SceneResult settings; // the settings and camera; its models are filled at the end
 };
 
@@ -117,30 +141,36 @@ std::string checked_string(lua_State *L, int arg) {
 
 // A name no node has yet, Blender's way: the name itself when free, otherwise its stem (the name
 // without a ".NNN" ending) with the first free ending .001, .002, ...; an empty name is "node".
-std::string unique_name(const Scene &scene, const std::string &wanted) {
-    if (!wanted.empty() && !scene.by_name.count(wanted)) return wanted;
+// `taken(name)` says whether a name is used; `next` keeps, per stem, the ending to try first (names
+// are never freed, so the endings below it stay taken): n uses of one name cost n, not n^2 / 2.
+template <class Taken>
+std::string unique_name(const std::string &wanted, std::map<std::string, int> &next, const Taken &taken) {
+    if (!wanted.empty() && !taken(wanted)) return wanted;
     std::string stem = wanted.empty() ? "node" : wanted;
     const std::size_t dot = stem.size() >= 4 ? stem.size() - 4 : std::string::npos;
     if (dot != std::string::npos && stem[dot] == '.' && dot > 0 &&
         std::all_of(stem.begin() + static_cast<std::ptrdiff_t>(dot) + 1, stem.end(),
                     [](char c) { return c >= '0' && c <= '9'; }))
         stem.resize(dot);
-    if (wanted.empty() && !scene.by_name.count(stem)) return stem;
-    for (int k = 1;; ++k) {
+    if (wanted.empty() && !taken(stem)) return stem;
+    int &k = next[stem];
+    for (k = std::max(k, 1);; ++k) {
         char ending[16];
         std::snprintf(ending, sizeof ending, ".%03d", k);
-        if (!scene.by_name.count(stem + ending)) return stem + ending;
+        if (!taken(stem + ending)) return stem + ending;
     }
 }
 
 int push_node(lua_State *L, Node node) {
     // The name is kept twice (in the node and as the key of by_name), with a map entry's overhead;
     // a renamed node's first name too.
-    charge(L, sizeof(Node) + 3 * node.name.size() + node.mesh.size() + 96);
+    // A renamed node's stem, with an entry's overhead, may be kept once more by next_ending.
+    charge(L, sizeof(Node) + 4 * node.name.size() + node.mesh.size() + 160);
     node.line = current_line(L);
     Scene &scene = scene_of(L);
     const int index = static_cast<int>(scene.nodes.size());
-    const std::string name = unique_name(scene, node.name);
+    const std::string name =
+        unique_name(node.name, scene.next_ending, [&](const std::string &n) { return scene.by_name.count(n) > 0; });
     if (name != node.name) scene.renames.push_back({node.line, node.name, name});
     node.name = name;
     scene.by_name.emplace(node.name, index);
@@ -241,11 +271,25 @@ int gr_node(lua_State *L) {
     return push_node(L, std::move(n));
 }
 
+// Whether `s` names a mesh file by its extension (docs/assets.md), in any case.
+bool names_mesh_file(const std::string &s) {
+    for (const char *ext : {".obj", ".ply", ".stl", ".glb", ".gltf"}) {
+        const std::size_t n = std::char_traits<char>::length(ext);
+        if (s.size() > n && std::equal(s.end() - static_cast<std::ptrdiff_t>(n), s.end(), ext,
+                                       [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; }))
+            return true;
+    }
+    return false;
+}
+
 // The mesh is named here and found later, by the plugin (the scene runs where no file is seen).
+// A3 wrote gr.mesh(mesh_id, name), A4 gr.mesh(name, 'file.obj'): a second argument that names a
+// mesh file when the first does not is A4's order.
 int gr_mesh(lua_State *L) {
     Node n;
     n.mesh = checked_string(L, 1);
     n.name = lua_isnoneornil(L, 2) ? n.mesh : checked_string(L, 2);
+    if (names_mesh_file(n.name) && !names_mesh_file(n.mesh)) std::swap(n.mesh, n.name);
     if (n.mesh.empty()) return luaL_error(L, "gr.mesh needs a mesh id");
     return push_node(L, std::move(n));
 }
@@ -253,7 +297,8 @@ int gr_mesh(lua_State *L) {
 // Says that a call had `given` arguments where the course's API takes `takes`: the rest ignored.
 void note_extra_arguments(lua_State *L, const char *call, int takes, int given) {
     if (given <= takes) return;
-    const std::string text = std::string(call) + " takes " + std::to_string(takes) + " arguments; the " +
+    const std::string text = std::string(call) + " takes " + std::to_string(takes) +
+                             (takes == 1 ? " argument; the " : " arguments; the ") +
                              std::to_string(given - takes) + " more given (a student extension?) " +
                              (given - takes == 1 ? "is" : "are") + " ignored";
     charge(L, text.size() + 32);
@@ -394,6 +439,8 @@ int gr_camera(lua_State *L) {
 
     Scene &scene = scene_of(L);
     if (scene.camera_line) return luaL_error(L, "gr.camera is called twice (first on line %d)", *scene.camera_line);
+    if (scene.render_line)
+        return luaL_error(L, "gr.camera sets the camera, which gr.render set on line %d", *scene.render_line);
     scene.camera_line = line;
     ani_camera_state &camera = scene.settings.camera;
     camera.position = {eye.x, eye.y, eye.z};
@@ -435,32 +482,61 @@ int node_scale(lua_State *L) {
     return 0;
 }
 
-int node_add_child(lua_State *L) {
-    const int parent = check_node(L, 1);
-    const int child = check_node(L, 2);
+// Puts `child` under `parent`. A child under a second parent is an instance, as the course's
+// code allowed (A4's scenes place one cow under several nodes): each use becomes a model of its
+// own (flatten). Refused: a cycle, and a tree deeper than kMaxDepth. Reads no Lua value.
+void attach(lua_State *L, int parent, int child) {
     Scene &scene = scene_of(L);
     // The checks copy what their messages need: luaL_error allocates, and so may run Lua.
     auto name = [&](int i) { return scene.nodes[static_cast<size_t>(i)].name; };
-    const int child_parent = scene.nodes[static_cast<size_t>(child)].parent;
-    if (child_parent >= 0) {
-        const std::string message = "node '" + name(child) + "' is already a child of '" + name(child_parent) + "'";
-        return luaL_error(L, "%s", message.c_str());
-    }
+    auto cycle = [&] {
+        const std::string message = "adding '" + name(child) + "' under '" + name(parent) + "' would make a cycle";
+        luaL_error(L, "%s", message.c_str());
+    };
     int depth = 0;
-    for (int up = parent; up >= 0; up = scene.nodes[static_cast<size_t>(up)].parent) {
-        if (up == child) {
-            const std::string message = "adding '" + name(child) + "' under '" + name(parent) + "' would make a cycle";
-            return luaL_error(L, "%s", message.c_str());
-        }
+    for (int up = parent; up >= 0;) { // its first parents: the whole way up in a tree
+        if (up == child) cycle();
         if (++depth > kMaxDepth) {
             const std::string message = "node '" + name(parent) + "' is more than " + std::to_string(kMaxDepth) +
                                         " levels deep; a scene tree may have at most that many";
-            return luaL_error(L, "%s", message.c_str());
+            luaL_error(L, "%s", message.c_str());
+        }
+        const std::vector<int> &parents = scene.nodes[static_cast<size_t>(up)].parents;
+        up = parents.empty() ? -1 : parents.front();
+    }
+    if (scene.instanced) { // every way up, each ancestor once
+        const unsigned stamp = ++scene.epoch;
+        scene.walk.assign(1, parent);
+        scene.nodes[static_cast<size_t>(parent)].mark = stamp;
+        while (!scene.walk.empty()) {
+            const int at = scene.walk.back();
+            scene.walk.pop_back();
+            if (at == child) cycle();
+            if (++scene.walk_steps > kWalkBudget) {
+                scene.walk.clear();
+                const std::string message = "adding '" + name(child) + "' under '" + name(parent) +
+                                            "': the scene's instances (nodes under more than one parent) made more "
+                                            "than " + std::to_string(kWalkBudget) + " steps of looking for a cycle";
+                luaL_error(L, "%s", message.c_str());
+            }
+            for (int up : scene.nodes[static_cast<size_t>(at)].parents)
+                if (scene.nodes[static_cast<size_t>(up)].mark != stamp) {
+                    scene.nodes[static_cast<size_t>(up)].mark = stamp;
+                    scene.walk.push_back(up);
+                }
         }
     }
-    charge(L, sizeof(int));
-    scene.nodes[static_cast<size_t>(child)].parent = parent;
+    charge(L, 2 * sizeof(int));
+    Node &c = scene.nodes[static_cast<size_t>(child)];
+    if (!c.parents.empty()) scene.instanced = true;
+    c.parents.push_back(parent);
     scene.nodes[static_cast<size_t>(parent)].children.push_back(child);
+}
+
+int node_add_child(lua_State *L) {
+    const int parent = check_node(L, 1);
+    const int child = check_node(L, 2);
+    attach(L, parent, child);
     return 0;
 }
 
@@ -538,6 +614,223 @@ int node_set_sound(lua_State *L) {
     return 0;
 }
 
+// ---- the A4 ray tracer's dialect -------------------------------------------------------------
+
+// A node that draws our mesh `mesh` where `placement` puts it in the node's frame: the course's
+// primitive, its size and place, as our mesh. The placement is the node's own, not its children's.
+int push_primitive(lua_State *L, std::string name, const char *mesh, const glm::dmat4 &placement) {
+    Node n;
+    n.name = std::move(name);
+    n.mesh = mesh;
+    n.placement = placement;
+    return push_node(L, std::move(n));
+}
+
+glm::dmat4 translation(const glm::dvec3 &v) { return glm::translate(glm::dmat4(1.0), v); }
+glm::dmat4 scaling(const glm::dvec3 &v) { return glm::scale(glm::dmat4(1.0), v); }
+
+// gr.sphere(name), gr.cylinder(name), gr.cone(name), gr.plane(name): our mesh as it is (the unit
+// sphere; the cylinder of radius 1 from y = -1 to 1; the cone of base radius 1 at y = -1, apex at
+// y = 1; the plane from -1 to 1 in x and z, facing +y). Students' variants with sizes: ignored.
+template <const char *Mesh, const char *Call>
+int gr_unit_primitive(lua_State *L) {
+    std::string name = checked_string(L, 1);
+    note_extra_arguments(L, Call, 1, lua_gettop(L));
+    return push_primitive(L, std::move(name), Mesh, glm::dmat4(1.0));
+}
+constexpr char kSphere[] = "sphere", kCylinder[] = "cylinder", kCone[] = "cone", kPlane[] = "plane";
+constexpr char kGrSphere[] = "gr.sphere", kGrCylinder[] = "gr.cylinder", kGrCone[] = "gr.cone",
+               kGrPlane[] = "gr.plane";
+
+// gr.cube(name): the course's unit cube, (0, 0, 0) to (1, 1, 1); our cube is -1 to 1.
+int gr_cube(lua_State *L) {
+    std::string name = checked_string(L, 1);
+    note_extra_arguments(L, "gr.cube", 1, lua_gettop(L));
+    return push_primitive(L, std::move(name), "cube", translation(glm::dvec3(0.5)) * scaling(glm::dvec3(0.5)));
+}
+
+// gr.nh_sphere(name, {x, y, z}, radius): a sphere of `radius` about x, y, z.
+int gr_nh_sphere(lua_State *L) {
+    std::string name = checked_string(L, 1);
+    const auto c = numbers(L, 2, 3, "the sphere's centre");
+    const double r = luaL_checknumber(L, 3);
+    if (!(r > 0.0) || !std::isfinite(r)) return luaL_error(L, "the sphere's radius must be > 0, got %f", r);
+    note_extra_arguments(L, "gr.nh_sphere", 3, lua_gettop(L));
+    return push_primitive(L, std::move(name), "sphere", translation({c[0], c[1], c[2]}) * scaling(glm::dvec3(r)));
+}
+
+// gr.nh_box(name, {x, y, z}, size): the cube of edge `size` from corner x, y, z to x + size, ....
+int gr_nh_box(lua_State *L) {
+    std::string name = checked_string(L, 1);
+    const auto c = numbers(L, 2, 3, "the box's corner");
+    const double size = luaL_checknumber(L, 3);
+    if (!(size > 0.0) || !std::isfinite(size)) return luaL_error(L, "the box's size must be > 0, got %f", size);
+    note_extra_arguments(L, "gr.nh_box", 3, lua_gettop(L));
+    const double h = size / 2.0;
+    return push_primitive(L, std::move(name), "cube",
+                          translation(glm::dvec3(c[0] + h, c[1] + h, c[2] + h)) * scaling(glm::dvec3(h)));
+}
+
+// gr.torus(name [, tube]): the ring of radius 1 about the y axis (in the XZ plane), its tube of
+// radius `tube` (< 1, as a fraction of the ring's: students wrote it either way). Our torus mesh's
+// tube is 0.3: another is drawn as ours scaled to the same outer size and thickness, with a warning.
+int gr_torus(lua_State *L) {
+    std::string name = checked_string(L, 1);
+    const int given = lua_gettop(L);
+    glm::dmat4 placement(1.0);
+    if (given >= 2 && !lua_isnil(L, 2)) {
+        const double r = luaL_checknumber(L, 2);
+        if (!(r > 0.0 && r < 1.0))
+            return luaL_error(L, "the torus's tube radius must be > 0 and < 1 (its ring's radius), got %f", r);
+        if (std::abs(r - kTorusTube) > 1e-12) {
+            const double across = (1.0 + r) / (1.0 + kTorusTube);
+            placement = scaling({across, r / kTorusTube, across});
+            char text[240];
+            std::snprintf(text, sizeof text,
+                          "torus '%.40s': its tube radius %g is drawn as our torus's (%g) scaled to the same outer "
+                          "size and thickness; its hole is %s",
+                          name.c_str(), r, kTorusTube, r > kTorusTube ? "larger" : "smaller");
+            charge(L, sizeof text + 32);
+            scene_of(L).notes.emplace_back(current_line(L), text);
+        }
+    }
+    note_extra_arguments(L, "gr.torus", 2, given);
+    return push_primitive(L, std::move(name), "torus", placement);
+}
+
+// gr.union / gr.intersection / gr.difference(name, a, b), or (a, b) as some students wrote them:
+// we cannot draw CSG, so a node holding both operands, with a warning.
+int csg(lua_State *L, const char *operation) {
+    const bool named = lua_type(L, 1) == LUA_TSTRING;
+    std::string name = named ? checked_string(L, 1) : std::string(operation);
+    const int first = named ? 2 : 1;
+    const int a = check_node(L, first);
+    const int b = check_node(L, first + 1);
+    note_extra_arguments(L, (std::string("gr.") + operation).c_str(), first + 1, lua_gettop(L));
+    const std::string text = "gr." + std::string(operation) + " '" + name + "' is shown as its two operands, '" +
+                             node_at(L, a).name + "' and '" + node_at(L, b).name +
+                             "': animator does not draw CSG";
+    charge(L, text.size() + 32);
+    scene_of(L).notes.emplace_back(current_line(L), text);
+    Node n;
+    n.name = std::move(name);
+    push_node(L, std::move(n));
+    const int index = *static_cast<int *>(lua_touserdata(L, -1));
+    attach(L, index, a);
+    attach(L, index, b);
+    return 1;
+}
+int gr_union(lua_State *L) { return csg(L, "union"); }
+int gr_intersection(lua_State *L) { return csg(L, "intersection"); }
+int gr_difference(lua_State *L) { return csg(L, "difference"); }
+
+// Three numbers >= 0, not all 0 unless `zero` is allowed.
+void check_colour(lua_State *L, const std::vector<double> &v, const char *what, bool zero) {
+    if (v[0] < 0.0 || v[1] < 0.0 || v[2] < 0.0) luaL_error(L, "%s must be >= 0", what);
+    if (!zero && v[0] + v[1] + v[2] <= 0.0) luaL_error(L, "%s must not be all 0", what);
+}
+
+// gr.light({x, y, z}, {r, g, b} [, {c0, c1, c2}]): a point light in world space, reaching a point
+// at distance d as colour / (c0 + c1 d + c2 d^2); {1, 0, 0} when not given.
+int gr_light(lua_State *L) {
+    const auto p = numbers(L, 1, 3, "the light's position");
+    const auto c = numbers(L, 2, 3, "the light's colour");
+    const auto f = lua_isnoneornil(L, 3) ? std::vector<double>{1.0, 0.0, 0.0} : numbers(L, 3, 3, "the light's falloff");
+    check_colour(L, c, "the light's colour", true);
+    check_colour(L, f, "the light's falloff", false);
+    note_extra_arguments(L, "gr.light", 3, lua_gettop(L));
+    charge(L, sizeof(Scene::Light) + 32);
+    Scene &scene = scene_of(L);
+    const int index = static_cast<int>(scene.lights.size());
+    scene.lights.push_back({{p[0], p[1], p[2]}, {c[0], c[1], c[2]}, {f[0], f[1], f[2]}});
+    *static_cast<int *>(lua_newuserdatauv(L, sizeof(int), 0)) = index;
+    luaL_setmetatable(L, kLightMeta);
+    return 1;
+}
+
+// gr.render(root, 'file.png', width, height, eye, view, up, fov, ambient, {lights}): the camera at
+// eye looking along view (a direction) with up and a vertical fov in degrees, the ambient light,
+// the lights and the image's name and size. Its root is the scene's when the file returns none.
+int gr_render(lua_State *L) {
+    const int given = lua_gettop(L);
+    const int root = check_node(L, 1);
+    std::string output = checked_string(L, 2);
+    if (output.empty()) return luaL_error(L, "gr.render needs the image's file name");
+    const lua_Integer width = luaL_checkinteger(L, 3), height = luaL_checkinteger(L, 4);
+    if (width < 1 || width > 16384 || height < 1 || height > 16384)
+        return luaL_error(L, "gr.render's image must be 1 to 16384 pixels each way, got %I x %I", width, height);
+    const auto e = numbers(L, 5, 3, "the eye");
+    const auto v = numbers(L, 6, 3, "the view direction");
+    const auto u = numbers(L, 7, 3, "up");
+    const double fov = luaL_checknumber(L, 8);
+    if (!(fov > 0.0 && fov < 180.0)) return luaL_error(L, "the fov must be strictly between 0 and 180 degrees");
+    const auto ambient = lua_isnoneornil(L, 9) ? std::vector<double>{0.2, 0.2, 0.2} : numbers(L, 9, 3, "ambient");
+    check_colour(L, ambient, "ambient", true);
+    std::vector<int> lights;
+    if (!lua_isnoneornil(L, 10)) {
+        luaL_checktype(L, 10, LUA_TTABLE);
+        const lua_Unsigned count = lua_rawlen(L, 10);
+        if (count > ANI_MAX_LIGHTS)
+            return luaL_error(L, "gr.render is given %I lights; a scene may have at most %d",
+                              static_cast<lua_Integer>(count), ANI_MAX_LIGHTS);
+        for (lua_Integer i = 1; i <= static_cast<lua_Integer>(count); ++i) {
+            lua_rawgeti(L, 10, i);
+            const auto *light = static_cast<const int *>(luaL_testudata(L, -1, kLightMeta));
+            if (!light) return luaL_error(L, "gr.render's light %I is not a light (gr.light), got %s", i, luaL_typename(L, -1));
+            if (std::find(lights.begin(), lights.end(), *light) == lights.end()) lights.push_back(*light);
+            lua_pop(L, 1);
+        }
+    }
+    note_extra_arguments(L, "gr.render", 10, given);
+    const glm::dvec3 eye(e[0], e[1], e[2]), view(v[0], v[1], v[2]), up(u[0], u[1], u[2]);
+    if (!(glm::length(view) >= 1e-12)) return luaL_error(L, "gr.render's view direction must not be 0");
+    if (!(glm::length(glm::cross(glm::normalize(view), up)) >= 1e-9))
+        return luaL_error(L, "gr.render's up must not be parallel to its view direction");
+    const glm::dquat q = glm::quatLookAtRH(glm::normalize(view), glm::normalize(up));
+    const int line = current_line(L);
+    {
+        Scene &scene = scene_of(L);
+        if (scene.camera_line)
+            return luaL_error(L, "gr.render sets the camera, which gr.camera set on line %d", *scene.camera_line);
+        if (scene.render_line) { // students render several images: the first is the document's
+            if (scene.render_again) return 0;
+            const std::string text = "gr.render is called again (first on line " + std::to_string(*scene.render_line) +
+                                     "); the first call's root, camera, lights and image are kept, this one and any "
+                                     "later are ignored";
+            charge(L, text.size() + 32);
+            scene.render_again = true;
+            scene.notes.emplace_back(line, text);
+            return 0;
+        }
+    }
+    charge(L, output.size() + lights.size() * (sizeof(SceneLight) + 16));
+    Scene &scene = scene_of(L);
+    scene.render_line = line;
+    scene.render_root = root;
+    SceneResult &s = scene.settings;
+    s.camera.position = {eye.x, eye.y, eye.z};
+    s.camera.rotation = {q.w, q.x, q.y, q.z};
+    s.camera.fov_degrees = fov;
+    s.ambient = {ambient[0], ambient[1], ambient[2]};
+    s.render_output = std::move(output);
+    s.render_width = static_cast<int32_t>(width);
+    s.render_height = static_cast<int32_t>(height);
+    std::map<std::string, int> next;
+    s.lights.clear();
+    for (int index : lights) {
+        const Scene::Light &l = scene.lights[static_cast<size_t>(index)];
+        SceneLight out;
+        out.name = unique_name("light", next, [&](const std::string &n) {
+            return std::any_of(s.lights.begin(), s.lights.end(), [&](const SceneLight &o) { return o.name == n; });
+        });
+        out.position = {l.position.x, l.position.y, l.position.z};
+        out.colour = {l.colour.x, l.colour.y, l.colour.z};
+        out.falloff = {l.falloff.x, l.falloff.y, l.falloff.z};
+        s.lights.push_back(std::move(out));
+    }
+    return 0;
+}
+
 void register_api(lua_State *L) {
     const luaL_Reg node_methods[] = {
         {"translate", node_translate},     {"rotate", node_rotate},
@@ -556,10 +849,24 @@ void register_api(lua_State *L) {
     lua_pushliteral(L, "locked");
     lua_setfield(L, -2, "__metatable");
     lua_pop(L, 1);
+    luaL_newmetatable(L, kLightMeta);
+    lua_pushliteral(L, "locked");
+    lua_setfield(L, -2, "__metatable");
+    lua_pop(L, 1);
 
     const luaL_Reg gr[] = {{"node", gr_node},         {"mesh", gr_mesh},
                            {"joint", gr_joint},       {"material", gr_material},
                            {"settings", gr_settings}, {"camera", gr_camera},
+                           // the A4 ray tracer's
+                           {"sphere", gr_unit_primitive<kSphere, kGrSphere>},
+                           {"cylinder", gr_unit_primitive<kCylinder, kGrCylinder>},
+                           {"cone", gr_unit_primitive<kCone, kGrCone>},
+                           {"plane", gr_unit_primitive<kPlane, kGrPlane>},
+                           {"cube", gr_cube},         {"nh_sphere", gr_nh_sphere},
+                           {"nh_box", gr_nh_box},     {"torus", gr_torus},
+                           {"light", gr_light},       {"render", gr_render},
+                           {"union", gr_union},       {"intersection", gr_intersection},
+                           {"difference", gr_difference},
                            {nullptr, nullptr}};
     luaL_newlib(L, gr);
     lua_setglobal(L, "gr");
@@ -615,9 +922,14 @@ bool to_state(const glm::dmat4 &m, const Node &node, const std::string &path, Sc
 
 // The tree under the returned root as models in depth-first order, so a parent always comes
 // before its children. A root without a mesh is not a model: its transform moves into its
-// children's.
+// children's. A node used more than once (an instance) is a model each time, with everything under
+// it: the first use keeps its name, the others are renamed as names used twice are.
 bool flatten(const Scene &scene, int root_index, const std::string &path, SceneResult &out, std::string &error) {
     const Node &root = scene.nodes[static_cast<size_t>(root_index)];
+    std::vector<std::vector<std::string>> uses(scene.nodes.size()); // each node's models' names
+    std::set<std::string> copies;
+    std::map<std::string, int> next;
+    std::size_t bytes = 0; // the models, against the budget of the nodes they copy
     struct Visit {
         int node;
         int parent_model;
@@ -634,7 +946,20 @@ bool flatten(const Scene &scene, int root_index, const std::string &path, SceneR
         stack.pop_back();
         const Node &n = scene.nodes[static_cast<size_t>(v.node)];
         SceneModel m;
-        m.name = n.name;
+        std::vector<std::string> &used = uses[static_cast<size_t>(v.node)];
+        m.name = used.empty() ? n.name : unique_name(n.name, next, [&](const std::string &name) {
+            return scene.by_name.count(name) > 0 || copies.count(name) > 0;
+        });
+        if (!used.empty()) copies.insert(m.name);
+        bytes += sizeof(SceneModel) + 4 * m.name.size() + n.mesh.size() + n.texture.size() + n.collision_sound.size() +
+                 n.moving_sound.size() + 96;
+        if (bytes > kSceneDataBudget) {
+            error = path + ": the scene's instances (nodes under more than one parent) make more than its budget of " +
+                    std::to_string(kSceneDataBudget >> 20) + " MiB of models (" + std::to_string(out.models.size()) +
+                    " models so far)";
+            return false;
+        }
+        used.push_back(m.name);
         m.mesh = n.mesh;
         m.line = n.line;
         m.parent = v.parent_model;
@@ -671,6 +996,29 @@ bool flatten(const Scene &scene, int root_index, const std::string &path, SceneR
         const glm::dmat4 below = glm::dmat4(shear) * glm::inverse(n.placement);
         for (auto it = n.children.rbegin(); it != n.children.rend(); ++it) stack.push_back({*it, index, below});
     }
+    // A warning for each instance used more than once, by line.
+    std::vector<int> instances;
+    for (size_t i = 0; i < scene.nodes.size(); ++i)
+        if (scene.nodes[i].parents.size() > 1 && uses[i].size() > 1) instances.push_back(static_cast<int>(i));
+    std::stable_sort(instances.begin(), instances.end(), [&](int a, int b) {
+        return scene.nodes[static_cast<size_t>(a)].line < scene.nodes[static_cast<size_t>(b)].line;
+    });
+    for (int i : instances) {
+        const Node &n = scene.nodes[static_cast<size_t>(i)];
+        const std::vector<std::string> &names = uses[static_cast<size_t>(i)];
+        std::string w = path + ":" + std::to_string(n.line) + ": node '" + n.name + "' is used " +
+                        std::to_string(names.size()) +
+                        " times (an instance: it was added under more than one parent); each use is a model of its "
+                        "own, with everything under it: ";
+        for (size_t k = 0; k < names.size(); ++k) {
+            if (names.size() > 4 && k == 2) {
+                w += "..., ";
+                k = names.size() - 1;
+            }
+            w += "'" + names[k] + "'" + (k + 1 < names.size() ? ", " : "");
+        }
+        out.warnings.push_back(std::move(w));
+    }
     return true;
 }
 
@@ -689,9 +1037,12 @@ bool run_scene(const std::string &path, const std::string &text, SceneResult &ou
     lua_setfield(L, LUA_REGISTRYINDEX, "animator.scene");
     register_api(L);
     if (!sandbox.run(path, text, 1, error)) return false;
-    const auto *root_index = static_cast<const int *>(luaL_testudata(L, -1, kNodeMeta));
-    if (!root_index) {
-        error = path + ": the scene must return its root node (return rootnode), got " + luaL_typename(L, -1);
+    const auto *returned = static_cast<const int *>(luaL_testudata(L, -1, kNodeMeta));
+    // A4's scenes return nothing: they give their root to gr.render.
+    const int root_index = returned ? *returned : lua_isnil(L, -1) ? scene.render_root : -1;
+    if (root_index < 0) {
+        error = path + ": the scene must return its root node (return rootnode) or give it to gr.render, got " +
+                luaL_typename(L, -1);
         return false;
     }
     out = std::move(scene.settings);
@@ -708,7 +1059,7 @@ bool run_scene(const std::string &path, const std::string &text, SceneResult &ou
         out.warnings.push_back(std::move(w));
     }
     for (const auto &[line, note] : scene.notes) out.warnings.push_back(path + ":" + std::to_string(line) + ": " + note);
-    return flatten(scene, *root_index, path, out, error);
+    return flatten(scene, root_index, path, out, error);
 }
 
 } // namespace lua_scene

@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
 using namespace animator;
@@ -447,15 +448,23 @@ TEST_CASE("animator info --json gives the whole document, each model's world mat
 }
 
 TEST_CASE("scene files written as CS488 students write them open, each model where the course's "
-          "transform stack puts it (an independent evaluation by lua5.4, to 1e-12)") {
+          "transform stack puts it, and A4's lights, ambient, image and camera as gr.render gave them "
+          "(an independent evaluation by lua5.4, to 1e-12)") {
     // tests/data/cs488: puppets with helper functions, loops, locals, names used twice or
     // empty, CRLF line endings and tabs, block comments, inline materials, extra arguments, a z
-    // joint range, meshes the author did not publish, initial angles outside their ranges, a
-    // chain twelve joints deep. shim.lua evaluates the course's stack apart from animator, in
-    // Debian's Lua 5.4 interpreter (installed by tools/install-deps.sh).
+    // joint range, ranges in radians, colours above 1, a sheared puppet, meshes the author did not
+    // publish, initial angles outside their ranges, a chain twelve joints deep; and the ray
+    // tracer's (A4) scenes: primitives, instances, CSG, lights and gr.render. shim.lua evaluates
+    // the course's stack apart from animator, in Debian's Lua 5.4 interpreter (installed by
+    // tools/install-deps.sh).
     REQUIRE(std::system("command -v lua5.4 > /dev/null") == 0); // else: install lua5.4
     const fs::path corpus = test::source_dir() / "tests/data/cs488";
-    int files = 0;
+    int files = 0, a4_files = 0;
+    auto near = [](const nlohmann::json &got, const std::vector<double> &want, size_t from, size_t count) {
+        double worst = 0.0;
+        for (size_t k = 0; k < count; ++k) worst = std::max(worst, std::abs(got[k].get<double>() - want[from + k]));
+        return worst;
+    };
     for (const auto &entry : fs::directory_iterator(corpus)) {
         const fs::path file = entry.path();
         if (file.extension() != ".lua" || file.filename() == "shim.lua") continue;
@@ -465,26 +474,73 @@ TEST_CASE("scene files written as CS488 students write them open, each model whe
         REQUIRE(std::system(("lua5.4 " + (corpus / "shim.lua").string() + " " + file.string() + " > " +
                              truth_file.string())
                                 .c_str()) == 0);
+        // The shim's lines: "world m1..m16" per model, then "light NAME x y z r g b c0 c1 c2" per
+        // light, "ambient r g b", "render FILE W H" and "camera eye forward up fov".
         std::ifstream in(truth_file);
-        std::vector<std::vector<double>> truth;
+        std::vector<std::vector<double>> worlds, lights, cameras, ambients;
+        std::vector<std::string> light_names;
+        std::string render_file;
+        int render_width = -1, render_height = -1;
         for (std::string line; std::getline(in, line);) {
-            std::istringstream numbers(line);
-            truth.emplace_back(std::istream_iterator<double>(numbers), std::istream_iterator<double>());
+            std::istringstream words(line);
+            std::string kind;
+            words >> kind;
+            if (kind == "light") {
+                light_names.emplace_back();
+                words >> light_names.back();
+            } else if (kind == "render") {
+                words >> render_file >> render_width >> render_height;
+                continue;
+            }
+            std::vector<double> numbers{std::istream_iterator<double>(words), std::istream_iterator<double>()};
+            if (kind == "world") worlds.push_back(numbers);
+            else if (kind == "light") lights.push_back(numbers);
+            else if (kind == "ambient") ambients.push_back(numbers);
+            else if (kind == "camera") cameras.push_back(numbers);
+            else FAIL("shim.lua wrote an unknown line: " << line);
         }
+        REQUIRE(ambients.size() == 1);
+        REQUIRE(cameras.size() == 1);
+        REQUIRE(render_width >= 0);
         auto r = test::run_animator("info --json " + file.string());
         REQUIRE(r.exit_code == 0);
         const size_t start = r.out.find("{\n");
         REQUIRE(start != std::string::npos);
         const nlohmann::json doc = nlohmann::json::parse(r.out.substr(start));
-        REQUIRE(doc["models"].size() == truth.size());
-        for (size_t i = 0; i < truth.size(); ++i) {
+        REQUIRE(doc["models"].size() == worlds.size());
+        for (size_t i = 0; i < worlds.size(); ++i) {
             CAPTURE(i, doc["models"][i]["name"].get<std::string>());
-            REQUIRE(truth[i].size() == 16);
-            double worst = 0.0;
-            for (size_t k = 0; k < 16; ++k)
-                worst = std::max(worst, std::abs(doc["models"][i]["world"][k].get<double>() - truth[i][k]));
-            CHECK(worst < 1e-12);
+            REQUIRE(worlds[i].size() == 16);
+            CHECK(near(doc["models"][i]["world"], worlds[i], 0, 16) < 1e-12);
         }
+        // What gr.render set: the lights (each once, in its order), the ambient light, the image.
+        REQUIRE(doc["lights"].size() == lights.size());
+        for (size_t i = 0; i < lights.size(); ++i) {
+            const nlohmann::json &l = doc["lights"][i];
+            CAPTURE(i);
+            CHECK(l["name"] == light_names[i]);
+            CHECK(near(l["position"], lights[i], 0, 3) < 1e-12);
+            CHECK(near(l["colour"], lights[i], 3, 3) < 1e-12);
+            CHECK(near(l["falloff"], lights[i], 6, 3) < 1e-12);
+        }
+        CHECK(near(doc["settings"]["ambient"], ambients[0], 0, 3) < 1e-12);
+        CHECK(doc["settings"]["render"]["output"] == (render_file == "-" ? "" : render_file));
+        CHECK(doc["settings"]["render"]["width"] == render_width);
+        CHECK(doc["settings"]["render"]["height"] == render_height);
+        if (render_file != "-") ++a4_files;
+        // The camera at t = 0: its eye, and the quaternion turning -Z to the view direction and +Y
+        // to the up the shim made square to it, and the vertical fov.
+        const nlohmann::json &camera = doc["keyframes"][0]["camera"];
+        const std::vector<double> &c = cameras[0];
+        REQUIRE(c.size() == 10);
+        CHECK(near(camera["position"], c, 0, 3) < 1e-12);
+        const glm::dquat q(camera["rotation"][0].get<double>(), camera["rotation"][1].get<double>(),
+                           camera["rotation"][2].get<double>(), camera["rotation"][3].get<double>());
+        const glm::dvec3 forward = q * glm::dvec3(0, 0, -1), up = q * glm::dvec3(0, 1, 0);
+        CHECK(glm::length(forward - glm::dvec3(c[3], c[4], c[5])) < 1e-12);
+        CHECK(glm::length(up - glm::dvec3(c[6], c[7], c[8])) < 1e-12);
+        CHECK(std::abs(camera["fov"].get<double>() - c[9]) < 1e-12);
     }
-    CHECK(files >= 8);
+    CHECK(files >= 15);
+    CHECK(a4_files >= 4);
 }

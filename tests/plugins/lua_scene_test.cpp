@@ -212,8 +212,10 @@ TEST_CASE("scene errors name the file and the line") {
         {"no_return", "local r = gr.node('r')\n", "the scene must return its root node"},
         {"cycle", "local a = gr.node('a')\nlocal b = gr.node('b')\na:add_child(b)\nb:add_child(a)\nreturn a\n",
          "cycle.lua:4: adding 'a' under 'b' would make a cycle"},
-        {"two_parents", "local a = gr.node('a')\nlocal b = gr.node('b')\nlocal c = gr.node('c')\na:add_child(c)\nb:add_child(c)\nreturn a\n",
-         "two_parents.lua:5: node 'c' is already a child of 'a'"},
+        {"instance_cycle",
+         "local a = gr.node('a')\nlocal b = gr.node('b')\nlocal c = gr.node('c')\na:add_child(c)\nb:add_child(c)\n"
+         "c:add_child(b)\nreturn a\n",
+         "instance_cycle.lua:6: adding 'b' under 'c' would make a cycle"},
         {"settings_down", "gr.settings{down = 'w'}\nreturn gr.node('r')\n", "settings_down.lua:1: 'down' must be"},
         {"max_time", "gr.settings{max_time = 0.5}\nreturn gr.node('r')\n", "max_time.lua:1: 'max_time' must be in"},
         {"camera_same", "gr.camera{eye = {1, 1, 1}, look_at = {1, 1, 1}}\nreturn gr.node('r')\n",
@@ -380,4 +382,79 @@ TEST_CASE("joints and materials as students wrote them: an angle outside its ran
     // The material's three arguments are used.
     CHECK(opened.document.models()[1].material.kd == glm::dvec3(0.5));
     CHECK(opened.document.models()[1].material.shininess == 10.0);
+}
+
+TEST_CASE("the ray tracer's scenes open: primitives, instances, CSG as its operands, lights and "
+          "gr.render, each leniency with a warning at its line") {
+    const fs::path path = test::fresh_dir("lua_a4") / "a4.lua";
+    test::write_file(path, "local root = gr.node('root')\n"                                   // 1
+                           "local ball = gr.nh_sphere('ball', {1, 2, 3}, 0.5)\n"              // 2
+                           "root:add_child(ball)\n"                                           // 3
+                           "local leg = gr.cube('leg')\n"                                     // 4
+                           "for i = 1, 3 do\n"                                                // 5
+                           "  local stand = gr.node('stand')\n"                               // 6
+                           "  stand:translate(i, 0, 0)\n"                                     // 7
+                           "  stand:add_child(leg)\n"                                         // 8
+                           "  root:add_child(stand)\n"                                        // 9
+                           "end\n"                                                            // 10
+                           "local die = gr.intersection('die', gr.cube('c'), gr.sphere('s'))\n" // 11
+                           "root:add_child(die)\n"                                            // 12
+                           "local m = gr.material({1.5, 0.2, 0.2}, {0, 0, 0}, 10)\n"          // 13
+                           "local l1 = gr.light({0, 10, 0}, {2, 2, 2}, {1, 0, 0.01})\n"       // 14
+                           "local l2 = gr.light({5, 5, 5}, {0.5, 0.5, 0.5})\n"                // 15
+                           "gr.render(root, 'out.png', 320, 200, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 40,\n" // 16
+                           "          {0.1, 0.1, 0.1}, {l1, l2, l1})\n"                       // 17
+                           "gr.render(root, 'again.png', 64, 64, {0, 0, 1}, {0, 0, -1}, {0, 1, 0}, 40)\n" // 18
+                           "local shoulder = gr.joint('shoulder', {-1.57, 0.5, 1.57}, {0, 0, 0})\n" // 19
+                           "root:add_child(shoulder)\n");                                     // 20
+    const OpenedDocument opened = open_document(registry(), path);
+    const Document &doc = opened.document;
+    std::vector<std::string> names;
+    for (const Model &m : doc.models()) names.push_back(m.name);
+    // Each use of the instanced leg is a model of its own, under its own stand; CSG's operands
+    // are under its node.
+    CHECK(names == std::vector<std::string>{"ball", "stand", "leg", "stand.001", "leg.001", "stand.002", "leg.002",
+                                            "die", "c", "s", "shoulder"});
+    CHECK(doc.models()[4].parent == 3);
+    CHECK(doc.models()[9].parent == 7);
+    CHECK(doc.models()[0].mesh == "sphere");
+    CHECK(doc.models()[2].mesh == "cube");
+    // The sphere of radius 0.5 about (1, 2, 3): our unit sphere scaled and moved.
+    const ModelState &ball = *doc.keyframe_at(0).states[0];
+    CHECK(ball.center == glm::dvec3(1, 2, 3));
+    CHECK(ball.scale == glm::dvec3(0.5));
+    const std::string p = path.string();
+    CHECK(opened.warnings ==
+          std::vector<std::string>{
+              p + ":6: 2 node names were used before or empty, renamed to be unique: line 6 'stand' -> 'stand.001'; "
+                  "line 6 'stand' -> 'stand.002'.",
+              p + ":11: gr.intersection 'die' is shown as its two operands, 'c' and 's': animator does not draw CSG",
+              p + ":13: a material colour above 1 is kept as written: brighter than white, it may wash out to white "
+                  "where lit",
+              p + ":18: gr.render is called again (first on line 16); the first call's root, camera, lights and "
+                  "image are kept, this one and any later are ignored",
+              p + ":19: joint 'shoulder': its ranges look like radians (all within 2 pi, not whole degrees); they "
+                  "are read as degrees, as the course's viewer read them",
+              p + ":4: node 'leg' is used 3 times (an instance: it was added under more than one parent); each use "
+                  "is a model of its own, with everything under it: 'leg', 'leg.001', 'leg.002'"});
+    // The first gr.render: its lights once each, in order; its ambient, image and camera.
+    const Settings &s = doc.settings();
+    REQUIRE(s.lights.size() == 2);
+    CHECK(s.lights[0] == Light{"light", {0, 10, 0}, {2, 2, 2}, {1, 0, 0.01}});
+    CHECK(s.lights[1] == Light{"light.001", {5, 5, 5}, {0.5, 0.5, 0.5}, {1, 0, 0}});
+    CHECK(s.ambient == glm::dvec3(0.1));
+    CHECK(s.render_output == "out.png");
+    CHECK(s.render_width == 320);
+    CHECK(s.render_height == 200);
+    const CameraState &camera = *doc.keyframe_at(0).camera;
+    CHECK(camera.position == glm::dvec3(0, 0, 10));
+    CHECK(camera.fov_degrees == 40.0);
+    // The joint's range is kept, read as written (degrees).
+    REQUIRE(doc.models()[10].joint);
+    CHECK(doc.models()[10].joint->min == glm::dvec3(-1.57, 0, 0));
+    CHECK(doc.models()[10].joint->max == glm::dvec3(1.57, 0, 0));
+    // gr.render and gr.camera both set the camera: an error, at the second's line.
+    CHECK_THAT(load_error("both_cameras", "gr.camera{eye = {0, 0, 5}}\nlocal r = gr.sphere('s')\n"
+                                          "gr.render(r, 'x.png', 8, 8, {0, 0, 1}, {0, 0, -1}, {0, 1, 0}, 40)\n"),
+               Catch::Contains("both_cameras.lua:3: gr.render sets the camera, which gr.camera set on line 1"));
 }

@@ -136,6 +136,12 @@ TEST_CASE("asset ids resolve to a path relative to the document first, then the 
     CHECK_THAT(assets.searched(ANI_ASSET_MESH, "teapot", scene),
                Catch::Contains((root_a / "meshes" / "teapot.obj").string()) &&
                    Catch::Contains((root_b / "meshes" / "teapot.obj").string()));
+    // A name that already ends in the mesh's extension (the course's ray tracer writes
+    // gr.mesh('floor', 'plane.obj')) is that file in the asset folders, not "plane.obj.obj".
+    CHECK(assets.resolve(ANI_ASSET_MESH, "cube.obj", scene) == root_b / "meshes" / "cube.obj");
+    CHECK_THAT(assets.searched(ANI_ASSET_MESH, "teapot.obj", scene),
+               Catch::Contains((root_a / "meshes" / "teapot.obj").string()) &&
+                   !Catch::Contains("teapot.obj.obj"));
 }
 
 TEST_CASE("the generated PNG and BMP textures load through the host's loader alike") {
