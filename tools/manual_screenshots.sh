@@ -185,4 +185,29 @@ xdotool key shift+a; sleep 0.5
 xdotool type --delay 80 c
 xdotool mousemove --window "$win" 700 650
 shot add-model
+
+# Lights (docs/manual.md, "Lights"): a course ray-tracer scene lit by its own two lights, the
+# Lights window open from the menu bar, the first light's colour typed brighter than white, red.
+cp tests/data/cs488/a4_hier.lua "$work/"
+start_editor a4_hier.lua
+click 86 19                    # Lights
+for field in 503 593; do       # the first light's G and B: 0
+  xdotool mousemove --window "$win" "$field" 179 keydown ctrl click 1 keyup ctrl; sleep 0.4
+  xdotool key ctrl+a type 0; xdotool key Return; sleep 0.4
+done
+xdotool mousemove --window "$win" 410 179 keydown ctrl click 1 keyup ctrl; sleep 0.4   # its R: 2.5
+xdotool key ctrl+a type 2.5; xdotool key Return
+xdotool mousemove --window "$win" 900 480
+shot lights
+
+# Joints (docs/manual.md, "Joints"): the sheared puppet's neck (x -20..20), chosen in the
+# Outliner, turned up in Rotate mode past its range: held at -20, the tooltip says so.
+cp tests/data/cs488/sheared_puppet.lua "$work/"
+start_editor sheared_puppet.lua
+click 100 638                  # neck, in the Outliner
+click 101 64                   # Rotate
+xdotool mousemove --window "$win" 900 300 mousedown 3
+for dy in $(seq 10 10 200); do xdotool mousemove --window "$win" 900 $((300 - dy)); sleep 0.05; done
+shot joints
+xdotool mouseup 3
 echo "wrote the screenshots to $out"

@@ -535,6 +535,8 @@ int run_editor(const EditorOptions &options) {
                                                   static_cast<int>((click->y - view.y) * to_fb));
                         session.click(model, (e.mods & GLFW_MOD_CONTROL) != 0);
                     }
+                    // A turn that a joint's range stopped says so (joint_clamp.hpp).
+                    if (const std::string note = session.take_joint_note(); !note.empty()) panels.say(note);
                     break;
                 case InputEvent::Scroll:
                     // In the free view the wheel zooms it; looking through the animated camera
@@ -668,6 +670,9 @@ int run_editor(const EditorOptions &options) {
                     if (const char *tip = gizmo_handle_tip(session.mode(), gizmo_hit(*gizmo, gv, glm::dvec2(cx - view.x, cy - view.y))))
                         ImGui::SetTooltip("%s", tip);
             }
+            // While a turn is held by a joint's range, a tooltip at the cursor says so.
+            if (pointer.down() && session.dragging())
+                if (const std::string note = session.joint_note(); !note.empty()) ImGui::SetTooltip("%s", note.c_str());
             // What this frame's panels show; the work below (playback, the bake) may change it.
             const ScreenState shown = screen_state(session, panels.message());
             // A document opened from the File menu: its autosave, if any, is offered as at a start.
@@ -754,6 +759,14 @@ int run_editor(const EditorOptions &options) {
                 // The gizmo over everything, its handle under the cursor (or dragged) highlighted.
                 const GizmoView gizmo_view = session.gizmo_view(static_cast<int>(std::lround(view.width)),
                                                                 static_cast<int>(std::lround(view.height)));
+                // The scene's lights as markers where they are (none: the camera's own light).
+                if (const auto &lights = session.document().settings().lights; !lights.empty()) {
+                    if (!gizmo_overlay) gizmo_overlay = std::make_unique<ScreenOverlay>();
+                    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                    glViewport(target.x, target.y, target.width, target.height);
+                    gizmo_overlay->draw(light_markers(lights, gizmo_view), static_cast<float>(view.width),
+                                        static_cast<float>(view.height));
+                }
                 if (const auto gizmo = session.gizmo(gizmo_view)) {
                     GizmoHandle lit = session.gizmo_handle();
                     if (!pointer.down() && !io.WantCaptureMouse)

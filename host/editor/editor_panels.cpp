@@ -13,6 +13,8 @@
 #include <imgui_internal.h> // ImGuiItemFlags_MixedValue, GetActiveID
 #include <imgui_stdlib.h>
 
+#include <glm/common.hpp>
+
 #include <algorithm>
 #include <cstdarg>
 #include <cstdio>
@@ -54,10 +56,13 @@ bool asset_combo(const char *label, std::string &value, const std::vector<std::s
     return changed;
 }
 
+// A colour as three numbers and a swatch. Colours may exceed 1 (a bright light, a material that
+// takes more than the light gives): the numbers are not clamped to 1 (HDR), only kept >= 0.
 bool colour(const char *label, glm::dvec3 &c, bool mixed = false) {
     float rgb[3] = {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z)};
-    const bool changed = ImGui::ColorEdit3(mixed_label(label, mixed).c_str(), rgb);
-    if (changed) c = glm::dvec3(rgb[0], rgb[1], rgb[2]);
+    const bool changed = ImGui::ColorEdit3(mixed_label(label, mixed).c_str(), rgb,
+                                           ImGuiColorEditFlags_HDR | ImGuiColorEditFlags_Float);
+    if (changed) c = glm::max(glm::dvec3(rgb[0], rgb[1], rgb[2]), glm::dvec3(0.0));
     return changed;
 }
 
@@ -177,6 +182,7 @@ void Panels::draw(EditorSession &session, float width, float height, double wall
     const PanelPlace &bottom = places_.back();
     const float above = bottom.collapsed ? height : static_cast<float>(bottom.rect.y);
     if (session.last_selected() >= 0) model_panel(session, width, height, above);
+    if (lights_open_) lights_window(session);
     dialogs(session);
     output_.draw(session);
     draw_help_overlay(&help_open_, width, height);
@@ -231,6 +237,8 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
             if (ImGui::MenuItem("Export...", "CTRL+SHIFT+E")) open_export();
             tip("Export the motion trace (CSV) and the soundtrack (WAV) of the animation as it is now");
         });
+        if (ImGui::MenuItem("Lights", nullptr, lights_open_)) lights_open_ = !lights_open_;
+        tip("The scene's lights and its ambient light (saved in the animation): opens or closes their window");
         const char *name = "Animator Interface";
         const float right = ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize(name).x;
         if (right > ImGui::GetCursorPosX() + 8.0f) {
@@ -777,6 +785,79 @@ void Panels::physics_backend(EditorSession &session) {
     ImGui::TreePop();
 }
 
+void Panels::lights_window(EditorSession &session) {
+    ImGui::SetNextWindowPos(ImVec2(360, 40), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(400, 420), ImGuiCond_FirstUseEver);
+    const bool open = ImGui::Begin("Lights", &lights_open_);
+    if (!open) {
+        ImGui::End();
+        return;
+    }
+    ImGui::PushItemWidth(-110.0f);
+    Settings &s = *settings_draft_;
+    std::string error;
+    bool changed = false; // one change, one undoable edit of the settings
+    if (s.lights.empty())
+        ImGui::TextWrapped("No lights: the view is lit by a light that rides with the camera. Add one to light the "
+                           "scene from where you put it.");
+    else
+        ImGui::TextWrapped("%zu of at most %zu lights; the camera's own light is off while there are any.",
+                           s.lights.size(), Settings::kMaxLights);
+    if (let_go(colour("Ambient", s.ambient))) changed = true;
+    tip("The ambient light: lights every model evenly, shadowed or not (0.2 grey by default; may exceed 1).\n"
+        "One undoable change.");
+    std::optional<size_t> remove;
+    for (size_t i = 0; i < s.lights.size(); ++i) {
+        Light &l = s.lights[i];
+        ImGui::PushID(static_cast<int>(i));
+        ImGui::Separator();
+        ImGui::InputText("Name", &l.name);
+        if (ImGui::IsItemDeactivatedAfterEdit()) changed = true;
+        tip("The light's name, as the scene file calls it (Enter or a click elsewhere sets it)");
+        if (let_go(vector3("Position (m)", l.position))) changed = true;
+        tip("Where the point light is, in the world (drag a number, or CTRL+click to type)");
+        if (let_go(colour("Colour", l.colour))) changed = true;
+        tip("Its colour and brightness: each number may exceed 1 (a brighter light), >= 0");
+        double falloff[3] = {l.falloff.x, l.falloff.y, l.falloff.z};
+        const double zero = 0.0;
+        const bool turned = ImGui::DragScalarN("Falloff", ImGuiDataType_Double, falloff, 3, 0.01f, &zero, nullptr,
+                                               "%.3f", ImGuiSliderFlags_AlwaysClamp);
+        if (turned) l.falloff = glm::dvec3(falloff[0], falloff[1], falloff[2]);
+        if (let_go(turned)) changed = true;
+        tip("c0 c1 c2: at distance d the light is its colour / (c0 + c1 d + c2 d^2); each >= 0, not all 0.\n"
+            "1 0 0 does not fade; the course's scenes often use 1 0 0.");
+        if (ImGui::SmallButton("Remove")) remove = i;
+        tip("Remove the light '%s' (u undoes it)", l.name.c_str());
+        ImGui::PopID();
+    }
+    ImGui::Separator();
+    ImGui::BeginDisabled(s.lights.size() >= Settings::kMaxLights);
+    const bool add = ImGui::Button("Add light");
+    ImGui::EndDisabled();
+    tip(s.lights.size() >= Settings::kMaxLights ? "A scene has at most 8 lights"
+                                                : "Add a white point light where the camera is (one undoable change)");
+    if (remove) {
+        const std::string name = s.lights[*remove].name;
+        s.lights.erase(s.lights.begin() + static_cast<std::ptrdiff_t>(*remove));
+        if (session.set_settings(s, &error)) say("removed the light '" + name + "' (u undoes it)");
+        else commit(false, error);
+    } else if (add && s.lights.size() < Settings::kMaxLights) {
+        Light l;
+        for (int n = static_cast<int>(s.lights.size()) + 1;; ++n) {
+            l.name = "light" + std::to_string(n);
+            if (std::none_of(s.lights.begin(), s.lights.end(), [&](const Light &o) { return o.name == l.name; })) break;
+        }
+        l.position = session.frame().camera.position;
+        s.lights.push_back(l);
+        if (session.set_settings(s, &error)) say("added the light '" + l.name + "' (u undoes it)");
+        else commit(false, error);
+    } else if (changed) {
+        commit(session.set_settings(s, &error), error);
+    }
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+
 void Panels::model_panel(EditorSession &session, float width, float height, float bottom) {
     const int index = session.last_selected();
     if (!model_draft_ || model_draft_index_ != index) {
@@ -891,9 +972,10 @@ void Panels::model_panel(EditorSession &session, float width, float height, floa
         if (asset_combo("Moving", m.moving_sound, sounds, mixed(ModelField::MovingSound))) done = ModelField::MovingSound;
         tip("Looped while the model moves");
     }
-    std::string transform_error;
-    if (transform_panel_.draw(session, transform_error) || !transform_error.empty())
+    std::string transform_error, transform_note;
+    if (transform_panel_.draw(session, transform_error, transform_note) || !transform_error.empty())
         commit(transform_error.empty(), transform_error);
+    if (!transform_note.empty() && transform_error.empty()) say(transform_note);
     // Last, so that the sections above keep their places.
     const bool body_open = ImGui::CollapsingHeader("Rigid body", ImGuiTreeNodeFlags_DefaultOpen);
     tip("How the model's contacts take energy and turn it (docs/physics.md). A contact uses the lower\n"

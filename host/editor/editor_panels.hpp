@@ -96,6 +96,9 @@ class Panels {
     void dialogs(EditorSession &session);
     void commit(bool ok, const std::string &error);
     void cel_outline(Settings &s, EditorSession &session);
+    // The scene's lights and ambient colour (Settings::lights), a window of the Animator
+    // Interface opened from its menu bar (its panel has no room left at 1280x720).
+    void lights_window(EditorSession &session);
 
     Environment &env_;
     std::optional<Settings> settings_draft_;
@@ -111,6 +114,7 @@ class Panels {
     std::vector<PanelPlace> places_;
     bool quit_asked_ = false, quit_confirmed_ = false;
     bool help_open_ = false;
+    bool lights_open_ = false;
     std::string error_title_, error_text_;
     bool error_pending_ = false;
     bool recover_asked_ = false;

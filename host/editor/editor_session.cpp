@@ -295,10 +295,26 @@ void EditorSession::update_drag(glm::dvec2 delta) {
     preview_stale_ = true;
 }
 
-ModelState EditorSession::dragged_state(const Drag &d, size_t i) const {
-    const ModelState &start = d.models[i].second;
-    if (d.gizmo) return apply_gizmo_change(start, d.gizmo->parents[i], d.gizmo->change);
-    return drag_model(start, mode_, d.button, d.delta, d.metres_per_pixel);
+ModelState EditorSession::dragged_state(const Drag &d, size_t i) const { return dragged_clamp(d, i).state; }
+
+JointClamp EditorSession::dragged_clamp(const Drag &d, size_t i) const {
+    const auto &[model, start] = d.models[i];
+    const ModelState s = d.gizmo ? apply_gizmo_change(start, d.gizmo->parents[i], d.gizmo->change)
+                                 : drag_model(start, mode_, d.button, d.delta, d.metres_per_pixel);
+    // A turn stops at a joint's range (joint_clamp.hpp); a move or a scale turns nothing.
+    if (s.angles == start.angles) return {s, {false, false, false}};
+    return clamp_to_joint(doc_.models()[static_cast<size_t>(model)], start, s);
+}
+
+std::string EditorSession::joint_note() const {
+    if (!drag_ || mode_ == EditMode::Camera) return "";
+    std::string note;
+    for (size_t i = 0; i < drag_->models.size(); ++i) {
+        const std::string said =
+            joint_stop_text(doc_.models()[static_cast<size_t>(drag_->models[i].first)], dragged_clamp(*drag_, i));
+        if (!said.empty()) note += (note.empty() ? "" : "; ") + said;
+    }
+    return note;
 }
 
 void EditorSession::update_gizmo_change() {
@@ -462,6 +478,7 @@ bool EditorSession::key_states(const std::vector<std::pair<int, ModelState>> &st
 
 void EditorSession::end_drag() {
     if (!drag_) return;
+    ended_joint_note_ = joint_note();
     const Drag d = *drag_;
     drag_.reset();
     if (d.delta == glm::dvec2(0.0)) return;

@@ -7,6 +7,7 @@
 #include "document/history.hpp"
 #include "editor/free_view.hpp"
 #include "editor/gizmo.hpp"
+#include "editor/joint_clamp.hpp"
 #include "editor/manipulation.hpp"
 #include "editor/model_fields.hpp"
 #include "editor/motion_paths.hpp"
@@ -20,6 +21,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace animator {
@@ -125,6 +127,10 @@ class EditorSession {
     void update_drag(glm::dvec2 delta);
     void end_drag();
     void cancel_drag() { drag_.reset(); }
+    // While models are turned: which of them their joint range stops (joint_clamp.hpp), for a
+    // tooltip; "" when none is. take_joint_note(): the same for the drag that ended last, once.
+    std::string joint_note() const;
+    std::string take_joint_note() { return std::exchange(ended_joint_note_, std::string()); }
     bool dragging() const { return drag_.has_value(); }
     glm::dvec2 drag_delta() const { return drag_ ? drag_->delta : glm::dvec2(0.0); } // pixels
     // The transform gizmo (gizmo.hpp) in a view of the shown frame `width` x `height` pixels:
@@ -264,6 +270,7 @@ class EditorSession {
     };
     // Model `i` of the drag, as the drag so far leaves it.
     ModelState dragged_state(const Drag &d, size_t i) const;
+    JointClamp dragged_clamp(const Drag &d, size_t i) const; // and which angles a joint held
     void update_gizmo_change();
     std::int64_t history_key() const;
     // open(): reads `file` as the document at `path`.
@@ -309,6 +316,7 @@ class EditorSession {
     std::set<int> hidden_; // models whose own visibility is off
     EditMode mode_ = EditMode::Camera;
     std::optional<Drag> drag_;
+    std::string ended_joint_note_;
     bool free_view_on_ = false, view_started_ = false;
     bool paths_on_ = false;
     std::set<int> pinned_paths_;

@@ -1,5 +1,7 @@
 #include "editor/gizmo_drawing.hpp"
 
+#include <algorithm>
+
 namespace animator {
 
 glm::vec3 gizmo_colour(int axis, bool highlighted) {
@@ -54,6 +56,26 @@ OverlayTriangles gizmo_triangles(const std::vector<GizmoShape> &shapes, GizmoHan
         const glm::vec3 colour = gizmo_colour(s->axis, s->handle == highlighted);
         if (s->filled) t.convex(points, colour);
         else t.polyline(points, s->closed, kGizmoLineWidth, colour);
+    }
+    return t;
+}
+
+OverlayTriangles light_markers(const std::vector<Light> &lights, const GizmoView &view) {
+    OverlayTriangles t;
+    constexpr float kHalf = 6.0f, kRay = 11.0f;
+    for (const Light &l : lights) {
+        const auto p = view.project(l.position);
+        if (!p) continue;
+        const glm::vec2 c(*p);
+        const glm::vec3 bright(l.colour);
+        const float top = std::max({bright.x, bright.y, bright.z, 1.0f});
+        const glm::vec3 colour = bright / top;
+        const std::vector<glm::vec2> diamond{c + glm::vec2(0, -kHalf), c + glm::vec2(kHalf, 0), c + glm::vec2(0, kHalf),
+                                             c + glm::vec2(-kHalf, 0)};
+        for (const glm::vec2 d : {glm::vec2(1, 1), glm::vec2(1, -1), glm::vec2(-1, 1), glm::vec2(-1, -1)})
+            t.line(c + d * (kHalf * 0.6f), c + d * (kRay * 0.75f), 2.0f, colour);
+        t.polyline(diamond, true, 3.0f, glm::vec3(0.0f));
+        t.convex(diamond, colour);
     }
     return t;
 }

@@ -19,4 +19,9 @@ const char *gizmo_handle_tip(EditMode mode, GizmoHandle handle);
 // The triangles that draw `shapes` (gizmo_shapes) in the view's pixels, the centre on top.
 OverlayTriangles gizmo_triangles(const std::vector<GizmoShape> &shapes, GizmoHandle highlighted);
 
+// The scene's lights (Settings::lights) as markers in `view`: a small diamond in each light's
+// colour (scaled down into [0, 1] when brighter) ringed in black, with four short rays; none for
+// a light behind the camera.
+OverlayTriangles light_markers(const std::vector<Light> &lights, const GizmoView &view);
+
 } // namespace animator

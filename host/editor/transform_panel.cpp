@@ -1,10 +1,12 @@
 #include "editor/transform_panel.hpp"
 
+#include "editor/joint_clamp.hpp"
+
 #include <imgui.h>
 
 namespace animator {
 
-bool TransformPanel::draw(EditorSession &session, std::string &error) {
+bool TransformPanel::draw(EditorSession &session, std::string &error, std::string &note) {
     const int last = session.last_selected();
     if (last < 0 || !session.selection().count(last)) return false;
     const bool open = ImGui::CollapsingHeader("Transform", ImGuiTreeNodeFlags_DefaultOpen);
@@ -16,7 +18,13 @@ bool TransformPanel::draw(EditorSession &session, std::string &error) {
     for (int m : session.selection()) states.push_back(session.state_at_time(m));
     const std::array<bool, 3> mixed = transform_mixed(states);
     // What the rows show follows the time, a drag, an undo: not while a row is held or typed.
-    if (!draft_) shown_ = transform_values(session.state_at_time(last));
+    // A model with a joint range shows its angles read signed, as its range is (joint_clamp.hpp).
+    const Model &model = session.document().models()[static_cast<size_t>(last)];
+    if (!draft_) {
+        shown_ = transform_values(session.state_at_time(last));
+        if (model.joint)
+            for (int i = 0; i < 3; ++i) shown_->rotation[i] = signed_degrees(shown_->rotation[i]);
+    }
     TransformValues values = draft_ ? *draft_ : *shown_;
 
     static const char *const kLabels[3] = {"Position (m)", "Rotation (deg)", "Scale"};
@@ -41,10 +49,29 @@ bool TransformPanel::draw(EditorSession &session, std::string &error) {
         if (ImGui::IsItemActive()) active = true;
         // One gesture, one edit: a drag when let go, a typed number when entered.
         if ((changed && !ImGui::IsItemActive()) || ImGui::IsItemDeactivatedAfterEdit()) commit = true;
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s\nA change keys every selected model at the current time (a new keyframe if there "
+        if (ImGui::IsItemHovered()) {
+            const std::string joint = row == 1 && model.joint
+                                          ? "\nRead signed (-180..180]; a turn stops at the joint's range: " +
+                                                joint_range_text(*model.joint) + "."
+                                          : "";
+            ImGui::SetTooltip("%s%s\nA change keys every selected model at the current time (a new keyframe if there "
                               "is none); u undoes it.\nDrag a number, or CTRL+click or double-click it to type one.",
-                              kTips[row]);
+                              kTips[row], joint.c_str());
+        }
+    }
+    // What the scene file fixed of the model, read only (docs/manual.md, "Joints").
+    if (model.joint) {
+        ImGui::TextDisabled("Joint: %s", joint_range_text(*model.joint).c_str());
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The joint's range from the scene file (a course puppet's gr.joint), degrees read signed:\n"
+                              "a turn by the gizmo, a drag or the Rotation fields stops at its ends (min = max holds\n"
+                              "that angle still). Read only.");
+    }
+    if (model.rest != glm::dmat3(1.0)) {
+        ImGui::TextDisabled("Shape: sheared (fixed, from the scene file)");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("The mesh is drawn and collides under a fixed shape the scene file gave it (a course node\n"
+                              "scaled unevenly after it was turned), beneath its Position, Rotation and Scale. Read only.");
     }
     if (active) draft_ = values;
     if (!commit) {
@@ -55,7 +82,15 @@ bool TransformPanel::draw(EditorSession &session, std::string &error) {
     std::vector<std::pair<int, ModelState>> keyed;
     for (int m : session.selection()) {
         const ModelState before = session.state_at_time(m);
-        const ModelState after = with_edited_components(before, *shown_, values);
+        ModelState after = with_edited_components(before, *shown_, values);
+        // A turn stops at the model's joint range, and says so.
+        if (after.angles != before.angles) {
+            const Model &turned = session.document().models()[static_cast<size_t>(m)];
+            const JointClamp clamp = clamp_to_joint(turned, before, after);
+            after = clamp.state;
+            if (const std::string said = joint_stop_text(turned, clamp); !said.empty())
+                note += (note.empty() ? "" : "; ") + said;
+        }
         if (!(after == before)) keyed.emplace_back(m, after);
     }
     if (keyed.empty()) return false;

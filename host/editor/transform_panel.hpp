@@ -14,8 +14,8 @@ namespace animator {
 class TransformPanel {
   public:
     // Inside the Model Interface's window. True when a change was committed; `error` says why
-    // it was refused (the document unchanged).
-    bool draw(EditorSession &session, std::string &error);
+    // it was refused (the document unchanged); `note`, which turns a joint's range stopped.
+    bool draw(EditorSession &session, std::string &error, std::string &note);
 
   private:
     std::optional<TransformValues> shown_, draft_; // while a row is held or typed into

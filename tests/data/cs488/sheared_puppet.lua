@@ -2,6 +2,7 @@
 -- children under them that inherit it, as the course's viewer drew them.
 root = gr.node('root')
 root:rotate('y', 20)
+root:translate(0, 0, -8) -- in front of the course viewer's camera, at the origin looking down -Z
 
 torso = gr.mesh('sphere', 'torso')
 torso:rotate('z', 30)
