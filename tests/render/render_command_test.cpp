@@ -1,6 +1,7 @@
 // `animator render` as a user runs it, with no display: every example animation and scene
 // becomes numbered PNG frames of the asked size.
 #include "assets/image.hpp"
+#include "image_compare.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
@@ -298,4 +299,33 @@ TEST_CASE("animator render draws a course puppet's sheared part as its author sa
     CHECK(inside > 1000);
     CHECK(only_dropped > 300); // the shear matters here: dropping it would cover these pixels
     CHECK(wrong == 0);
+}
+
+TEST_CASE("golden: a course ray-tracer scene file, rendered as it asks, lit by its own two lights") {
+    // tests/data/cs488/a4_frames.lua: every primitive of A4, gr.render's camera, ambient light
+    // and two lights (a white key light and a blue rim light), through the Lua reader and
+    // `animator render` with no --out (the still gr.render names), at a quarter of its size.
+    const fs::path dir = test::fresh_dir("render_a4_golden");
+    fs::copy_file(test::source_dir() / "tests/data/cs488/a4_frames.lua", dir / "a4_frames.lua");
+    const auto r = test::run_animator("render " + (dir / "a4_frames.lua").string() + " --size 160x100", kNoDisplay);
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    const Image image = load_image(dir / "frame00.png");
+    // The golden tests' tolerance (golden_test.cpp): a few edge pixels may flip on another CPU.
+    const std::string problem = test::check_golden("a4_frames", image, test::Tolerance{48.0, 0.005, 1.0});
+    INFO(problem);
+    CHECK(problem.empty());
+    // Under the camera's light instead of its own (the lights dropped from the scene), it must
+    // not pass for the golden.
+    std::string text = test::read_file(dir / "a4_frames.lua");
+    const std::string lights = "{key, rim})";
+    REQUIRE(text.find(lights) != std::string::npos);
+    text.replace(text.find(lights), lights.size(), "{})");
+    test::write_file(dir / "unlit.lua", text);
+    REQUIRE(test::run_animator("render " + (dir / "unlit.lua").string() + " --size 160x100", kNoDisplay).exit_code == 0);
+    const Image unlit = load_image(dir / "frame00.png");
+    const Image golden = load_image(test::source_dir() / "tests/render/golden/a4_frames.png");
+    const test::ImageDifference d = test::compare_images(unlit, golden, 48.0);
+    CAPTURE(d.over, d.mean);
+    CHECK((d.over > 0.005 || d.mean > 1.0));
 }
