@@ -65,17 +65,21 @@ std::vector<fs::path> AssetPaths::candidates(ani_asset_kind kind, const std::str
                                              const fs::path &document) const {
     std::vector<fs::path> out;
     if (id.empty()) return out;
-    // A path relative to the document that names it (meshes only, as the scene format says).
-    if (kind == ANI_ASSET_MESH) {
-        const fs::path relative = document.empty() ? fs::path(id) : document.parent_path() / id;
-        out.push_back(relative);
-    }
     // An id that already names its file ("plane.obj", as the course's ray-tracer scenes write
     // meshes) is that file in each asset folder, not "plane.obj.obj".
     const std::vector<std::string> extensions = extensions_of(kind);
     const bool has_extension = std::any_of(extensions.begin(), extensions.end(), [&](const std::string &ext) {
         return !ext.empty() && id.size() > ext.size() && id.compare(id.size() - ext.size(), ext.size(), ext) == 0;
     });
+    // A path relative to the document that names it (meshes only, as the scene format says), and
+    // an id without its extension beside it (a course puppet's gr.mesh('luffy-face') with its
+    // luffy-face.obj next to the scene).
+    if (kind == ANI_ASSET_MESH) {
+        const fs::path relative = document.empty() ? fs::path(id) : document.parent_path() / id;
+        out.push_back(relative);
+        if (!has_extension)
+            for (const std::string &ext : extensions) out.push_back(fs::path(relative.string() + ext));
+    }
     for (const fs::path &root : roots_) {
         if (has_extension) out.push_back(root / folder_of(kind) / id);
         else

@@ -673,6 +673,12 @@ bool EditorSession::add_model(const std::string &mesh_id, std::string &message) 
         return false;
     }
     std::string error;
+    // A mesh that is not there is refused (a scene's may load as a stand-in, a new model may not).
+    if (!env_.assets.resolve(ANI_ASSET_MESH, mesh_id, path_)) {
+        message = "cannot add a model: mesh '" + mesh_id + "' not found (" +
+                  env_.assets.searched(ANI_ASSET_MESH, mesh_id, path_) + ")";
+        return false;
+    }
     if (!mesh_of(mesh_id, &error)) {
         message = "cannot add a model: " + error;
         return false;

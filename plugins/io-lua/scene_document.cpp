@@ -22,12 +22,20 @@ void resolve_meshes(const SceneResult &scene, const std::string &path, const ani
         if (!m.mesh.empty()) by_line.push_back(&m);
     std::stable_sort(by_line.begin(), by_line.end(),
                      [](const SceneModel *a, const SceneModel *b) { return a->line < b->line; });
-    for (const SceneModel *m : by_line) {
+    // One warning per line and mesh: the models of an instance (one node under several parents)
+    // share both, and are counted.
+    for (size_t i = 0; i < by_line.size();) {
+        const SceneModel *m = by_line[i];
+        size_t uses = 1;
+        while (i + uses < by_line.size() && by_line[i + uses]->line == m->line && by_line[i + uses]->mesh == m->mesh)
+            ++uses;
+        i += uses;
         char where[2048];
         if (!assets->resolve(host, ANI_ASSET_MESH, m->mesh.c_str(), path.c_str(), where, sizeof where))
-            // (The host's own words for it, after the line: it then does not say it twice.)
-            warnings.push_back(path + ":" + std::to_string(m->line) + ": mesh '" + m->mesh + "' not found (" +
-                               where + "); shown as a stand-in cube until it is there");
+            // (The host's own words for it end the line, so that it does not say them twice.)
+            warnings.push_back(path + ":" + std::to_string(m->line) + ": " +
+                               (uses > 1 ? std::to_string(uses) + " models (an instance): " : "") + "mesh '" +
+                               m->mesh + "' not found (" + where + "); shown as a stand-in cube until it is there");
     }
 }
 

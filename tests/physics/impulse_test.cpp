@@ -186,7 +186,7 @@ TEST_CASE("impulse: with friction and spin, spheres never gain energy for e <= 1
     CHECK(slipping > 100);
 }
 
-TEST_CASE("material: a description before SDK 1.3 gets the seed's world; values out of range are "
+TEST_CASE("material: a description before SDK 1.3 gets the seed's world, values out of range are "
           "refused naming the model") {
     ani_model_desc d{};
     d.name = "odd ball";
@@ -219,7 +219,7 @@ TEST_CASE("material: a description before SDK 1.3 gets the seed's world; values 
 }
 
 TEST_CASE("impulse: with friction, general turning bodies touching off the line through their "
-          "centres never gain energy for e <= 1; the impulse's friction is scaled down where "
+          "centres never gain energy for e <= 1, the impulse's friction is scaled down where "
           "Newton + Coulomb alone would create it") {
     std::mt19937 rng(18);
     std::uniform_real_distribution<double> u(-1.0, 1.0), pos(0.0, 1.0);

@@ -325,7 +325,7 @@ TEST_CASE("a backspinning ball dropped on a rough floor sticks at its first boun
     CHECK(timeline->events().size() < 200);
 }
 
-TEST_CASE("an open mesh with Rotates on is refused naming the model; a cone (its centre of mass "
+TEST_CASE("an open mesh with Rotates on is refused naming the model, a cone (its centre of mass "
           "off its origin) and a cylinder spun about its axis turn, without a warning") {
     std::vector<std::string> lines;
     Environment logged(

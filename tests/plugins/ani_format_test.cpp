@@ -261,7 +261,7 @@ TEST_CASE("a model's rigid-body keys: absent (older files) read as the defaults,
     CHECK_THAT(text, Catch::Contains("  restitution 0.25\n  friction 1.5\n  rotates true\n  angular_velocity 0 -2.5 6.28\n"));
 }
 
-TEST_CASE("lights, ambient, render output, rest shapes and joint ranges round trip; only then is the file version 2") {
+TEST_CASE("lights, ambient, render output, rest shapes and joint ranges round trip, only then is the file version 2") {
     const fs::path dir = test::fresh_dir("ani_scene_keys");
     Document doc;
     Model m;

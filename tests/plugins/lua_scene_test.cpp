@@ -248,7 +248,7 @@ TEST_CASE("errors carry the whole path of a scene, however long") {
     CHECK_THAT(load_error_at(path), Catch::StartsWith(path.string() + ":3: the scene ran past"));
 }
 
-TEST_CASE("a mesh the scene's author did not publish loads as a stand-in with a warning at its line; "
+TEST_CASE("a mesh the scene's author did not publish loads as a stand-in with a warning at its line, "
           "in an animation it stays an error") {
     const fs::path root = test::fresh_dir("unknown_mesh_assets");
     fs::create_directories(root / "meshes");
@@ -288,11 +288,29 @@ TEST_CASE("a mesh the scene's author did not publish loads as a stand-in with a 
     CHECK_FALSE(found[0]->stand_in);
     CHECK(found[0]->triangle_count() == 1);
 
+    // A node under three parents (an instance, as A4's cows) is said once, with its models counted,
+    // and the host does not say it again.
+    test::write_file(dir / "cows.lua", "local r = gr.node('r')\nlocal cow = gr.mesh('cow', 'cow.obj')\n"
+                                       "for i = 1, 3 do\n  local at = gr.node('at')\n  at:add_child(cow)\n"
+                                       "  r:add_child(at)\nend\nreturn r\n");
+    const OpenedDocument cows = open_document(env.plugins, dir / "cows.lua");
+    CHECK(cows.document.models().size() == 6);
+    std::vector<std::string> said_by_reader;
+    for (const std::string &w : cows.warnings)
+        if (w.find("not found") != std::string::npos) said_by_reader.push_back(w);
+    REQUIRE(said_by_reader.size() == 1);
+    CHECK_THAT(said_by_reader[0], Catch::StartsWith((dir / "cows.lua").string() +
+                                                    ":2: 3 models (an instance): mesh 'cow.obj' not found ("));
+    more.clear();
+    load_meshes({"cow.obj", "cow.obj", "cow.obj"}, env.assets, dir / "cows.lua", more);
+    CHECK_FALSE(more.empty());
+    CHECK(not_said_before(more, cows.warnings).empty());
+
     test::write_file(dir / "bad.ani", "animator-ani 1\nmodel \"t\"\n  mesh \"teapot\"\nend\n");
     CHECK_THROWS_WITH(open_document(env.plugins, dir / "bad.ani"), Catch::Contains("bad.ani:3: unknown mesh \"teapot\""));
 }
 
-TEST_CASE("set_physics sets a node's rigid-body settings; a node without them has the defaults") {
+TEST_CASE("set_physics sets a node's rigid-body settings, a node without them has the defaults") {
     // Read through the isolated child, so the scene wire carries them both ways.
     const Document doc = load("rigid", R"(
 local root = gr.node('root')

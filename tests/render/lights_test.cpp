@@ -134,7 +134,7 @@ TEST_CASE("ambient light is the document's, with or without lights of its own") 
     }
 }
 
-TEST_CASE("eight lights are all used; a light of colour 0 adds nothing") {
+TEST_CASE("eight lights are all used, a light of colour 0 adds nothing") {
     // Eight dim lights spread over the floor, each its own falloff: the formula, still.
     std::vector<Light> eight;
     for (int i = 0; i < 8; ++i) {

@@ -37,7 +37,7 @@ TEST_CASE("pick names the model under a pixel, the nearest one where they overla
     CHECK(renderer.pick(frame, width / 2, height / 2, width / 4, height / 4) == 3);
 }
 
-TEST_CASE("hidden models are neither drawn, outlined nor picked; the others are as before") {
+TEST_CASE("hidden models are neither drawn, outlined nor picked, the others are as before") {
     gl_context();
     Document doc = make_document(make_camera({0, 0, 8}));
     doc.add_model(make_model("back", "sphere", {0, 0, 1}), make_state({0, 0, -3}, glm::dvec3(1.5)));

@@ -64,7 +64,7 @@ TEST_CASE("rows: the camera's first, then one per model, under the ruler", "[dop
     CHECK(many.row_at(587 + 20) == 2); // row 2 spans 20 + 28 - 30 = 18 .. 32 px below the top
 }
 
-TEST_CASE("a click hits the nearest key of its row; a box holds the keys whose centres it covers", "[dope_sheet]") {
+TEST_CASE("a click hits the nearest key of its row, a box holds the keys whose centres it covers", "[dope_sheet]") {
     const DopeSheetLayout l = fitted(5.0);
     const std::vector<KeyRef> keys = {{0, KeyRef::kCamera}, {0, 0}, {0, 1}, {2000, 0}, {2100, 0}, {3000, 1}};
     const double y0 = l.row_centre(1);
@@ -128,7 +128,7 @@ TEST_CASE("a click on the ruler puts the playhead on the nearest frame", "[dope_
     CHECK(snap_to_frame(9.0, 30, 5000) == 5000);
 }
 
-TEST_CASE("dragging keys retimes them by whole frames, inside (0, max]", "[dope_sheet]") {
+TEST_CASE("dragging keys retimes them by whole frames, after 0 and up to the max time", "[dope_sheet]") {
     const DopeSheetLayout l = fitted(5.0);
     const double pps = l.view().pixels_per_second;
     const std::vector<KeyRef> moving = {{2000, 0}, {3000, 1}};
@@ -143,7 +143,7 @@ TEST_CASE("dragging keys retimes them by whole frames, inside (0, max]", "[dope_
     CHECK(retime_offset(l, {2000, 0}, {}, 600, 900, 30, 5000) == 0);
 }
 
-TEST_CASE("the wheel zooms about the pointer, down to a frame every 120 px; panning stays inside", "[dope_sheet]") {
+TEST_CASE("the wheel zooms about the pointer, down to a frame every 120 px, panning stays inside", "[dope_sheet]") {
     const DopeSheetLayout l = fitted(10.0);
     const double x = l.x_of(4.0);
     const TimeView in = zoom_view(l, x, 2.0, 10.0, 30);
@@ -166,7 +166,7 @@ TEST_CASE("the wheel zooms about the pointer, down to a frame every 120 px; pann
     CHECK(clamp_view(last, 2.0, l.track_width(), 30) == fit_view(2.0, l.track_width()));
 }
 
-TEST_CASE("released spans: free flight and rest, joined where contiguous; keyed spans are not", "[dope_sheet]") {
+TEST_CASE("released spans: free flight and rest, joined where contiguous, keyed spans are not", "[dope_sheet]") {
     const std::vector<ani_motion_segment> segments = {
         segment(0.0, 1.0, ANI_MOTION_KEYED), segment(1.0, 1.5, ANI_MOTION_FREE), segment(1.5, 2.0, ANI_MOTION_FREE),
         segment(2.0, 3.0, ANI_MOTION_REST), segment(3.0, 4.0, ANI_MOTION_KEYED), segment(4.0, 5.0, ANI_MOTION_FREE)};

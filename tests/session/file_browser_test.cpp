@@ -55,7 +55,7 @@ TEST_CASE("the browser lists folders first, then the files the filter lets throu
     CHECK(names(b) == std::vector<std::string>{"Animations/", "shots/", "model.obj"});
 }
 
-TEST_CASE("Up and Down move the selection within the list; a file selected fills the name field", "[file_browser]") {
+TEST_CASE("Up and Down move the selection within the list, a file selected fills the name field", "[file_browser]") {
     const fs::path dir = make_tree("browser_keys");
     FileBrowser b;
     b.start(FileBrowser::Purpose::Open, dir, {".ani", ".lua"});
@@ -79,7 +79,7 @@ TEST_CASE("Up and Down move the selection within the list; a file selected fills
     CHECK(b.selected() == -1);
 }
 
-TEST_CASE("Enter opens a folder or chooses a file; going up selects the folder left", "[file_browser]") {
+TEST_CASE("Enter opens a folder or chooses a file, going up selects the folder left", "[file_browser]") {
     const fs::path dir = make_tree("browser_enter");
     FileBrowser b;
     b.start(FileBrowser::Purpose::Open, dir, {".ani", ".lua"});

@@ -37,7 +37,7 @@ Model elbow() { return jointed({-30.0, 0.0, 0.0}, {30.0, 0.0, 0.0}); }
 
 } // namespace
 
-TEST_CASE("angles read signed in (-180, 180]", "[joint]") {
+TEST_CASE("angles read signed, above -180 and up to 180", "[joint]") {
     CHECK(signed_degrees(0.0) == 0.0);
     CHECK(signed_degrees(350.0) == -10.0);
     CHECK(signed_degrees(180.0) == 180.0);
@@ -108,7 +108,7 @@ TEST_CASE("a drag carried on past 180 stays at the end it was heading for", "[jo
     CHECK_FALSE(c.any());
 }
 
-TEST_CASE("min == max holds an angle still; a whole turn's range does not clamp", "[joint]") {
+TEST_CASE("min == max holds an angle still, a whole turn's range does not clamp", "[joint]") {
     // y 0..0: a turn of y is undone entirely (angle and turn as they were: nothing to key).
     const ModelState from = at({10, 0, 0}, {0, 0, 0});
     JointClamp c = clamp_to_joint(elbow(), from, at({10, 15, 0}, {0, -1, 0}));

@@ -80,7 +80,7 @@ end
 
 } // namespace
 
-TEST_CASE("Add model from the asset path: a unique name, the default material, keyed at t = 0 where the view looks, selected; one undo", "[session][models]") {
+TEST_CASE("Add model from the asset path: a unique name, the default material, keyed at t = 0 where the view looks, selected, one undo", "[session][models]") {
     Environment env;
     EditorSession s(env);
     std::string error, message;
@@ -134,7 +134,7 @@ TEST_CASE("Add model from the asset path: a unique name, the default material, k
     CHECK_THAT(message, Catch::Contains("gone.ply: no such mesh file"));
 }
 
-TEST_CASE("Duplicate copies the selection beside itself (its bounding sphere's diameter along +x at every key), selects the copies; hidden models stay hidden", "[session][models]") {
+TEST_CASE("Duplicate copies the selection beside itself (its bounding sphere's diameter along +x at every key), selects the copies, hidden models stay hidden", "[session][models]") {
     Environment env;
     EditorSession s(env);
     std::string error, message;
@@ -219,7 +219,7 @@ TEST_CASE("Duplicate of a joint copies what hangs under it, the copies under the
     bake_all(s);
 }
 
-TEST_CASE("Delete removes the selection and what is under it; undo brings them back with their meshes and visibility", "[session][models]") {
+TEST_CASE("Delete removes the selection and what is under it, undo brings them back with their meshes and visibility", "[session][models]") {
     Environment env;
     EditorSession s(env);
     std::string error, message;
@@ -266,7 +266,7 @@ TEST_CASE("Delete removes the selection and what is under it; undo brings them b
     CHECK(message == "nothing selected to delete");
 }
 
-TEST_CASE("A mesh file under the document's folder is named relative to it, else absolutely; the export reopens with the new models", "[session][models]") {
+TEST_CASE("A mesh file under the document's folder is named relative to it, else absolutely, the export reopens with the new models", "[session][models]") {
     const fs::path dir = fresh_dir("models_export");
     write_file(dir / "scene.ani", kBallAni);
     fs::create_directories(dir / "shapes");

@@ -153,7 +153,7 @@ TEST_CASE("the paths follow a drag before it is dropped, and the drag edits noth
     CHECK_THAT(s.motion_paths()[0].frames[60].y, WithinAbs(5.0, 1e-9));
 }
 
-TEST_CASE("a pinned path shows without selection; paths off shows only pinned ones", "[paths]") {
+TEST_CASE("a pinned path shows without selection, paths off shows only pinned ones", "[paths]") {
     Environment env;
     EditorSession s(env);
     std::string error;

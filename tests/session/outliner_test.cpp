@@ -174,7 +174,7 @@ TEST_CASE("mixed: a field whose values differ among the selected models", "[sess
     CHECK(a.mass == 1.0);
 }
 
-TEST_CASE("rename: one undoable edit; an empty name or another model's is refused and says why", "[session][outliner]") {
+TEST_CASE("rename: one undoable edit, an empty name or another model's is refused and says why", "[session][outliner]") {
     const fs::path dir = fresh_dir("session_rename");
     Environment env;
     EditorSession s(env);

@@ -117,7 +117,7 @@ TEST_CASE("a recent files list that cannot be written says why and keeps the fil
     CHECK(junk.paths()[0] == dir / "b.ani");
 }
 
-TEST_CASE("Save As writes the .ani and makes it the session's file; New opens a scene untitled", "[recent][session]") {
+TEST_CASE("Save As writes the .ani and makes it the session's file, New opens a scene untitled", "[recent][session]") {
     const fs::path dir = fresh_dir("session_save_as");
     Environment env;
     EditorSession s(env);

@@ -51,7 +51,7 @@ end
 
 } // namespace
 
-TEST_CASE("I keys a falling ball where gravity has taken it; u takes the key back", "[session][keys]") {
+TEST_CASE("I keys a falling ball where gravity has taken it, u takes the key back", "[session][keys]") {
     Environment env;
     EditorSession s(env);
     std::string error;
@@ -145,7 +145,7 @@ TEST_CASE("I with nothing selected keys the camera", "[session][keys]") {
     CHECK_FALSE(key.states[0]);
 }
 
-TEST_CASE("A selects every shown model, ALT+A none; H hides the selection, ALT+H shows all", "[session][keys]") {
+TEST_CASE("A selects every shown model, ALT+A none, H hides the selection, ALT+H shows all", "[session][keys]") {
     Environment env;
     EditorSession s(env);
     std::string error;

@@ -259,7 +259,7 @@ TEST_CASE("swapping the backend keeps the document, the selection and the histor
     CHECK_FALSE(s.baking()); // the bake it had is kept
 }
 
-TEST_CASE("shortening the max time deletes later keyframes; undo brings them back", "[session]") {
+TEST_CASE("shortening the max time deletes later keyframes, undo brings them back", "[session]") {
     Environment env;
     EditorSession s(env);
     std::string error;

@@ -27,7 +27,7 @@ TEST_CASE("a collapsed panel leaves its space to the view", "[view_layout]") {
     CHECK(v.width == 910);
 }
 
-TEST_CASE("down to an 800 x 500 window the view is between the panels; narrower, it gives way", "[view_layout]") {
+TEST_CASE("down to an 800 x 500 window the view is between the panels, narrower, it gives way", "[view_layout]") {
     // The editor's panels at 800 px: 340 at the left, 240 at the right; between them 200 px.
     const ScreenRect v = view_rect(800, 500, {panel(10, 340), panel(550, 240)});
     CHECK(v.x == 350);

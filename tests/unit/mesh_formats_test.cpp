@@ -208,7 +208,7 @@ void check_flat(const Mesh &m) {
 
 } // namespace
 
-TEST_CASE("a mesh's format is chosen by its extension; anything else is read as OBJ", "[mesh]") {
+TEST_CASE("a mesh's format is chosen by its extension, anything else is read as OBJ", "[mesh]") {
     CHECK(mesh_format_of("a/b/tetra.PLY") == MeshFormat::Ply);
     CHECK(mesh_format_of("tetra.stl") == MeshFormat::Stl);
     CHECK(mesh_format_of("tetra.glb") == MeshFormat::Glb);

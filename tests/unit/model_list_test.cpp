@@ -69,7 +69,7 @@ TEST_CASE("removing models keeps the others in order, their keys and renumbered 
     CHECK_THROWS_AS(without_models(doc, {1}), DocumentError);
 }
 
-TEST_CASE("copies have their originals' properties and keys, moved by the offset; children follow their parent's copy", "[models]") {
+TEST_CASE("copies have their originals' properties and keys, moved by the offset, children follow their parent's copy", "[models]") {
     Document doc = tree();
     Model ball = doc.models()[3];
     ball.mass = 3.5;
