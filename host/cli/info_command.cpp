@@ -63,11 +63,21 @@ void print_document(std::ostream &out, const Document &doc, const AssetPaths &as
         << "  cel shading:     " << on_off(s.cel_shading) << "\n"
         << "  skybox:          " << (s.skybox.empty() ? "(none)" : s.skybox) << "\n"
         << "  physics backend: " << s.physics_backend << "\n"
-        << "  interpolation:   " << s.interpolation << "\n";
+        << "  interpolation:   " << s.interpolation << "\n"
+        << "  ambient light:   " << vec(s.ambient) << "\n";
+    if (!s.render_output.empty() || s.render_width > 0 || s.render_height > 0)
+        out << "  render output:   " << (s.render_output.empty() ? "(none)" : s.render_output) << ", "
+            << s.render_width << "x" << s.render_height << " (0: animator render's default)\n";
     for (const auto &[plugin, values] : s.params)
         for (const auto &[param, v] : values)
             out << "  parameter:       " << plugin << " " << param << " = " << v[0] << " " << v[1]
                 << " " << v[2] << " " << v[3] << "\n";
+
+    // No lights: the renderer's own light rides with the camera (docs/rendering.md).
+    out << "lights (" << s.lights.size() << ")" << (s.lights.empty() ? ": the camera's own light" : ":") << "\n";
+    for (const Light &l : s.lights)
+        out << "  " << l.name << ": position " << vec(l.position) << ", colour " << vec(l.colour) << ", falloff "
+            << vec(l.falloff) << "\n";
 
     out << "models (" << doc.models().size() << "):\n";
     for (const Model &m : doc.models()) {
@@ -85,6 +95,10 @@ void print_document(std::ostream &out, const Document &doc, const AssetPaths &as
             << m.transparency << ", refractive index " << m.refractive_index
             << "\n    sounds: collision " << (m.collision_sound.empty() ? "(none)" : m.collision_sound)
             << ", moving " << (m.moving_sound.empty() ? "(none)" : m.moving_sound) << "\n";
+        if (m.joint)
+            out << "    joint range (deg): x " << m.joint->min.x << ".." << m.joint->max.x << ", y " << m.joint->min.y
+                << ".." << m.joint->max.y << ", z " << m.joint->min.z << ".." << m.joint->max.z << "\n";
+        if (m.rest != glm::dmat3(1.0)) out << "    rest shape: sheared (a fixed shape under its transform)\n";
     }
 
     out << "keyframes (" << doc.keyframes().size() << "):\n";

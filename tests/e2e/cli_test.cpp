@@ -544,3 +544,31 @@ TEST_CASE("scene files written as CS488 students write them open, each model whe
     CHECK(files >= 15);
     CHECK(a4_files >= 4);
 }
+
+TEST_CASE("animator info says a scene's lights, ambient light, render output, joint ranges and "
+          "shear") {
+    const fs::path dir = test::fresh_dir("cli_info_lights");
+    test::write_file(dir / "lit.lua", "local root = gr.node('root')\n"
+                                      "local neck = gr.joint('neck', {-20, 0, 20}, {-45, 0, 45})\n"
+                                      "root:add_child(neck)\n"
+                                      "local head = gr.mesh('sphere', 'head')\n"
+                                      "head:rotate('z', 30)\n"
+                                      "head:scale(1, 2, 1)\n"
+                                      "neck:add_child(head)\n"
+                                      "local lamp = gr.light({1, 2, 3}, {0.5, 1.5, 0.25}, {1, 0, 0.5})\n"
+                                      "gr.render(root, 'lit.png', 320, 200, {0, 0, 10}, {0, 0, -1}, {0, 1, 0}, 40,\n"
+                                      "          {0.1, 0.2, 0.3}, {lamp})\n");
+    const auto r = test::run_animator("info " + (dir / "lit.lua").string());
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("  ambient light:   (0.1, 0.2, 0.3)\n"));
+    CHECK_THAT(r.out, Catch::Contains("  render output:   lit.png, 320x200"));
+    CHECK_THAT(r.out, Catch::Contains("lights (1):\n  light: position (1, 2, 3), colour (0.5, 1.5, 0.25), falloff "
+                                      "(1, 0, 0.5)\n"));
+    CHECK_THAT(r.out, Catch::Contains("    joint range (deg): x -20..20, y -45..45, z 0..0\n"));
+    CHECK_THAT(r.out, Catch::Contains("    rest shape: sheared"));
+    // A document without lights is lit by the camera's own light, and says so.
+    const auto d = test::run_animator("info " + drop);
+    CHECK_THAT(d.out, Catch::Contains("lights (0): the camera's own light\n"));
+    CHECK_THAT(d.out, !Catch::Contains("render output:"));
+}
