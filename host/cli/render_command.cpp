@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <set>
@@ -35,11 +36,23 @@ namespace {
 
 extern "C" char **environ;
 
+// "A-B" into the first and last frame (0-based, A <= B); "" when valid, else what is wrong.
+std::string parse_frames(const std::string &s, int *first = nullptr, int *last = nullptr) {
+    int a = -1, b = -1;
+    char dash = 0, extra = 0;
+    if (std::sscanf(s.c_str(), "%d%c%d%c", &a, &dash, &b, &extra) != 3 || dash != '-' || a < 0 || b < a)
+        return "expected A-B, the first and last frame (0 is the first, A <= B), got '" + s + "'";
+    if (first) *first = a;
+    if (last) *last = b;
+    return "";
+}
+
 // Without --size: the document's render size (a course scene's gr.render) where it gives one.
 constexpr int kDefaultWidth = 1280, kDefaultHeight = 720;
 
 struct RenderCommandOptions {
     std::string file, out, backend, shading = "shading.phong", size, video; // size "": not given
+    std::string frames; // "A-B": only frames A to B of the sequence (a render farm's share)
     std::vector<std::string> params;
     double from = 0.0, to = -1.0, fps = 30.0;
     int compression = 5;
@@ -160,15 +173,20 @@ int run_render(const RenderCommandOptions &o) {
                       << ": --out is required: the document names no render output of its own\n";
             return kUsage;
         }
-        if (o.to >= 0.0 || o.fps_given || !o.video.empty()) {
+        if (o.to >= 0.0 || o.fps_given || !o.video.empty() || !o.frames.empty()) {
             std::cerr
-                << "animator: --to, --fps and --video make frames: they need --out (without it "
-                   "one still is drawn, at --from, into the document's render output)\n";
+                << "animator: --to, --fps, --frames and --video make frames: they need --out (without "
+                   "it one still is drawn, at --from, into the document's render output)\n";
             return kUsage;
         }
         still_file = doc.settings().render_output;
         if (still_file.is_relative())
             still_file = std::filesystem::path(o.file).parent_path() / still_file;
+    }
+    if (!o.frames.empty() && !o.video.empty()) {
+        std::cerr << "animator: --frames renders a share of the frames, --video needs them all: render the "
+                     "shares, then put them together with ffmpeg (docs/rendering.md)\n";
+        return kUsage;
     }
     const double max_time = static_cast<double>(doc.settings().max_time_ms) / 1000.0;
     const double to = still ? o.from : o.to < 0.0 ? max_time : o.to;
@@ -177,6 +195,20 @@ int run_render(const RenderCommandOptions &o) {
                   << " s are not within the animation (0 to " << max_time << " s)\n";
         return kBadInput;
     }
+    // The frames: k = 0 .. count - 1 at from + k / fps, or only first .. last of them (--frames).
+    const auto count = static_cast<int>(std::floor((to - o.from) * o.fps + 1e-9)) + 1;
+    int first = 0, last = count - 1;
+    if (!o.frames.empty()) {
+        parse_frames(o.frames, &first, &last);
+        if (last >= count) {
+            std::cerr << "animator: " << o.file << ": --frames " << o.frames << ": the frames are 0 to "
+                      << count - 1 << " (" << o.from << " s to " << to << " s at " << o.fps << " fps)\n";
+            return kBadInput;
+        }
+    }
+    const auto frame_time = [&](int k) { return std::min(to, o.from + k / o.fps); };
+    // What is baked: up to the last frame drawn (a share of a render farm bakes no further).
+    const double bake_to = still ? to : frame_time(last);
     int width = doc.settings().render_width > 0 ? doc.settings().render_width : kDefaultWidth;
     int height = doc.settings().render_height > 0 ? doc.settings().render_height : kDefaultHeight;
     if (!o.size.empty()) parse_size(o.size, &width, &height);
@@ -208,7 +240,7 @@ int run_render(const RenderCommandOptions &o) {
         timeline.set_meshes(meshes);
         {
             ProgressBar bar("baking");
-            timeline.bake(to, [&](double f) { return bar(f); });
+            timeline.bake(bake_to, [&](double f) { return bar(f); });
         }
 
         OffscreenContext context;
@@ -232,22 +264,21 @@ int run_render(const RenderCommandOptions &o) {
         std::filesystem::create_directories(o.out);
         PngFrameWriter writer(o.out, width, height, 0, o.compression);
 
-        const auto count = static_cast<int>(std::floor((to - o.from) * o.fps + 1e-9)) + 1;
+        const int drawn = last - first + 1;
         ProgressBar bar("rendering");
-        for (int k = 0; k < count; ++k) {
-            const double t = std::min(to, o.from + k / o.fps);
-            renderer.draw(timeline.evaluate(t), framebuffer.target());
+        for (int k = first; k <= last; ++k) {
+            renderer.draw(timeline.evaluate(frame_time(k)), framebuffer.target());
             framebuffer.read_rgb(writer.next_buffer());
-            writer.write(k);
-            bar(static_cast<double>(k + 1) / count);
+            writer.write(k); // named by its place in the whole sequence
+            bar(static_cast<double>(k - first + 1) / drawn);
             // For a program that runs this one (the editor's Render): one line a frame handed to
             // the writer, flushed at once so the reader sees it then.
-            if (o.progress) std::cout << "frame " << k + 1 << " of " << count << std::endl;
+            if (o.progress) std::cout << "frame " << k - first + 1 << " of " << drawn << std::endl;
         }
         writer.finish();
-        std::cout << "wrote " << count << " frame" << (count == 1 ? "" : "s") << " of " << width
-                  << "x" << height << " to " << o.out << " (" << PngFrameWriter::file_name(0)
-                  << (count > 1 ? " .. " + PngFrameWriter::file_name(count - 1) : "") << ")\n";
+        std::cout << "wrote " << drawn << " frame" << (drawn == 1 ? "" : "s") << " of " << width
+                  << "x" << height << " to " << o.out << " (" << PngFrameWriter::file_name(first)
+                  << (drawn > 1 ? " .. " + PngFrameWriter::file_name(last) : "") << ")\n";
         if (!o.video.empty()) return write_video(o, timeline, sounds, to);
         return kSuccess;
     } catch (const std::exception &e) {
@@ -274,6 +305,11 @@ void add_render_command(CLI::App &app, std::function<int()> &run) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--to", o->to, "the last frame's time in seconds (default: the max time)")
         ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--frames", o->frames,
+                    "A-B: only frames A to B of the sequence (0 is the frame at --from), each file "
+                    "named by its place in the whole, as the whole render writes it: a render "
+                    "farm's share (docs/rendering.md)")
+        ->check([](const std::string &s) { return parse_frames(s); });
     CLI::Option *fps = cmd->add_option("--fps", o->fps, "frames per second (default 30)")
                            ->check(CLI::Range(0.001, 1000.0));
     cmd->add_option("--size", o->size,

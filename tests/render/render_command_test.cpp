@@ -329,3 +329,40 @@ TEST_CASE("golden: a course ray-tracer scene file, rendered as it asks, lit by i
     CAPTURE(d.over, d.mean);
     CHECK((d.over > 0.005 || d.mean > 1.0));
 }
+
+TEST_CASE("animator render --frames A-B renders a share of the frames, the same bits as the whole "
+          "render's") {
+    // drop.ani's ball falls and bounces (physics after its keys): frames 0 to 11 at 10 fps, whole,
+    // then as two shares of a render farm, 0-4 and 5-11, each baking only as far as it draws.
+    const std::string drop = (test::source_dir() / "assets/animations/drop.ani").string();
+    const fs::path whole = test::fresh_dir("render_frames_whole"), shares = test::fresh_dir("render_frames_shares");
+    const std::string common = " --to 1.1 --fps 10 --size 64x48";
+    auto r = test::run_animator("render " + drop + " --out " + whole.string() + common, kNoDisplay);
+    REQUIRE(r.exit_code == 0);
+    REQUIRE(count_frames(whole) == 12);
+    r = test::run_animator("render " + drop + " --out " + shares.string() + common + " --frames 0-4", kNoDisplay);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("wrote 5 frames of 64x48 to " + shares.string() +
+                                      " (frame_00000.png .. frame_00004.png)"));
+    r = test::run_animator("render " + drop + " --out " + shares.string() + common + " --frames 5-11", kNoDisplay);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("(frame_00005.png .. frame_00011.png)"));
+    REQUIRE(count_frames(shares) == 12);
+    for (int k = 0; k < 12; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%05d.png", k);
+        CAPTURE(k);
+        // Decoded pixels, bit for bit (the PNG bytes may differ only if the encoder did).
+        CHECK(load_image(whole / name).rgb == load_image(shares / name).rgb);
+    }
+    // The ball moves between the shares' frames: they are not all one picture.
+    CHECK(load_image(whole / "frame_00000.png").rgb != load_image(whole / "frame_00011.png").rgb);
+    // Out of the sequence, malformed, or with --video: refused.
+    r = test::run_animator("render " + drop + " --out " + shares.string() + common + " --frames 5-12", kNoDisplay);
+    CHECK(r.exit_code == 1);
+    CHECK_THAT(r.out, Catch::Contains("--frames 5-12: the frames are 0 to 11"));
+    CHECK(test::run_animator("render " + drop + " --out " + shares.string() + " --frames 4-2").exit_code == 2);
+    CHECK(test::run_animator("render " + drop + " --out " + shares.string() + " --frames 3").exit_code == 2);
+    CHECK(test::run_animator("render " + drop + " --out " + shares.string() + " --frames 0-1 --video x.mp4").exit_code ==
+          2);
+}
