@@ -301,8 +301,8 @@ JointClamp EditorSession::dragged_clamp(const Drag &d, size_t i) const {
     const auto &[model, start] = d.models[i];
     const ModelState s = d.gizmo ? apply_gizmo_change(start, d.gizmo->parents[i], d.gizmo->change)
                                  : drag_model(start, mode_, d.button, d.delta, d.metres_per_pixel);
-    // A turn stops at a joint's range (joint_clamp.hpp); a move or a scale turns nothing.
-    if (s.angles == start.angles) return {s, {false, false, false}};
+    // A turn stops at a joint's range (joint_clamp.hpp); a move or a scale, turning no angle,
+    // comes back as it is.
     return clamp_to_joint(doc_.models()[static_cast<size_t>(model)], start, s);
 }
 

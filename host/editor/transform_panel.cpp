@@ -83,14 +83,12 @@ bool TransformPanel::draw(EditorSession &session, std::string &error, std::strin
     for (int m : session.selection()) {
         const ModelState before = session.state_at_time(m);
         ModelState after = with_edited_components(before, *shown_, values);
-        // A turn stops at the model's joint range, and says so.
-        if (after.angles != before.angles) {
-            const Model &turned = session.document().models()[static_cast<size_t>(m)];
-            const JointClamp clamp = clamp_to_joint(turned, before, after);
-            after = clamp.state;
-            if (const std::string said = joint_stop_text(turned, clamp); !said.empty())
-                note += (note.empty() ? "" : "; ") + said;
-        }
+        // A turn stops at the model's joint range, and says so (an angle not edited is left).
+        const Model &turned = session.document().models()[static_cast<size_t>(m)];
+        const JointClamp clamp = clamp_to_joint(turned, before, after);
+        after = clamp.state;
+        if (const std::string said = joint_stop_text(turned, clamp); !said.empty())
+            note += (note.empty() ? "" : "; ") + said;
         if (!(after == before)) keyed.emplace_back(m, after);
     }
     if (keyed.empty()) return false;
