@@ -196,7 +196,7 @@ int run_render(const RenderCommandOptions &o) {
         return kBadInput;
     }
     // The frames: k = 0 .. count - 1 at from + k / fps, or only first .. last of them (--frames).
-    const auto count = static_cast<int>(std::floor((to - o.from) * o.fps + 1e-9)) + 1;
+    const int count = render_frame_count(o.from, to, o.fps);
     int first = 0, last = count - 1;
     if (!o.frames.empty()) {
         parse_frames(o.frames, &first, &last);

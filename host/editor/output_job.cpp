@@ -277,10 +277,6 @@ bool parse_frame_progress(const std::string &line, int &done, int &total) {
     return true;
 }
 
-int render_frame_count(double from, double to, double fps) {
-    return static_cast<int>(std::floor((to - from) * fps + 1e-9)) + 1;
-}
-
 std::vector<std::string> render_arguments(const RenderRequest &r, const fs::path &snapshot) {
     std::vector<std::string> args = {
         "render",    snapshot.string(),

@@ -8,6 +8,7 @@
 #include "assets/asset_paths.hpp"
 #include "document/document.hpp"
 #include "plugin/registry.hpp"
+#include "render/png_frame_writer.hpp" // render_frame_count
 
 #include <sys/types.h>
 
@@ -107,9 +108,6 @@ struct RenderRequest {
     int width = 1280, height = 720;
     double fps = 30.0, from = 0.0, to = 0.0;
 };
-// The number of frames `animator render` writes for [from, to] at `fps`: one at `from`, then one
-// every 1/fps up to `to` (render_command.cpp's count).
-int render_frame_count(double from, double to, double fps);
 // `render SNAPSHOT --out ... --progress ...`: the arguments for OutputJob::start.
 std::vector<std::string> render_arguments(const RenderRequest &request,
                                           const std::filesystem::path &snapshot);

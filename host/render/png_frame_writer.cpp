@@ -5,6 +5,7 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace animator {
@@ -33,6 +34,10 @@ PngFrameWriter::~PngFrameWriter() {
     }
     changed_.notify_all();
     for (std::thread &t : workers_) t.join();
+}
+
+int render_frame_count(double from, double to, double fps) {
+    return static_cast<int>(std::floor((to - from) * fps + 1e-9)) + 1;
 }
 
 std::string PngFrameWriter::file_name(int index) {

@@ -64,4 +64,8 @@ class PngFrameWriter {
 void write_png(const std::filesystem::path &file, int width, int height,
                const std::vector<std::uint8_t> &rgb, int compression = 5);
 
+// The number of frames `animator render` writes for [from, to] seconds at `fps`: one at `from`,
+// then one every 1/fps up to `to` (the command line's and the editor's Render dialog's count).
+int render_frame_count(double from, double to, double fps);
+
 } // namespace animator
