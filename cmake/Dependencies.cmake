@@ -32,6 +32,8 @@ find_package(Catch2 2 REQUIRED)
 find_package(CLI11 REQUIRED)
 # JSON (headers only): `animator info --json`.
 find_package(nlohmann_json 3 REQUIRED)
+# glTF: `animator export` (host/export, docs/export.md).
+find_package(TinyGLTF REQUIRED)
 
 # glad: the OpenGL 3.3 core loader, generated at build time by Debian's python3-glad.
 find_program(GLAD_EXECUTABLE glad REQUIRED)

@@ -14,6 +14,9 @@ packages=(
   libegl-dev libegl-mesa0
   clang libclang-rt-14-dev llvm-14
   ffmpeg  # `animator render --video` and the editor's Render > Video (tests: render_video)
+  libtinygltf-dev  # `animator export` writes glTF with tinygltf
+  blender python3-numpy  # the export tests: Blender imports every export (its importer needs numpy)
+  nodejs  # the export tests: the Khronos glTF Validator runs on Node (tools/gltf-validator)
 )
 
 missing=()
@@ -23,7 +26,22 @@ for p in "${packages[@]}"; do
   fi
 done
 
+# npm comes with some builds of nodejs (NodeSource's) and is a package of its own in Debian's.
+if ! command -v npm >/dev/null 2>&1; then
+  missing+=(npm)
+fi
+
+# The Khronos glTF Validator, from the npm registry, at the version package-lock.json pins.
+validator_dir="$(cd "$(dirname "$0")" && pwd)/gltf-validator"
+validator() {
+  if [ ! -d "$validator_dir/node_modules/gltf-validator" ]; then
+    echo "animator: installing the glTF Validator (npm ci in tools/gltf-validator)" >&2
+    (cd "$validator_dir" && npm ci --no-audit --no-fund --loglevel=error)
+  fi
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
+  validator
   exit 0
 fi
 
@@ -35,3 +53,4 @@ fi
 export DEBIAN_FRONTEND=noninteractive
 $sudo apt-get update -qq
 $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+validator

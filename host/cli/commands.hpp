@@ -17,6 +17,7 @@ void add_bake_command(CLI::App &app, std::function<int()> &run);
 void add_compare_command(CLI::App &app, std::function<int()> &run);
 void add_render_command(CLI::App &app, std::function<int()> &run);
 void add_soundtrack_command(CLI::App &app, std::function<int()> &run);
+void add_export_command(CLI::App &app, std::function<int()> &run);
 // `animator [edit] [FILE]`: the editor, also what runs without a subcommand.
 void add_edit_command(CLI::App &app, std::function<int()> &run);
 

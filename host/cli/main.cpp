@@ -24,6 +24,7 @@ int run_cli(int argc, char **argv) {
     add_compare_command(app, run);
     add_render_command(app, run);
     add_soundtrack_command(app, run);
+    add_export_command(app, run);
     add_edit_command(app, run);
 
     try {

@@ -144,8 +144,10 @@ struct Settings {
     // kinematic equations): the seed's "interpolation.linear", or "interpolation.smooth".
     std::string interpolation = "interpolation.linear";
     ParamValues params;
-    // The scene's lights; with none, the renderer's default light rides with the camera.
+    // The scene's lights; with none, the renderer's default light rides with the camera, at this
+    // place in the camera's frame.
     static constexpr std::size_t kMaxLights = 8;
+    inline static const glm::dvec3 kCameraLightOffset{-4.0, 6.0, 4.0};
     std::vector<Light> lights;
     glm::dvec3 ambient{0.2};
     // What `animator render` writes when not told (a course scene's gr.render): a file name for

@@ -235,7 +235,10 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
             tip("Render the animation as it is now (unsaved changes too) to PNG frames or a video, with a\n"
                 "progress bar and Cancel");
             if (ImGui::MenuItem("Export...", "CTRL+SHIFT+E")) open_export();
-            tip("Export the motion trace (CSV) and the soundtrack (WAV) of the animation as it is now");
+            tip("Export the motion trace (CSV), the soundtrack (WAV) or glTF (.glb) of the animation as it is now");
+            if (ImGui::MenuItem("Export glTF (.glb)...")) output_.open_gltf_export();
+            tip("Export the models, materials, camera, lights and motion as glTF 2.0 for Blender, game engines\n"
+                "and web viewers (free flight and bounces exact: docs/export.md)");
         });
         if (ImGui::MenuItem("Lights", nullptr, lights_open_)) lights_open_ = !lights_open_;
         tip("The scene's lights and its ambient light (saved in the animation): opens or closes their window");

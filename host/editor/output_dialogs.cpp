@@ -95,6 +95,7 @@ void OutputDialogs::draw(EditorSession &session) {
             video_path_ = (folder / (stem + ".mp4")).string();
             trace_path_ = (folder / (stem + "_trace.csv")).string();
             soundtrack_path_ = (folder / (stem + "_soundtrack.wav")).string();
+            gltf_path_ = (folder / (stem + ".glb")).string();
             from_ = 0.0;
             to_ = session.max_time();
         }
@@ -249,13 +250,25 @@ void OutputDialogs::export_form(EditorSession &session) {
     ImGui::InputText("##soundtrack path", &soundtrack_path_);
     tip("The WAV file to write the soundtrack to (a relative path is taken from the animation's "
         "folder).");
+    ImGui::Checkbox("glTF (.glb)", &gltf_);
+    tip("The models, materials, camera, lights and motion as glTF 2.0 for Blender, game engines and\n"
+        "web viewers: free flight and bounces exact (the same file as `animator export`, docs/export.md).");
+    ImGui::SameLine(160.0f);
+    ImGui::SetNextItemWidth(420.0f);
+    ImGui::InputText("##gltf path", &gltf_path_);
+    tip("The glTF file to write: .glb (binary) or .gltf (text). A relative path is taken from the\n"
+        "animation's folder.");
     ImGui::TextDisabled("The animation itself (.ani) is saved with Export (x).");
 
     std::string problem;
-    if (!trace_ && !soundtrack_)
+    const std::string gltf_extension = fs::path(gltf_path_).extension().string();
+    if (!trace_ && !soundtrack_ && !gltf_)
         problem = "tick what to export";
-    else if ((trace_ && trace_path_.empty()) || (soundtrack_ && soundtrack_path_.empty()))
+    else if ((trace_ && trace_path_.empty()) || (soundtrack_ && soundtrack_path_.empty()) ||
+             (gltf_ && gltf_path_.empty()))
         problem = "name the file to write";
+    else if (gltf_ && gltf_extension != ".glb" && gltf_extension != ".gltf")
+        problem = "the glTF file's name ends in .glb or .gltf";
     if (!problem.empty())
         ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", problem.c_str());
     ImGui::BeginDisabled(!problem.empty());
@@ -274,6 +287,7 @@ void OutputDialogs::export_form(EditorSession &session) {
     if (trace_) steps.push_back({"the trace", typed_path(trace_path_, session.path()), {}});
     if (soundtrack_)
         steps.push_back({"the soundtrack", typed_path(soundtrack_path_, session.path()), {}});
+    if (gltf_) steps.push_back({"the glTF file", typed_path(gltf_path_, session.path()), {}});
     start(session, Kind::Export, steps);
 }
 
@@ -293,6 +307,8 @@ bool OutputDialogs::start(EditorSession &session, Kind kind, std::vector<Step> s
             s.arguments = render_arguments(request_, snapshot_->file());
         else if (s.what == "the trace")
             s.arguments = trace_arguments(s.path, snapshot_->file());
+        else if (s.what == "the glTF file")
+            s.arguments = gltf_arguments(s.path, snapshot_->file());
         else
             s.arguments = soundtrack_arguments(s.path, snapshot_->file());
     }
@@ -367,7 +383,7 @@ void OutputDialogs::progress() {
         ImGui::Text("Writing %s: %s", step_.what.c_str(), step_.path.string().c_str());
         const std::string overlay =
             "file " + std::to_string(written_.size() + 1) + " of " + std::to_string(count) +
-            (step_.what == "the trace" ? " (baking)" : " (baking and mixing)");
+            (step_.what == "the soundtrack" ? " (baking and mixing)" : " (baking)");
         ImGui::ProgressBar(static_cast<float>(written_.size()) / static_cast<float>(count),
                            ImVec2(420.0f, 0.0f), overlay.c_str());
     }

@@ -2,7 +2,7 @@
 // each asks where and what, then runs the command line on a snapshot of the document as it is
 // (output_job.hpp) while the editor keeps drawing, shows its progress with a Cancel (ESC too),
 // and says on the status line what was written, or the child's error. Owned by Panels; opened by
-// CTRL+F12 and CTRL+SHIFT+E (and the File menu).
+// CTRL+F12 and CTRL+SHIFT+E (and the File menu, which also opens Export with glTF ticked).
 #pragma once
 
 #include "editor/editor_session.hpp"
@@ -27,6 +27,12 @@ class OutputDialogs {
 
     void open_render() { open_ = Kind::Render; }
     void open_export() { open_ = Kind::Export; }
+    // The Export dialog with only glTF ticked (File > Export glTF...).
+    void open_gltf_export() {
+        open_ = Kind::Export;
+        trace_ = soundtrack_ = false;
+        gltf_ = true;
+    }
     // Draws the open dialog, if any, and follows a running job (call once a frame).
     void draw(EditorSession &session);
     // A job runs: the editor must keep drawing frames (it polls instead of sleeping).
@@ -65,8 +71,8 @@ class OutputDialogs {
     double fps_ = 30.0, from_ = 0.0, to_ = 0.0;
     std::string out_, video_path_;
     // The Export dialog's.
-    bool trace_ = true, soundtrack_ = true;
-    std::string trace_path_, soundtrack_path_;
+    bool trace_ = true, soundtrack_ = true, gltf_ = false;
+    std::string trace_path_, soundtrack_path_, gltf_path_;
 
     std::unique_ptr<JobSnapshot> snapshot_;
     std::filesystem::path snapshot_for_; // the document path the snapshot stands for

@@ -301,6 +301,10 @@ std::vector<std::string> soundtrack_arguments(const fs::path &wav, const fs::pat
     return {"soundtrack", snapshot.string(), "--out", wav.string()};
 }
 
+std::vector<std::string> gltf_arguments(const fs::path &gltf, const fs::path &snapshot) {
+    return {"export", snapshot.string(), "--to", gltf.string()};
+}
+
 std::optional<fs::path> find_ffmpeg() {
     const char *path = std::getenv("PATH");
     std::istringstream folders(path ? path : "");

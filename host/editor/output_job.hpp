@@ -111,11 +111,13 @@ struct RenderRequest {
 // `render SNAPSHOT --out ... --progress ...`: the arguments for OutputJob::start.
 std::vector<std::string> render_arguments(const RenderRequest &request,
                                           const std::filesystem::path &snapshot);
-// `bake SNAPSHOT --trace CSV` and `soundtrack SNAPSHOT --out WAV`.
+// `bake SNAPSHOT --trace CSV`, `soundtrack SNAPSHOT --out WAV` and `export SNAPSHOT --to GLB`.
 std::vector<std::string> trace_arguments(const std::filesystem::path &csv,
                                          const std::filesystem::path &snapshot);
 std::vector<std::string> soundtrack_arguments(const std::filesystem::path &wav,
                                               const std::filesystem::path &snapshot);
+std::vector<std::string> gltf_arguments(const std::filesystem::path &gltf,
+                                        const std::filesystem::path &snapshot);
 
 // ffmpeg on PATH (what `animator render --video` needs), or nothing.
 std::optional<std::filesystem::path> find_ffmpeg();

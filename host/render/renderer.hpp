@@ -42,7 +42,7 @@ struct RenderOptions {
     // A document without lights is lit by one riding with the camera, above, left of and behind
     // it in camera space, so a scene is lit wherever the camera looks (the seed's had one fixed
     // light). A document's lights replace it; the ambient light is always the document's.
-    glm::vec3 light_offset{-4.0f, 6.0f, 4.0f};
+    glm::vec3 light_offset{Settings::kCameraLightOffset};
     glm::vec3 light_colour{1.0f};
     glm::vec4 selected_tint{1.0f, 0.9f, 0.0f, 0.6f}; // yellow, and how much of it
     // A ring around each selected model that reads on any colour (selection_outline.hpp).

@@ -7,7 +7,8 @@
 # "animator: exported A and B"): the cases wait on those lines, never on a time.
 
 RENDER_BUTTON = (406, 455)      # the Render dialog's Render button (frames, the default), for drop.ani
-EXPORT_BUTTON_DIALOG = (378, 409)  # the Export dialog's Export button, for drop.ani
+EXPORT_BUTTON_DIALOG = (378, 421)  # the Export dialog's Export button, for drop.ani
+FILE_MENU_EXPORT_GLTF = (60, 192)  # File > Export glTF (.glb)..., the item after Export...
 PROGRESS_BOX = (382, 292, 802, 309)  # x0, y0, x1, y1 of the Render dialog's progress bar
 RENDER_TITLE_ROW = (380, 252, 800, 262)  # the Render dialog's title bar (its left stays at x 375)
 HISTOGRAM_YELLOW = (230, 179, 0)  # ImGui's PlotHistogram colour: a progress bar's filled part
@@ -146,6 +147,43 @@ def case_export_trace(c):
     with open(wav, 'rb') as f:
         head = f.read(12)
     check(head[:4] == b'RIFF' and head[8:12] == b'WAVE', 'the soundtrack is not a WAV file')
+    e.settle()
+    e.quit()
+
+
+def glb_parts(path):
+    """A .glb file's JSON (parsed) and its binary chunk."""
+    with open(path, 'rb') as f:
+        data = f.read()
+    check(data[:4] == b'glTF', '%s is not a binary glTF file' % path)
+    length = int.from_bytes(data[12:16], 'little')
+    doc = json.loads(data[20:20 + length])
+    return doc, data[20 + length + 8:]
+
+
+def case_export_gltf(c):
+    """File > Export glTF (.glb)... opens Export with only glTF ticked; its Export button writes
+    drop.glb beside the animation: the same nodes, keys and meshes as `animator export` of the
+    same file writes (docs/export.md)."""
+    short_drop(c, 'drop.ani', 2000)
+    e = c.start('drop.ani')
+    e.click(*FILE_MENU)
+    e.screenshot('file-menu')
+    e.click(*FILE_MENU_EXPORT_GLTF)
+    e.screenshot('export-gltf-dialog')
+    e.click(*EXPORT_BUTTON_DIALOG, settle=False)
+    done = e.wait_log(EXPORTED, 'the export to finish')
+    check(done.group(1) == 'drop.glb', 'the editor says it exported %r, not drop.glb alone' % done.group(1))
+    check(not os.path.exists(c.path('drop_trace.csv')), 'the trace was written though only glTF was ticked')
+    reference = c.path('reference.glb')
+    r = subprocess.run([c.bin, 'export', c.path('drop.ani'), '--to', reference], capture_output=True, text=True, timeout=300)
+    check(r.returncode == 0, '`animator export` failed: %s' % r.stderr)
+    ours, ours_bin = glb_parts(c.path('drop.glb'))
+    theirs, theirs_bin = glb_parts(reference)
+    check([n.get('name') for n in ours['nodes']] == [n.get('name') for n in theirs['nodes']],
+          'the nodes differ from `animator export`: %s' % [n.get('name') for n in ours['nodes']])
+    check(ours['animations'][0]['channels'] == theirs['animations'][0]['channels'], 'the animation channels differ')
+    check(ours_bin == theirs_bin, 'the meshes and keys differ from `animator export`')
     e.settle()
     e.quit()
 

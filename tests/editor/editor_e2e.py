@@ -28,6 +28,7 @@ Stdlib only. Needs Xvfb, xdotool and imagemagick (`import`, `convert`).
 """
 
 import argparse
+import json
 import math
 import os
 import random
