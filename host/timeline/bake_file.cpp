@@ -17,7 +17,8 @@ constexpr std::size_t kHeaderSize = 8 + 4 + 8; // magic, version, payload size
 constexpr std::size_t kChecksumSize = 8;
 
 // 64-bit FNV-1a: the fingerprints and the checksum (to tell files apart, not against an attacker).
-std::uint64_t fnv1a(const std::uint8_t *p, std::size_t n, std::uint64_t h = 14695981039346656037ull) {
+std::uint64_t fnv1a(const std::uint8_t *p, std::size_t n,
+                    std::uint64_t h = 14695981039346656037ull) {
     for (std::size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;
     return h;
 }
@@ -56,7 +57,8 @@ class Writer {
 // Reads what Writer wrote; running past the end means the file is corrupt.
 class Reader {
   public:
-    Reader(const std::uint8_t *p, std::size_t n, const std::string &file) : p_(p), end_(p + n), file_(file) {}
+    Reader(const std::uint8_t *p, std::size_t n, const std::string &file)
+        : p_(p), end_(p + n), file_(file) {}
     std::uint8_t u8() { return take(1)[0]; }
     std::uint32_t u32() {
         const std::uint8_t *b = take(4);
@@ -95,7 +97,8 @@ class Reader {
     // A count of records of at least `record_bytes` each, checked against what is left.
     std::size_t count(std::size_t record_bytes) {
         const std::uint64_t n = u64();
-        if (n > static_cast<std::uint64_t>(end_ - p_) / record_bytes) corrupt("a count larger than the file");
+        if (n > static_cast<std::uint64_t>(end_ - p_) / record_bytes)
+            corrupt("a count larger than the file");
         return static_cast<std::size_t>(n);
     }
     bool at_end() const { return p_ == end_; }
@@ -115,8 +118,8 @@ class Reader {
 };
 
 // The bytes of each record in the file, for Reader::count.
-constexpr std::size_t kMotionBytes = 4 + 4 + 8 * 11, kRotationBytes = 1 + 4 + 8 * 28, kEventBytes = 8 * 9,
-                      kOverlapBytes = 8 * 6;
+constexpr std::size_t kMotionBytes = 4 + 4 + 8 * 11, kRotationBytes = 1 + 4 + 8 * 28,
+                      kEventBytes = 8 * 9, kOverlapBytes = 8 * 6;
 
 // What a bake depends on. The document counts only as it bears on motion (a colour, a camera
 // key or a light changes no bake), and each part is a hash of a canonical serialisation.
@@ -130,9 +133,11 @@ struct Fingerprint {
 std::uint64_t mesh_hash(const ani_mesh_view &v) {
     Writer w;
     w.u32(v.vertex_count);
-    for (std::size_t i = 0; i < 3 * static_cast<std::size_t>(v.vertex_count); ++i) w.f64(v.positions[i]);
+    for (std::size_t i = 0; i < 3 * static_cast<std::size_t>(v.vertex_count); ++i)
+        w.f64(v.positions[i]);
     w.u32(v.triangle_count);
-    for (std::size_t i = 0; i < 3 * static_cast<std::size_t>(v.triangle_count); ++i) w.u32(v.triangles[i]);
+    for (std::size_t i = 0; i < 3 * static_cast<std::size_t>(v.triangle_count); ++i)
+        w.u32(v.triangles[i]);
     w.vec(v.bound_center);
     w.f64(v.bound_radius);
     w.u32(static_cast<std::uint32_t>(v.is_sphere));
@@ -179,7 +184,9 @@ Fingerprint fingerprint_of(const Timeline &timeline) {
         for (const std::optional<ModelState> &state : k.states) {
             keys.u8(state.has_value());
             if (state)
-                for (const glm::dvec3 *v : {&state->center, &state->angles, &state->scale, &state->turn}) keys.vec(*v);
+                for (const glm::dvec3 *v :
+                     {&state->center, &state->angles, &state->scale, &state->turn})
+                    keys.vec(*v);
         }
     }
     f.keys = keys.hash();
@@ -207,31 +214,40 @@ std::string mismatch(const Fingerprint &file, const Fingerprint &here, const Tim
     if (file.backend != here.backend)
         return "was baked with physics backend '" + file.backend + "', not '" + here.backend + "'";
     for (const auto &[name, value] : file.params) {
-        auto it = std::find_if(here.params.begin(), here.params.end(), [&](const auto &p) { return p.first == name; });
+        auto it = std::find_if(here.params.begin(), here.params.end(),
+                               [&](const auto &p) { return p.first == name; });
         if (it == here.params.end())
-            return "was baked with " + file.backend + "'s parameter '" + name + "', which this " + here.backend + " does not have";
+            return "was baked with " + file.backend + "'s parameter '" + name + "', which this " +
+                   here.backend + " does not have";
         if (it->second != value)
-            return "was baked with " + file.backend + "'s parameter '" + name + "' = " + value_text(value) + ", not " +
-                   value_text(it->second);
+            return "was baked with " + file.backend + "'s parameter '" + name +
+                   "' = " + value_text(value) + ", not " + value_text(it->second);
     }
     if (file.params.size() != here.params.size())
-        return "was baked with a " + file.backend + " of other parameters (" + std::to_string(file.params.size()) + ", not " +
-               std::to_string(here.params.size()) + ")";
-    const std::string another = "was baked from another document, or from this one before an edit that changes motion: ";
+        return "was baked with a " + file.backend + " of other parameters (" +
+               std::to_string(file.params.size()) + ", not " + std::to_string(here.params.size()) +
+               ")";
+    const std::string another =
+        "was baked from another document, or from this one before an edit that changes motion: ";
     if (file.meshes.size() != here.meshes.size())
-        return another + "it had " + std::to_string(file.meshes.size()) + " models, this one has " + std::to_string(here.meshes.size());
+        return another + "it had " + std::to_string(file.meshes.size()) + " models, this one has " +
+               std::to_string(here.meshes.size());
     if (file.settings != here.settings)
-        return another + "the settings that move models differ (max time, gravity, down axis, interpolation)";
+        return another +
+               "the settings that move models differ (max time, gravity, down axis, interpolation)";
     if (file.models != here.models)
-        return another + "the models' physics differs (parent, dynamics, gravity, mass, velocity, restitution, friction, "
-                         "rotation, rest shape)";
+        return another + "the models' physics differs (parent, dynamics, gravity, mass, "
+                         "velocity, restitution, friction, rotation, rest shape)";
     if (file.keys != here.keys) return another + "the models' keyframes differ";
     for (std::size_t m = 0; m < file.meshes.size(); ++m) {
         if (file.meshes[m] == here.meshes[m]) continue;
         const std::string name = "'" + timeline.document().models()[m].name + "'";
-        if (!file.meshes[m]) return "was baked with no mesh for model " + name + ", which has one here";
-        if (!here.meshes[m]) return "was baked with a mesh for model " + name + ", which has none here";
-        return "was baked with another mesh for model " + name + " (its file has changed, or another was found)";
+        if (!file.meshes[m])
+            return "was baked with no mesh for model " + name + ", which has one here";
+        if (!here.meshes[m])
+            return "was baked with a mesh for model " + name + ", which has none here";
+        return "was baked with another mesh for model " + name +
+               " (its file has changed, or another was found)";
     }
     return "";
 }
@@ -295,7 +311,8 @@ RotationSegment read_rotation(Reader &r) {
     for (double *x : {&s.omega2, &s.angle0, &s.rate0}) *x = r.f64();
     // The closed forms are made again from the same numbers; what they would refuse is refused.
     if (kind == kFree) {
-        const std::string why = ani::FreeRotation::refusal(s.moments, glm::dvec3(s.w.x, s.w.y, s.w.z));
+        const std::string why =
+            ani::FreeRotation::refusal(s.moments, glm::dvec3(s.w.x, s.w.y, s.w.z));
         if (!why.empty()) r.corrupt("a free-rotation segment: " + why);
         s.free = free_rotation_of(s);
     } else if (kind == kHinge) {
@@ -349,7 +366,9 @@ BakedState read_state(Reader &r, std::size_t models) {
     b.segments.resize(models);
     b.rotations.resize(models);
     const auto check_model = [&](std::uint32_t m, std::size_t expected) {
-        if (m != expected) r.corrupt("a segment of model " + std::to_string(m) + " in model " + std::to_string(expected) + "'s list");
+        if (m != expected)
+            r.corrupt("a segment of model " + std::to_string(m) + " in model " +
+                      std::to_string(expected) + "'s list");
     };
     for (std::size_t m = 0; m < models; ++m) {
         b.segments[m].resize(r.count(kMotionBytes));
@@ -360,7 +379,8 @@ BakedState read_state(Reader &r, std::size_t models) {
             s.t1 = r.f64();
             for (ani_vec3 *v : {&s.p0, &s.v0, &s.a}) *v = r.vec();
             check_model(s.model, m);
-            if (s.motion < ANI_MOTION_KEYED || s.motion > ANI_MOTION_REST) r.corrupt("a motion of unknown kind");
+            if (s.motion < ANI_MOTION_KEYED || s.motion > ANI_MOTION_REST)
+                r.corrupt("a motion of unknown kind");
         }
     }
     for (std::size_t m = 0; m < models; ++m) {
@@ -377,7 +397,8 @@ BakedState read_state(Reader &r, std::size_t models) {
         e.normal = r.vec();
         e.point = r.vec();
         e.speed = r.f64();
-        if (e.a >= models || (e.b >= models && e.b != ANI_NO_MODEL)) r.corrupt("a collision of a model there is not");
+        if (e.a >= models || (e.b >= models && e.b != ANI_NO_MODEL))
+            r.corrupt("a collision of a model there is not");
     }
     b.overlaps.resize(r.count(kOverlapBytes));
     for (ani_overlap &o : b.overlaps) {
@@ -412,10 +433,13 @@ void save_bake(const Timeline &timeline, const std::filesystem::path &path) {
     file.bytes.insert(file.bytes.end(), payload.bytes.begin(), payload.bytes.end());
     file.u64(payload.hash());
 
-    const std::filesystem::path partial = path.parent_path() / ("." + path.filename().string() + ".partial");
+    const std::filesystem::path partial =
+        path.parent_path() / ("." + path.filename().string() + ".partial");
     std::ofstream out(partial, std::ios::binary);
-    if (!out) throw BakeFileError(path.string() + ": cannot be written (" + std::strerror(errno) + ")");
-    out.write(reinterpret_cast<const char *>(file.bytes.data()), static_cast<std::streamsize>(file.bytes.size()));
+    if (!out)
+        throw BakeFileError(path.string() + ": cannot be written (" + std::strerror(errno) + ")");
+    out.write(reinterpret_cast<const char *>(file.bytes.data()),
+              static_cast<std::streamsize>(file.bytes.size()));
     out.close();
     std::error_code ec;
     if (!out) {
@@ -433,25 +457,32 @@ void load_bake(Timeline &timeline, const std::filesystem::path &path, double nee
     const std::string name = path.string();
     std::ifstream in(path, std::ios::binary);
     if (!in) throw BakeFileError(name + ": cannot be read (" + std::strerror(errno) + ")");
-    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                          std::istreambuf_iterator<char>());
     if (in.bad()) throw BakeFileError(name + ": reading failed");
 
-    const bool magic = std::memcmp(bytes.data(), kMagic, std::min(bytes.size(), sizeof kMagic)) == 0;
-    if (!magic || bytes.empty()) throw BakeFileError(name + ": not a bake file (it does not begin with ANIBAKE)");
+    const bool magic =
+        std::memcmp(bytes.data(), kMagic, std::min(bytes.size(), sizeof kMagic)) == 0;
+    if (!magic || bytes.empty())
+        throw BakeFileError(name + ": not a bake file (it does not begin with ANIBAKE)");
     if (bytes.size() < kHeaderSize)
-        throw BakeFileError(name + " is truncated: " + std::to_string(bytes.size()) + " bytes, not even a whole header");
+        throw BakeFileError(name + " is truncated: " + std::to_string(bytes.size()) +
+                            " bytes, not even a whole header");
     Reader header(bytes.data() + sizeof kMagic, kHeaderSize - sizeof kMagic, name);
     const std::uint32_t version = header.u32();
     if (version != kBakeFormatVersion)
-        throw BakeFileError(name + ": format version " + std::to_string(version) + ", and this animator reads version " +
-                            std::to_string(kBakeFormatVersion) + " (bake it again with this animator)");
+        throw BakeFileError(name + ": format version " + std::to_string(version) +
+                            ", and this animator reads version " +
+                            std::to_string(kBakeFormatVersion) +
+                            " (bake it again with this animator)");
     const std::uint64_t payload_size = header.u64();
     const std::uint64_t room = bytes.size() - kHeaderSize; // for the payload and the checksum
     if (room < kChecksumSize || payload_size != room - kChecksumSize) {
         const bool shorter = room < kChecksumSize || payload_size > room - kChecksumSize;
-        throw BakeFileError(name + (shorter ? " is truncated: " : " is corrupt: ") + std::to_string(bytes.size()) +
-                            " bytes, and its header says " + std::to_string(payload_size) + " bytes of data and " +
-                            std::to_string(kHeaderSize + kChecksumSize) + " of header and checksum");
+        throw BakeFileError(
+            name + (shorter ? " is truncated: " : " is corrupt: ") + std::to_string(bytes.size()) +
+            " bytes, and its header says " + std::to_string(payload_size) + " bytes of data and " +
+            std::to_string(kHeaderSize + kChecksumSize) + " of header and checksum");
     }
     const std::uint8_t *payload = bytes.data() + kHeaderSize;
     Reader checksum(payload + payload_size, kChecksumSize, name);
@@ -464,7 +495,8 @@ void load_bake(Timeline &timeline, const std::filesystem::path &path, double nee
     if (!differs.empty()) throw BakeFileError(name + " " + differs);
     BakedState state = read_state(r, saved.meshes.size());
     if (state.until < needed_until)
-        throw BakeFileError(name + " holds a bake to " + seconds(state.until) + ", and " + seconds(needed_until) +
+        throw BakeFileError(name + " holds a bake to " + seconds(state.until) + ", and " +
+                            seconds(needed_until) +
                             " is needed (bake to there or further: animator bake --until)");
     timeline.restore(std::move(state));
 }

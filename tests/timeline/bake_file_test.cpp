@@ -59,7 +59,8 @@ Bits answers_at(const Timeline &timeline, double t) {
     Bits b;
     for (size_t m = 0; m < f.models.size(); ++m) {
         const ModelPose &p = f.models[m];
-        for (const glm::dvec3 *v : {&p.center, &p.angles, &p.scale, &p.velocity, &p.angle_rates}) b.add(*v);
+        for (const glm::dvec3 *v : {&p.center, &p.angles, &p.scale, &p.velocity, &p.angle_rates})
+            b.add(*v);
         b.words.push_back(static_cast<std::uint64_t>(f.motion[m]));
     }
     b.add(f.camera.position);
@@ -95,17 +96,21 @@ Bits findings(const Timeline &timeline) {
 
 } // namespace
 
-TEST_CASE("a bake saved and loaded answers as the original, bit for bit, with bounces and turning bodies") {
+TEST_CASE("a bake saved and loaded answers as the original, bit for bit, with bounces and turning "
+          "bodies") {
     const fs::path dir = test::fresh_dir("bake_file_round_trip");
     int free = 0, hinge = 0, spin_up = 0, events = 0;
     struct Example {
         const char *file;
         double until;
     };
-    for (const Example &example : {Example{"assets/animations/drop.ani", 10.0}, Example{"assets/animations/cradle.ani", 4.0},
-                                   Example{"assets/animations/gas.ani", 2.0}, Example{"assets/scenes/tipping_cube.lua", 5.0},
-                                   Example{"assets/scenes/tumbling_cube.lua", 3.0}, Example{"assets/scenes/rolling_ball.lua", 3.0},
-                                   Example{"assets/scenes/tumbling_box.lua", 1.0}, Example{"assets/scenes/box_stack.lua", 2.0}}) {
+    for (const Example &example :
+         {Example{"assets/animations/drop.ani", 10.0}, Example{"assets/animations/cradle.ani", 4.0},
+          Example{"assets/animations/gas.ani", 2.0}, Example{"assets/scenes/tipping_cube.lua", 5.0},
+          Example{"assets/scenes/tumbling_cube.lua", 3.0},
+          Example{"assets/scenes/rolling_ball.lua", 3.0},
+          Example{"assets/scenes/tumbling_box.lua", 1.0},
+          Example{"assets/scenes/box_stack.lua", 2.0}}) {
         const fs::path file = test::source_dir() / example.file;
         CAPTURE(file.string());
         auto original = timeline_of(file);
@@ -127,15 +132,18 @@ TEST_CASE("a bake saved and loaded answers as the original, bit for bit, with bo
             for (const ani_motion_segment &s : original->segments(static_cast<int>(m)))
                 for (double t : {s.t0, s.t1}) times.push_back(std::min(t, example.until));
             for (const RotationSegment &r : original->rotations(static_cast<int>(m))) {
-                for (double t : {r.t0, (r.t0 + r.t1) / 2, r.t1}) times.push_back(std::min(t, example.until));
+                for (double t : {r.t0, (r.t0 + r.t1) / 2, r.t1})
+                    times.push_back(std::min(t, example.until));
                 free += r.free != nullptr;
                 hinge += r.hinge != nullptr;
                 spin_up += r.alpha != glm::dvec3(0.0);
-                CHECK(loaded->rotations(static_cast<int>(m)).size() == original->rotations(static_cast<int>(m)).size());
+                CHECK(loaded->rotations(static_cast<int>(m)).size() ==
+                      original->rotations(static_cast<int>(m)).size());
             }
         }
         int differing = 0;
-        for (double t : times) differing += answers_at(*original, t).words != answers_at(*loaded, t).words;
+        for (double t : times)
+            differing += answers_at(*original, t).words != answers_at(*loaded, t).words;
         CHECK(differing == 0);
         CHECK(findings(*original).words == findings(*loaded).words);
         CHECK(loaded->events().size() == original->events().size());
@@ -156,12 +164,13 @@ TEST_CASE("a bake file is refused, leaving the timeline as it was, when it does 
     save_bake(*original, dir / "drop.bake");
     const std::string bytes = test::read_file(dir / "drop.bake");
 
-    auto refused = [&](const std::string &content, const std::string &message, double needed = 1.0) {
+    auto refused = [&](const std::string &content, const std::string &message,
+                       double needed = 1.0) {
         test::write_file(dir / "bad.bake", content);
         auto t = timeline_of(drop);
         t->bake(0.5);
-        CHECK_THROWS_WITH(load_bake(*t, dir / "bad.bake", needed), Catch::Contains((dir / "bad.bake").string()) &&
-                                                                          Catch::Contains(message));
+        CHECK_THROWS_WITH(load_bake(*t, dir / "bad.bake", needed),
+                          Catch::Contains((dir / "bad.bake").string()) && Catch::Contains(message));
         CHECK(t->baked_until() == 0.5); // as it was
     };
     refused(bytes, "holds a bake to 2 s, and 3 s is needed", 3.0);
@@ -178,14 +187,16 @@ TEST_CASE("a bake file is refused, leaving the timeline as it was, when it does 
 
     // Another backend, a parameter, an edit that moves something, another mesh.
     Document doc = original->document();
-    auto refused_for = [&](const Document &d, const std::string &message, const std::string &backend = "") {
+    auto refused_for = [&](const Document &d, const std::string &message,
+                           const std::string &backend = "") {
         Timeline t(d, env().plugins, backend);
         std::vector<std::string> ids, warnings;
         for (const Model &m : d.models()) ids.push_back(m.mesh);
         t.set_meshes(load_meshes(ids, env().assets, drop, warnings));
         CHECK_THROWS_WITH(load_bake(t, dir / "drop.bake", 1.0), Catch::Contains(message));
     };
-    refused_for(doc, "was baked with physics backend 'physics.custom', not 'physics.bullet'", "physics.bullet");
+    refused_for(doc, "was baked with physics backend 'physics.custom', not 'physics.bullet'",
+                "physics.bullet");
     Document heavier = doc;
     Model ball = heavier.models()[1];
     ball.mass = 2.0;
