@@ -1,11 +1,13 @@
 // `animator bake FILE`: bakes an animation with a physics backend and writes what it found: a
-// trace of every model's state, the collision events, and statistics.
+// trace of every model's state, the collision events, statistics, and the bake itself for
+// `animator render --bake` (timeline/bake_file.hpp).
 #include "cli/cli_support.hpp"
 #include "cli/commands.hpp"
 
 #include "io/document_io.hpp"
 #include "io/environment.hpp"
 #include "plugin/descriptor_check.hpp"
+#include "timeline/bake_file.hpp"
 #include "timeline/timeline.hpp"
 #include "timeline/world_turning.hpp"
 
@@ -22,7 +24,7 @@ namespace animator::cli {
 namespace {
 
 struct BakeOptions {
-    std::string file, backend, trace, events;
+    std::string file, backend, trace, events, save;
     std::vector<std::string> params;
     double until = -1.0;
     double step = 1.0 / 60.0;
@@ -149,6 +151,10 @@ int run_bake(const BakeOptions &o) {
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!o.trace.empty()) write_trace(o.trace, timeline, until, o.step);
         if (!o.events.empty()) write_events(o.events, timeline);
+        if (!o.save.empty()) {
+            save_bake(timeline, o.save);
+            std::cout << "wrote " << o.save << " (the bake of 0 to " << number(until) << " s)\n";
+        }
         if (o.stats) print_stats(timeline, wall);
         return kSuccess;
     } catch (const std::exception &e) {
@@ -174,6 +180,9 @@ void add_bake_command(CLI::App &app, std::function<int()> &run) {
                     "write every model's state as CSV: t,model,x,y,z,rx,ry,rz,sx,sy,sz,vx,vy,vz,qw,qx,qy,qz,wx,wy,wz "
                     "(q: world orientation, w: angular velocity in rad/s about world axes)");
     cmd->add_option("--events", o->events, "write collision events as CSV: t,a,b,nx,ny,nz,speed");
+    cmd->add_option("--save", o->save,
+                    "write the bake itself to this file (FILE.bake), for animator render --bake: many "
+                    "machines rendering shares of the frames use one bake (docs/render-farm.md)");
     cmd->add_option("--param", o->params, "a backend parameter, NAME=VALUE (repeatable)");
     cmd->add_flag("--stats", o->stats,
                   "print wall time, segments, events, skipped stages and the backend's counts "

@@ -110,6 +110,16 @@ glm::dquat orientation_at(const RotationSegment &s, double t) {
     return glm::normalize(turn * q0);
 }
 
+std::shared_ptr<const ani::FreeRotation> free_rotation_of(const RotationSegment &s) {
+    const glm::dquat q0(s.q0.w, s.q0.x, s.q0.y, s.q0.z);
+    return std::make_shared<const ani::FreeRotation>(s.moments, glm::normalize(q0) * s.principal,
+                                                     glm::dvec3(s.w.x, s.w.y, s.w.z), s.t0);
+}
+
+std::shared_ptr<const ani::Pendulum> hinge_of(const RotationSegment &s) {
+    return std::make_shared<const ani::Pendulum>(s.omega2, s.angle0, s.rate0, s.t0);
+}
+
 glm::dvec3 angular_velocity_at(const RotationSegment &s, double t) {
     if (s.free) {
         glm::dquat q;
@@ -334,7 +344,8 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         r.w = s->w0;
         r.principal = glm::normalize(principal);
         r.pivot = glm::dvec3(s->pivot.x, s->pivot.y, s->pivot.z);
-        r.free = std::make_shared<const ani::FreeRotation>(moments, glm::normalize(q0) * r.principal, w0, s->t0);
+        r.moments = moments;
+        r.free = free_rotation_of(r);
         (*ctx->rotations)[s->model].push_back(std::move(r));
     };
     sink.spin_up = [](void *c, const ani_spin_up_segment *s) {
@@ -367,7 +378,10 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         r.w = {s->rate0 * axis.x, s->rate0 * axis.y, s->rate0 * axis.z};
         r.axis = axis;
         r.pivot = glm::dvec3(s->pivot.x, s->pivot.y, s->pivot.z);
-        r.hinge = std::make_shared<const ani::Pendulum>(s->omega2, s->angle0, s->rate0, s->t0);
+        r.omega2 = s->omega2;
+        r.angle0 = s->angle0;
+        r.rate0 = s->rate0;
+        r.hinge = hinge_of(r);
         (*ctx->rotations)[s->model].push_back(std::move(r));
     };
     sink.overlap = [](void *c, const ani_overlap *o) {
@@ -399,6 +413,35 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     stats_.seconds_baked += until - from;
     baked_until_ = until;
     baked_any_ = true;
+}
+
+BakedState Timeline::baked_state() const {
+    return BakedState{baked_any_ ? baked_until_ : 0.0, segments_, rotations_, events_, overlaps_};
+}
+
+void Timeline::restore(BakedState state) {
+    const std::size_t n = doc_.models().size();
+    if (state.segments.size() != n || state.rotations.size() != n)
+        throw std::invalid_argument("a bake of " + std::to_string(state.segments.size()) + " models for a document of " +
+                                    std::to_string(n));
+    segments_ = std::move(state.segments);
+    rotations_ = std::move(state.rotations);
+    events_ = std::move(state.events);
+    overlaps_ = std::move(state.overlaps);
+    baked_until_ = state.until;
+    baked_any_ = true;
+}
+
+std::vector<std::pair<std::string, ParamValue>> Timeline::backend_params() const {
+    std::vector<std::pair<std::string, ParamValue>> params;
+    const ani_plugin_descriptor *d = physics_->info().descriptor;
+    for (uint32_t k = 0; d && k < d->param_count; ++k) params.emplace_back(d->params[k].id, physics_->get_param(d->params[k].id));
+    return params;
+}
+
+const ani_mesh_view *Timeline::mesh_view(int model) const {
+    const auto m = static_cast<size_t>(model);
+    return m < meshes_.size() && meshes_[m] ? &meshes_[m]->view : nullptr;
 }
 
 void Timeline::bake(double until, const std::function<bool(double)> &progress) {

@@ -54,6 +54,27 @@ struct RotationSegment : ani_rotation_segment {
     // by psi(t) - psi(t0) about `axis` after q0, about `pivot`).
     std::shared_ptr<const ani::Pendulum> hinge;
     glm::dvec3 axis{0.0};
+    // The numbers `free` and `hinge` are made from (free_rotation_of, hinge_of), kept so that a
+    // bake read from a file (timeline/bake_file.hpp) makes them again, the same to the bit.
+    glm::dvec3 moments{0.0};                        // free: the principal moments, ascending
+    double omega2 = 0.0, angle0 = 0.0, rate0 = 0.0; // hinge: the pendulum's w^2, angle and rate at t0
+};
+
+// A free segment's closed form from its t0, q0, w (w0), principal and moments; a hinge
+// segment's from its t0, omega2, angle0 and rate0. The numbers must pass
+// ani::FreeRotation::refusal or ani::Pendulum::refusal.
+std::shared_ptr<const ani::FreeRotation> free_rotation_of(const RotationSegment &s);
+std::shared_ptr<const ani::Pendulum> hinge_of(const RotationSegment &s);
+
+// What a bake made: every model's motion and rotation segments, the collisions and overlaps,
+// and how far it reaches. A timeline gives it (to save it) and takes one made elsewhere
+// (timeline/bake_file.hpp).
+struct BakedState {
+    double until = 0.0;
+    std::vector<std::vector<ani_motion_segment>> segments; // per model, in time order
+    std::vector<std::vector<RotationSegment>> rotations;   // per model, in time order
+    std::vector<ani_collision_event> events;
+    std::vector<ani_overlap> overlaps;
 };
 
 // The world orientation and angular velocity (rad/s, world axes) of a rotation segment at t.
@@ -71,6 +92,11 @@ class Timeline {
     // fails.
     void bake(double until, const std::function<bool(double)> &progress = {});
     double baked_until() const { return baked_until_; }
+    // The bake so far, and a bake to use in place of baking (of this document, backend and
+    // meshes: timeline/bake_file.hpp checks that). restore() throws std::invalid_argument,
+    // changing nothing, when the state has not one list of each per model.
+    BakedState baked_state() const;
+    void restore(BakedState state);
 
     // Every model and the camera at t seconds, within what is baked.
     Frame evaluate(double t) const;
@@ -110,6 +136,11 @@ class Timeline {
     const std::vector<ani_overlap> &overlaps() const { return overlaps_; }
     const BakeStats &stats() const { return stats_; }
     const std::string &backend_id() const { return physics_->info().id; }
+    // The backend's parameters as its instance has them (the document's or its defaults), in
+    // the order the plugin declares them.
+    std::vector<std::pair<std::string, ParamValue>> backend_params() const;
+    // The mesh the backend collides model `model` with (after its rest shape), or null.
+    const ani_mesh_view *mesh_view(int model) const;
     const KeyedMotion &keyed() const { return *keyed_; }
     // The backend's rotation segment that turns the model at t, if one does.
     const RotationSegment *rotation_at(int model, double t) const;

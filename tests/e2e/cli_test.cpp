@@ -159,6 +159,32 @@ TEST_CASE("animator bake writes a trace of every model at every step and every k
     CHECK_THAT(events[1], Catch::Contains(",cube,stairs,0,1,0,"));
 }
 
+TEST_CASE("animator bake --save writes the bake through a partial file, and a run stopped part way "
+          "leaves an earlier file whole") {
+    namespace fs = std::filesystem;
+    const fs::path dir = test::fresh_dir("cli_bake_save");
+    const std::string gas = (test::source_dir() / "assets/animations/gas.ani").string();
+    const fs::path bake = dir / "gas.bake";
+    auto r = test::run_animator("bake " + drop + " --until 2 --save " + bake.string());
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("wrote " + bake.string() + " (the bake of 0 to 2 s)"));
+    const std::string earlier = test::read_file(bake);
+    CHECK(earlier.rfind(std::string("ANIBAKE\0\1\0\0\0", 12), 0) == 0); // the magic, then version 1
+    // A far larger bake, killed by the file size limit (SIGXFSZ) while it writes.
+    r = test::run_animator("bake " + gas + " --until 2 --save " + bake.string(), "ulimit -f 16;");
+    CHECK(r.exit_code != 0);
+    CHECK(test::read_file(bake) == earlier);
+    // Without the limit it is written whole, and replaces the earlier file.
+    r = test::run_animator("bake " + gas + " --until 2 --save " + bake.string());
+    CHECK(r.exit_code == 0);
+    CHECK(test::read_file(bake).size() > 16 * 1024);
+    CHECK_FALSE(fs::exists(dir / ".gas.bake.partial"));
+    // A folder that is not there: exit 1 naming the file.
+    r = test::run_animator("bake " + drop + " --save " + (dir / "no/such/folder/x.bake").string());
+    CHECK(r.exit_code == 1);
+    CHECK_THAT(r.out, Catch::Contains((dir / "no/such/folder/x.bake").string() + ": cannot be written"));
+}
+
 TEST_CASE("animator bake runs on every example and reports its statistics") {
     namespace fs = std::filesystem;
     for (const char *folder : {"assets/animations", "assets/scenes"})

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -365,4 +366,120 @@ TEST_CASE("animator render --frames A-B renders a share of the frames, the same 
     CHECK(test::run_animator("render " + drop + " --out " + shares.string() + " --frames 3").exit_code == 2);
     CHECK(test::run_animator("render " + drop + " --out " + shares.string() + " --frames 0-1 --video x.mp4").exit_code ==
           2);
+}
+
+namespace {
+// The frame_NNNNN.png files of a folder, name -> bytes.
+std::map<std::string, std::string> frame_files(const fs::path &dir) {
+    std::map<std::string, std::string> files;
+    for (const auto &entry : fs::directory_iterator(dir))
+        if (entry.path().extension() == ".png") files[entry.path().filename().string()] = test::read_file(entry.path());
+    return files;
+}
+} // namespace
+
+TEST_CASE("animator render --bake draws with a saved bake the same PNG files, bit for bit, whole or in "
+          "shares") {
+    // drop.ani's ball bounces; tipping_cube.lua's cube tips over its edge (a hinge), lands and
+    // slides; tumbling_cube.lua's cube turns freely (torque-free rotation) as it flies and lands.
+    for (const char *example : {"assets/animations/drop.ani", "assets/scenes/tipping_cube.lua",
+                                "assets/scenes/tumbling_cube.lua"}) {
+        const fs::path file = test::source_dir() / example;
+        CAPTURE(file.string());
+        const fs::path dir = test::fresh_dir("render_bake_" + file.stem().string());
+        const std::string bake = (dir / "anim.bake").string();
+        auto r = test::run_animator("bake " + file.string() + " --save " + bake);
+        INFO(r.out);
+        REQUIRE(r.exit_code == 0);
+        CHECK_THAT(r.out, Catch::Contains("wrote " + bake + " (the bake of 0 to "));
+
+        const std::string common = " --to 1.1 --fps 10 --size 64x48";
+        r = test::run_animator("render " + file.string() + " --out " + (dir / "baked_here").string() + common, kNoDisplay);
+        REQUIRE(r.exit_code == 0);
+        r = test::run_animator("render " + file.string() + " --out " + (dir / "whole").string() + common + " --bake " + bake,
+                               kNoDisplay);
+        REQUIRE(r.exit_code == 0);
+        for (const char *range : {"0-4", "5-11"}) {
+            r = test::run_animator("render " + file.string() + " --out " + (dir / "shares").string() + common + " --frames " +
+                                       range + " --bake " + bake,
+                                   kNoDisplay);
+            REQUIRE(r.exit_code == 0);
+        }
+        const auto expected = frame_files(dir / "baked_here");
+        REQUIRE(expected.size() == 12);
+        CHECK(frame_files(dir / "whole") == expected);
+        CHECK(frame_files(dir / "shares") == expected);
+        // Something moves: the frames are not all one picture.
+        CHECK(expected.begin()->second != expected.rbegin()->second);
+    }
+}
+
+TEST_CASE("animator render --bake refuses a bake that does not fit, saying why, with exit 1") {
+    const fs::path dir = test::fresh_dir("render_bake_refused");
+    fs::copy_file(test::source_dir() / "assets/animations/drop.ani", dir / "drop.ani");
+    const std::string drop = (dir / "drop.ani").string(), bake = (dir / "drop.bake").string();
+    REQUIRE(test::run_animator("bake " + drop + " --save " + bake).exit_code == 0);
+    const std::string bytes = test::read_file(bake);
+    const std::string out = (dir / "frames").string();
+
+    auto refused = [&](const std::string &doc, const std::string &bake_file, const std::string &options,
+                       const std::string &message) {
+        const auto r = test::run_animator("render " + doc + " --out " + out + " --to 1 --fps 10 --size 32x24 --bake " +
+                                              bake_file + options,
+                                          kNoDisplay);
+        INFO(r.out);
+        CHECK(r.exit_code == 1);
+        CHECK_THAT(r.out, Catch::Contains("--bake " + bake_file) && Catch::Contains(message));
+        CHECK_FALSE(fs::exists(out)); // refused before any frame
+    };
+    // Another document; another backend; other parameters.
+    refused((test::source_dir() / "assets/animations/cradle.ani").string(), bake, "",
+            "was baked from another document, or from this one before an edit that changes motion");
+    refused(drop, bake, " --backend physics.bullet", "was baked with physics backend 'physics.custom', not 'physics.bullet'");
+    refused(drop, bake, " --param broad_phase=2", "was baked with physics.custom's parameter 'broad_phase' = 0, not 2");
+    // Another version of the format, truncated, corrupt, not a bake, missing.
+    std::string later = bytes;
+    later[8] = 2;
+    test::write_file(dir / "later.bake", later);
+    refused(drop, (dir / "later.bake").string(), "", "format version 2, and this animator reads version 1");
+    test::write_file(dir / "short.bake", bytes.substr(0, bytes.size() / 2));
+    refused(drop, (dir / "short.bake").string(), "", "is truncated");
+    std::string flipped = bytes;
+    flipped[bytes.size() - 20] = static_cast<char>(flipped[bytes.size() - 20] ^ 1);
+    test::write_file(dir / "flipped.bake", flipped);
+    refused(drop, (dir / "flipped.bake").string(), "", "is corrupt: its checksum does not match its contents");
+    refused(drop, drop, "", "not a bake file");
+    refused(drop, (dir / "none.bake").string(), "", "cannot be read (No such file or directory)");
+    // A bake that ends before the frames do; a share within it is drawn.
+    REQUIRE(test::run_animator("bake " + drop + " --until 0.5 --save " + (dir / "half.bake").string()).exit_code == 0);
+    refused(drop, (dir / "half.bake").string(), "", "holds a bake to 0.5 s, and 1 s is needed");
+    auto share = test::run_animator("render " + drop + " --out " + out + " --to 1 --fps 10 --size 32x24 --frames 0-5 --bake " +
+                                        (dir / "half.bake").string(),
+                                    kNoDisplay);
+    CHECK(share.exit_code == 0);
+    fs::remove_all(out);
+
+    // The document edited: a key moved is refused; a colour changed moves nothing and is not.
+    std::string text = test::read_file(dir / "drop.ani");
+    const std::string key = "state \"ball\" center 0 5 0", colour = "kd 0.9 0.2 0.1";
+    REQUIRE(text.find(key) != std::string::npos);
+    REQUIRE(text.find(colour) != std::string::npos);
+    test::write_file(dir / "drop.ani", std::string(text).replace(text.find(key), key.size(), "state \"ball\" center 0 4 0"));
+    refused(drop, bake, "", "the models' keyframes differ");
+    test::write_file(dir / "drop.ani", std::string(text).replace(text.find(colour), colour.size(), "kd 0.1 0.2 0.9"));
+    const auto recoloured =
+        test::run_animator("render " + drop + " --out " + out + " --to 1 --fps 10 --size 32x24 --bake " + bake, kNoDisplay);
+    CHECK(recoloured.exit_code == 0);
+    // A mesh file beside the document, changed after the bake (one vertex moved).
+    fs::copy_file(test::bin_dir().parent_path() / "assets/meshes/sphere.obj", dir / "ball.obj");
+    test::write_file(dir / "drop.ani", std::string(text).replace(text.find("mesh \"sphere\""), 13, "mesh \"ball.obj\""));
+    REQUIRE(test::run_animator("bake " + drop + " --save " + bake).exit_code == 0);
+    REQUIRE(test::run_animator("render " + drop + " --out " + out + " --to 0 --size 32x24 --bake " + bake, kNoDisplay)
+                .exit_code == 0);
+    std::string mesh = test::read_file(dir / "ball.obj");
+    const auto v = mesh.find("\nv ") + 1, end = mesh.find('\n', v);
+    REQUIRE((v > 0 && end != std::string::npos));
+    test::write_file(dir / "ball.obj", mesh.replace(v, end - v, "v 0 0 0.9"));
+    fs::remove_all(out);
+    refused(drop, bake, "", "was baked with another mesh for model 'ball'");
 }
