@@ -234,6 +234,46 @@ class GltfBuilder {
         return index;
     }
 
+    // The accessors of a mesh as a model's rest shape puts it: a primitive without material.
+    tinygltf::Primitive geometry(const Mesh &source, const glm::dmat3 &shape, const std::array<double, 9> &key,
+                                 bool textured) {
+        const auto cache_key = std::make_tuple(&source, key, textured);
+        const auto found = geometries_.find(cache_key);
+        if (found != geometries_.end()) return found->second;
+        // A rest shape (a course node's shear) is the model's own: glTF nodes cannot shear, so
+        // it goes into the vertices, and the normals by its inverse transpose.
+        const glm::dmat3 normal_matrix = glm::inverseTranspose(shape);
+        std::vector<float> positions, normals, uvs;
+        for (size_t i = 0; i < source.positions.size(); ++i) {
+            const glm::dvec3 p = shape * source.positions[i];
+            const glm::dvec3 n = glm::normalize(normal_matrix * source.normals[i]);
+            positions.insert(positions.end(), {float(p.x), float(p.y), float(p.z)});
+            normals.insert(normals.end(), {float(n.x), float(n.y), float(n.z)});
+            // Our UVs count v up from the image's bottom row (OBJ's way); glTF's from its top.
+            uvs.insert(uvs.end(), {float(source.uvs[i].x), float(1.0 - source.uvs[i].y)});
+        }
+        tinygltf::Primitive primitive;
+        primitive.mode = TINYGLTF_MODE_TRIANGLES;
+        primitive.attributes["POSITION"] =
+            float_accessor(positions, TINYGLTF_TYPE_VEC3, 3, true, TINYGLTF_TARGET_ARRAY_BUFFER);
+        primitive.attributes["NORMAL"] =
+            float_accessor(normals, TINYGLTF_TYPE_VEC3, 3, false, TINYGLTF_TARGET_ARRAY_BUFFER);
+        if (textured)
+            primitive.attributes["TEXCOORD_0"] =
+                float_accessor(uvs, TINYGLTF_TYPE_VEC2, 2, false, TINYGLTF_TARGET_ARRAY_BUFFER);
+        tinygltf::Accessor indices;
+        indices.bufferView =
+            buffer_view(source.triangles.data(), source.triangles.size() * sizeof(std::uint32_t),
+                        TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+        indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+        indices.count = source.triangles.size();
+        indices.type = TINYGLTF_TYPE_SCALAR;
+        model_.accessors.push_back(indices);
+        primitive.indices = static_cast<int>(model_.accessors.size() - 1);
+        geometries_.emplace(cache_key, primitive);
+        return primitive;
+    }
+
     int mesh(size_t m) {
         const Model &model = doc_.models()[m];
         const std::shared_ptr<const Mesh> &source = m < meshes_.size() ? meshes_[m] : nullptr;
@@ -245,42 +285,16 @@ class GltfBuilder {
         std::array<double, 9> rest{};
         for (int c = 0; c < 3; ++c)
             for (int r = 0; r < 3; ++r) rest[static_cast<size_t>(c * 3 + r)] = model.rest[c][r];
-        const auto key = std::make_tuple(source.get(), rest, material_index);
+        const bool textured =
+            source->has_uvs && model_.materials[static_cast<size_t>(material_index)]
+                                       .pbrMetallicRoughness.baseColorTexture.index >= 0;
+        const auto key = std::make_tuple(source.get(), rest, textured, material_index);
         const auto found = gltf_meshes_.find(key);
         if (found != gltf_meshes_.end()) return found->second;
-
-        // A rest shape (a course node's shear) is the model's own: glTF nodes cannot shear, so
-        // it goes into the vertices, and the normals by its inverse transpose.
-        const glm::dmat3 normal_matrix = glm::inverseTranspose(model.rest);
-        std::vector<float> positions, normals, uvs;
-        for (size_t i = 0; i < source->positions.size(); ++i) {
-            const glm::dvec3 p = model.rest * source->positions[i];
-            const glm::dvec3 n = glm::normalize(normal_matrix * source->normals[i]);
-            positions.insert(positions.end(), {float(p.x), float(p.y), float(p.z)});
-            normals.insert(normals.end(), {float(n.x), float(n.y), float(n.z)});
-            // Our UVs count v up from the image's bottom row (OBJ's way); glTF's from its top.
-            uvs.insert(uvs.end(), {float(source->uvs[i].x), float(1.0 - source->uvs[i].y)});
-        }
-        tinygltf::Primitive primitive;
-        primitive.mode = TINYGLTF_MODE_TRIANGLES;
+        // One mesh per material, all of them over one set of accessors: a gas of 125 balls of
+        // as many colours holds the sphere once.
+        tinygltf::Primitive primitive = geometry(*source, model.rest, rest, textured);
         primitive.material = material_index;
-        primitive.attributes["POSITION"] =
-            float_accessor(positions, TINYGLTF_TYPE_VEC3, 3, true, TINYGLTF_TARGET_ARRAY_BUFFER);
-        primitive.attributes["NORMAL"] =
-            float_accessor(normals, TINYGLTF_TYPE_VEC3, 3, false, TINYGLTF_TARGET_ARRAY_BUFFER);
-        if (source->has_uvs && model_.materials[static_cast<size_t>(material_index)]
-                                       .pbrMetallicRoughness.baseColorTexture.index >= 0)
-            primitive.attributes["TEXCOORD_0"] =
-                float_accessor(uvs, TINYGLTF_TYPE_VEC2, 2, false, TINYGLTF_TARGET_ARRAY_BUFFER);
-        tinygltf::Accessor indices;
-        indices.bufferView =
-            buffer_view(source->triangles.data(), source->triangles.size() * sizeof(std::uint32_t),
-                        TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-        indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-        indices.count = source->triangles.size();
-        indices.type = TINYGLTF_TYPE_SCALAR;
-        model_.accessors.push_back(indices);
-        primitive.indices = static_cast<int>(model_.accessors.size() - 1);
         tinygltf::Mesh out;
         out.name = model.mesh;
         out.primitives.push_back(primitive);
@@ -506,7 +520,8 @@ class GltfBuilder {
                         double, double>,
              int>
         materials_;
-    std::map<std::tuple<const Mesh *, std::array<double, 9>, int>, int> gltf_meshes_;
+    std::map<std::tuple<const Mesh *, std::array<double, 9>, bool>, tinygltf::Primitive> geometries_;
+    std::map<std::tuple<const Mesh *, std::array<double, 9>, bool, int>, int> gltf_meshes_;
 };
 
 } // namespace
