@@ -177,6 +177,12 @@ for _ in $(seq 600); do [ "$(ls "$work/drop_render" 2>/dev/null | wc -l)" -ge 20
 shot render-progress 0.1
 xdotool keydown Escape; sleep 0.1; xdotool keyup Escape   # cancel
 for _ in $(seq 600); do grep -q '^animator: render cancelled' "$work/log" && break; sleep 0.1; done
+# File > Export glTF (.glb)...: the Export dialog with only glTF ticked (docs/export.md).
+sleep 0.5
+click 24 19                    # File
+click 60 192                   # Export glTF (.glb)...
+shot export-gltf
+xdotool key Escape; sleep 0.3
 
 # Adding models (docs/manual.md, "Adding, duplicating and deleting models"): SHIFT+A's dialog
 # over the demo scene, "c" typed to narrow the meshes listed.
