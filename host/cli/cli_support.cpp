@@ -1,5 +1,7 @@
 #include "cli/cli_support.hpp"
 
+#include "timeline/bake_file.hpp"
+
 #include "assets/mesh.hpp"
 
 #include <unistd.h>
@@ -135,5 +137,25 @@ void load_document_meshes(Timeline &timeline, const Environment &env,
     for (const std::string &w : not_said_before(std::move(warnings), said)) warn(w);
     stop_if_strict(file.string());
 }
+
+bool bake_or_load(Timeline &timeline, const std::string &file, const std::string &bake_file, double until) {
+    if (bake_file.empty()) {
+        ProgressBar bar("baking");
+        timeline.bake(until, [&](double f) { return bar(f); });
+        return true;
+    }
+    try {
+        load_bake(timeline, bake_file, until);
+        return true;
+    } catch (const BakeFileError &e) {
+        std::cerr << "animator: " << file << ": --bake " << e.what() << "\n";
+        return false;
+    }
+}
+
+const char *const kBakeOptionHelp =
+    "use this bake (animator bake FILE --save FILE.bake) instead of baking: the machines of a render farm share "
+    "one; refused unless it was made from this document, backend, parameters and meshes and reaches as far as "
+    "needed (docs/render-farm.md)";
 
 } // namespace animator::cli

@@ -68,4 +68,12 @@ std::vector<std::string> param_names(PluginRegistry &plugins, const std::string 
 void load_document_meshes(Timeline &timeline, const Environment &env,
                           const std::filesystem::path &file, const std::vector<std::string> &said);
 
+// Bakes the timeline up to `until` seconds (with a progress bar), or, with a `bake_file`
+// (`--bake`, from `animator bake --save`), takes that bake instead. False, said on stderr naming
+// `file` and the bake file, when the bake file is refused (docs/render-farm.md).
+bool bake_or_load(Timeline &timeline, const std::string &file, const std::string &bake_file, double until);
+
+// The help of a subcommand's --bake option.
+extern const char *const kBakeOptionHelp;
+
 } // namespace animator::cli

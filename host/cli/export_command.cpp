@@ -16,7 +16,7 @@ namespace animator::cli {
 namespace {
 
 struct ExportOptions {
-    std::string file, out, backend;
+    std::string file, out, backend, bake;
     std::vector<std::string>
         to; // the form: --to OUT.glb and --to S, told apart by the value
     std::vector<std::string> params;
@@ -92,8 +92,7 @@ int run_export(ExportOptions o) {
         for (const std::string &w : not_said_before(std::move(warnings), opened->warnings)) warn(w);
         stop_if_strict(o.file);
         timeline.set_meshes(meshes);
-        ProgressBar bar;
-        timeline.bake(*end, [&](double f) { return bar(f); });
+        if (!bake_or_load(timeline, o.file, o.bake, *end)) return kBadInput;
 
         MotionKeyOptions keys;
         keys.from = o.from;
@@ -150,6 +149,7 @@ void add_export_command(CLI::App &app, std::function<int()> &run) {
     cmd->add_option("--backend", o->backend,
                     "physics backend plugin id (default: the animation's)");
     cmd->add_option("--param", o->params, "a backend parameter, NAME=VALUE (repeatable)");
+    cmd->add_option("--bake", o->bake, kBakeOptionHelp);
     cmd->callback([&run, o] { run = [o] { return run_export(*o); }; });
 }
 

@@ -12,7 +12,6 @@
 #include "render/offscreen_context.hpp"
 #include "render/png_frame_writer.hpp"
 #include "render/renderer.hpp"
-#include "timeline/bake_file.hpp"
 #include "timeline/timeline.hpp"
 
 #include <malloc.h>
@@ -240,17 +239,7 @@ int run_render(const RenderCommandOptions &o) {
         for (const std::string &w : not_said_before(std::move(warnings), opened->warnings)) warn(w);
         stop_if_strict(o.file);
         timeline.set_meshes(meshes);
-        if (!o.bake.empty()) {
-            try {
-                load_bake(timeline, o.bake, bake_to);
-            } catch (const BakeFileError &e) {
-                std::cerr << "animator: " << o.file << ": --bake " << e.what() << "\n";
-                return kBadInput;
-            }
-        } else {
-            ProgressBar bar("baking");
-            timeline.bake(bake_to, [&](double f) { return bar(f); });
-        }
+        if (!bake_or_load(timeline, o.file, o.bake, bake_to)) return kBadInput;
 
         OffscreenContext context;
         RenderOptions options;
@@ -319,11 +308,7 @@ void add_render_command(CLI::App &app, std::function<int()> &run) {
                     "named by its place in the whole, as the whole render writes it: a render "
                     "farm's share (docs/rendering.md)")
         ->check([](const std::string &s) { return parse_frames(s); });
-    cmd->add_option("--bake", o->bake,
-                    "use this bake (animator bake FILE --save FILE.bake) instead of baking: the "
-                    "machines of a render farm share one; refused unless it was made from this "
-                    "document, backend, parameters and meshes and reaches the last frame "
-                    "(docs/render-farm.md)");
+    cmd->add_option("--bake", o->bake, kBakeOptionHelp);
     CLI::Option *fps = cmd->add_option("--fps", o->fps, "frames per second (default 30)")
                            ->check(CLI::Range(0.001, 1000.0));
     cmd->add_option("--size", o->size,

@@ -16,7 +16,7 @@ namespace animator::cli {
 namespace {
 
 struct SoundtrackOptions {
-    std::string file, out, backend;
+    std::string file, out, backend, bake;
     std::vector<std::string> params;
     double until = -1.0;
     int rate = 44100;
@@ -38,10 +38,7 @@ int run_soundtrack(const SoundtrackOptions &o) {
 
         Timeline timeline(doc, env.plugins, o.backend);
         load_document_meshes(timeline, env, o.file, opened->warnings);
-        {
-            ProgressBar bar("baking");
-            timeline.bake(*end, [&](double f) { return bar(f); });
-        }
+        if (!bake_or_load(timeline, o.file, o.bake, *end)) return kBadInput;
         audio::MixOptions mix;
         mix.rate = o.rate;
         mix.until = *end;
@@ -80,6 +77,7 @@ void add_soundtrack_command(CLI::App &app, std::function<int()> &run) {
     cmd->add_option("--until", o->until, "mix up to this time in seconds (default: the max time)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--param", o->params, "a backend parameter, NAME=VALUE (repeatable)");
+    cmd->add_option("--bake", o->bake, kBakeOptionHelp);
     cmd->callback([&run, o] { run = [o] { return run_soundtrack(*o); }; });
 }
 

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <tuple>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -183,6 +184,32 @@ TEST_CASE("animator bake --save writes the bake through a partial file, and a ru
     r = test::run_animator("bake " + drop + " --save " + (dir / "no/such/folder/x.bake").string());
     CHECK(r.exit_code == 1);
     CHECK_THAT(r.out, Catch::Contains((dir / "no/such/folder/x.bake").string() + ": cannot be written"));
+}
+
+TEST_CASE("animator soundtrack and export take a shared bake (--bake) and write what they write when they bake") {
+    namespace fs = std::filesystem;
+    const fs::path dir = test::fresh_dir("cli_shared_bake");
+    const std::string cradle = (test::source_dir() / "assets/animations/cradle.ani").string();
+    const fs::path bake = dir / "cradle.bake";
+    REQUIRE(test::run_animator("bake " + cradle + " --save " + bake.string()).exit_code == 0);
+    for (const std::string &command : {std::string("soundtrack ") + cradle + " --out " + (dir / "X.wav").string(),
+                                       std::string("export ") + cradle + " --to " + (dir / "X.glb").string()}) {
+        CAPTURE(command);
+        auto own = test::run_animator(std::regex_replace(command, std::regex("X\\."), "own."));
+        REQUIRE(own.exit_code == 0);
+        auto shared = test::run_animator(std::regex_replace(command, std::regex("X\\."), "shared.") + " --bake " + bake.string());
+        INFO(shared.out);
+        REQUIRE(shared.exit_code == 0);
+        const std::string ext = command.find("soundtrack") == 0 ? ".wav" : ".glb";
+        CHECK(test::read_file(dir / ("own" + ext)) == test::read_file(dir / ("shared" + ext)));
+        // Another animation's bake is refused, naming it, and nothing is written.
+        const std::string drop_bake = (dir / "drop.bake").string();
+        if (!fs::exists(drop_bake)) REQUIRE(test::run_animator("bake " + drop + " --save " + drop_bake).exit_code == 0);
+        auto refused = test::run_animator(std::regex_replace(command, std::regex("X\\."), "refused.") + " --bake " + drop_bake);
+        CHECK(refused.exit_code == 1);
+        CHECK_THAT(refused.out, Catch::Contains("--bake " + drop_bake));
+        CHECK_FALSE(fs::exists(dir / ("refused" + ext)));
+    }
 }
 
 TEST_CASE("animator bake runs on every example and reports its statistics") {
