@@ -9,13 +9,14 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <limits>
 #include <map>
-#include <set>
-#include <sstream>
+#include <tuple>
+#include <string>
 
 namespace animator {
 
