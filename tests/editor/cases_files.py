@@ -10,7 +10,7 @@ FILE_MENU = (24, 19)                # "File" in the Animator Interface's menu ba
 FILE_MENU_ITEM_STEP = 17            # items in the open menu, from the first one's middle
 FILE_MENU_OPEN_RECENT = (60, 78)    # the third item: New... (44), Open... (61), Open Recent
 FILE_MENU_QUIT = (40, 213)          # the last item: Save (99), Save As... (116), Add Model... (137), Render... (158), Export... (175), Export glTF (192)
-RECENT_ITEM0 = (250, 78)            # the submenu's first file, opened right of the menu
+RECENT_ITEM0 = (320, 78)            # the submenu's first file, opened right of the menu
 # The questions' buttons, from the dialog's left edge and the top of its title bar.
 REPLACE_BUTTON = (35, 69)
 REPLACE_CANCEL = (96, 69)
