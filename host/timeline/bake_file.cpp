@@ -461,9 +461,10 @@ void load_bake(Timeline &timeline, const std::filesystem::path &path, double nee
                                           std::istreambuf_iterator<char>());
     if (in.bad()) throw BakeFileError(name + ": reading failed");
 
-    const bool magic =
-        std::memcmp(bytes.data(), kMagic, std::min(bytes.size(), sizeof kMagic)) == 0;
-    if (!magic || bytes.empty())
+    // (An empty file has no bytes to compare: its data() may be null, which memcmp must not get.)
+    const bool magic = !bytes.empty() &&
+                       std::memcmp(bytes.data(), kMagic, std::min(bytes.size(), sizeof kMagic)) == 0;
+    if (!magic)
         throw BakeFileError(name + ": not a bake file (it does not begin with ANIBAKE)");
     if (bytes.size() < kHeaderSize)
         throw BakeFileError(name + " is truncated: " + std::to_string(bytes.size()) +
