@@ -129,13 +129,16 @@ std::vector<std::string> param_names(PluginRegistry &plugins, const std::string 
     return names;
 }
 
-void load_document_meshes(Timeline &timeline, const Environment &env,
-                          const std::filesystem::path &file, const std::vector<std::string> &said) {
+std::vector<std::shared_ptr<const Mesh>> load_document_meshes(Timeline &timeline, const Environment &env,
+                                                              const std::filesystem::path &file,
+                                                              const std::vector<std::string> &said) {
     std::vector<std::string> mesh_ids, warnings;
     for (const Model &m : timeline.document().models()) mesh_ids.push_back(m.mesh);
-    timeline.set_meshes(load_meshes(mesh_ids, env.assets, file, warnings));
+    auto meshes = load_meshes(mesh_ids, env.assets, file, warnings);
     for (const std::string &w : not_said_before(std::move(warnings), said)) warn(w);
     stop_if_strict(file.string());
+    timeline.set_meshes(meshes);
+    return meshes;
 }
 
 bool bake_or_load(Timeline &timeline, const std::string &file, const std::string &bake_file, double until) {

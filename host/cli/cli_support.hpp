@@ -63,10 +63,12 @@ void apply_params(Document &doc, const std::string &backend,
 // The names of the parameters that a plugin declares.
 std::vector<std::string> param_names(PluginRegistry &plugins, const std::string &plugin_id);
 
-// Gives the timeline the meshes of the document's models (found next to `file` too); warnings
-// go to stderr, but for those its reader `said` already.
-void load_document_meshes(Timeline &timeline, const Environment &env,
-                          const std::filesystem::path &file, const std::vector<std::string> &said);
+// Gives the timeline the meshes of the document's models (found next to `file` too) and returns
+// them (one per model, null for an empty); warnings go to stderr, but for those its reader `said`
+// already. With --strict, a warning stops it (stop_if_strict).
+std::vector<std::shared_ptr<const Mesh>> load_document_meshes(Timeline &timeline, const Environment &env,
+                                                              const std::filesystem::path &file,
+                                                              const std::vector<std::string> &said);
 
 // Bakes the timeline up to `until` seconds (with a progress bar), or, with a `bake_file`
 // (`--bake`, from `animator bake --save`), takes that bake instead. False, said on stderr naming

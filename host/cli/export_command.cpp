@@ -86,12 +86,7 @@ int run_export(ExportOptions o) {
         const std::string backend = o.backend.empty() ? doc.settings().physics_backend : o.backend;
         apply_params(doc, backend, o.params);
         Timeline timeline(doc, env.plugins, o.backend);
-        std::vector<std::string> mesh_ids, warnings;
-        for (const Model &m : doc.models()) mesh_ids.push_back(m.mesh);
-        const auto meshes = load_meshes(mesh_ids, env.assets, o.file, warnings);
-        for (const std::string &w : not_said_before(std::move(warnings), opened->warnings)) warn(w);
-        stop_if_strict(o.file);
-        timeline.set_meshes(meshes);
+        const auto meshes = load_document_meshes(timeline, env, o.file, opened->warnings);
         if (!bake_or_load(timeline, o.file, o.bake, *end)) return kBadInput;
 
         MotionKeyOptions keys;
