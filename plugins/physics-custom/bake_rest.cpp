@@ -121,6 +121,9 @@ bool EventBake::settle_on(int i, int o, const glm::dvec3 &n, double t) {
             if (std::abs(glm::dot(n, placed_c + corner) - held.support_d) <= kTipSlack * size)
                 stand.push_back(corner);
         if (!over_feet(glm::dvec3(0.0), stand, b.free_a, 1e-9 * size)) return false;
+        // It stays on while its centre of mass is over the flat region: past the rim it tips
+        // over it (a box sliding off a step's nose), not when its last corner leaves.
+        held.support_feet = {-(glm::dot(n, placed_c) - held.support_d) * n};
     }
     held.t0 = t;
     held.path = Path{c, v - glm::dot(v, n) * n, b.free_a - glm::dot(b.free_a, n) * n};
@@ -174,8 +177,9 @@ std::vector<std::array<glm::dvec3, 3>> EventBake::support_boundary(const Obstacl
 }
 
 // When the last of the points it touches the support with leaves the flat region, within
-// [now, now + limit]. (A model that cannot turn tips over nothing: it is held until it is
-// wholly past the rim.)
+// [now, now + limit]: a sphere's touching point, a turning model's centre of mass (seen along
+// the normal), or every corner of a model that cannot turn (it tips over nothing: it is held
+// until it is wholly past the rim).
 std::optional<double> EventBake::leaves_support(const Body &b, double now, double limit) const {
     const Path c = from_now(b, now);
     std::optional<double> last;

@@ -12,7 +12,6 @@
 namespace physics_custom {
 
 namespace {
-
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double radius_of(const TurningMesh &mesh) {
@@ -107,6 +106,69 @@ double plane_taylor_step(const TurningMesh &mesh, const TurningPath &path, const
     return step;
 }
 
+// The bounds of a path's turn over all time: |w| <= spin, |w'| <= spin_rate.
+void turn_bounds(const TurningPath &path, double &spin, double &spin_rate) {
+    spin = path.turn ? path.w_bound : glm::length(path.w);
+    spin_rate = path.turn ? path.w_rate_bound : 0.0;
+}
+
+// The safe step from a plane that turns with one body, F: through its point x0 (a corner of
+// F's triangle) with unit normal n now, F's triangle on its side n . (x - x0) <= 0 (the caller
+// makes sure: the plane of F's face, or through an edge of F's triangle and across an edge of
+// the other's, F's third corner below it), and turning with F that triangle stays there. While
+// every corner of the other triangle o (of O on path po) stays above it, they do not touch.
+// That follows a contact about which F turns (a cube's face or edge tipping over a step's nose,
+// the other's edge touching it inside), where a fixed direction closes at F's far corners
+// however slowly the touching points meet (Mirtich's bound and the fixed-direction Taylor bound
+// crawl there).
+//
+// For a corner y of o, h(t) = n(t) . (y(t) - x0(t)) has h' = (w x n) . p + n . p' and
+// |h''| <= (|w'| + |w|^2) |p| + 2 |w| |p'| + |p''|, p = y - x0; over a window of length S,
+// |p''| <= P2 (the centres' relative acceleration and each turn's (|w'| + |w|^2) r),
+// |p'| <= |p'(t)| + P2 S and |p| <= |p(t)| + |p'(t)| S + P2 S^2 / 2. The first root of
+// h + h' s - M s^2 / 2 within S is safe; a few windows are tried, the best kept.
+double turning_plane_step(const Moving &F, uint32_t x0_index, const TurningPath &pf,
+                          const glm::dvec3 &n, const Moving &O, const uint32_t *o,
+                          const TurningPath &po, double t) {
+    const glm::dvec3 x0 = F.x[x0_index];
+    for (int j = 0; j < 3; ++j)
+        if (!(glm::dot(n, O.x[o[j]] - x0) > 0.0)) return 0.0; // it does not separate them now
+    double wf = 0.0, wf_rate = 0.0, wo = 0.0, wo_rate = 0.0;
+    turn_bounds(pf, wf, wf_rate);
+    turn_bounds(po, wo, wo_rate);
+    const glm::dvec3 turning_n = glm::cross(pf.angular_velocity(t), n);
+    const double centres = glm::length(pf.a - po.a);
+    double best = 0.0;
+    for (double window : {1e-5, 1e-3, 1e-1}) {
+        double step = window;
+        for (int j = 0; j < 3 && step > 0.0; ++j) {
+            const glm::dvec3 p = O.x[o[j]] - x0, dp = O.v[o[j]] - F.v[x0_index];
+            const double h = glm::dot(n, p);
+            const double rate = glm::dot(turning_n, p) + glm::dot(n, dp);
+            const double p2 =
+                centres + (wf_rate + wf * wf) * F.r[x0_index] + (wo_rate + wo * wo) * O.r[o[j]];
+            const double p1 = glm::length(dp) + p2 * window;
+            const double p0 =
+                glm::length(p) + glm::length(dp) * window + 0.5 * p2 * window * window;
+            const double m = (wf_rate + wf * wf) * p0 + 2.0 * wf * p1 + p2;
+            step = std::min(step, taylor_reach(h, rate, -m));
+        }
+        best = std::max(best, step);
+    }
+    return best;
+}
+
+// turning_plane_step from the plane of F's triangle f, turned towards o.
+double turning_face_step(const Moving &F, const uint32_t *f, const TurningPath &pf,
+                         const Moving &O, const uint32_t *o, const TurningPath &po, double t) {
+    const glm::dvec3 x0 = F.x[f[0]];
+    const glm::dvec3 n = glm::cross(F.x[f[1]] - x0, F.x[f[2]] - x0);
+    const double len = glm::length(n);
+    if (!(len > 0.0)) return 0.0;
+    const double side = glm::dot(n, O.x[o[0]] - x0) > 0.0 ? 1.0 : -1.0;
+    return turning_plane_step(F, f[0], pf, n * (side / len), O, o, po, t);
+}
+
 // The safe step of one triangle of a against one of b (conservative advancement on convex
 // pieces, as C2A does on a polygon soup). Nearest points pa, pb at distance d apart, n from pb
 // to pa: the plane through them with normal n separates the two triangles (both convex), and the
@@ -184,7 +246,19 @@ double pair_step(const Moving &A, const uint32_t *ta, const TurningPath &pa_path
     }
     const double closing = -glm::dot(n, pa_path.velocity(t) - pb_path.velocity(t));
     const double first = first_reach(slab, closing + turn_a * ra + turn_b * rb, -na);
-    return std::max(first, second);
+    // Planes that turn with either body: the plane of its face, and the plane across n through
+    // its corner nearest the other (n as it is now, then turning with that body).
+    uint32_t lowest_a = ta[0], highest_b = tb[0];
+    for (int i = 1; i < 3; ++i) {
+        if (glm::dot(n, A.x[ta[i]]) < glm::dot(n, A.x[lowest_a])) lowest_a = ta[i];
+        if (glm::dot(n, B.x[tb[i]]) > glm::dot(n, B.x[highest_b])) highest_b = tb[i];
+    }
+    const double turning =
+        std::max({turning_face_step(A, ta, pa_path, B, tb, pb_path, t),
+                  turning_face_step(B, tb, pb_path, A, ta, pa_path, t),
+                  turning_plane_step(A, lowest_a, pa_path, -n, B, tb, pb_path, t),
+                  turning_plane_step(B, highest_b, pb_path, n, A, ta, pa_path, t)});
+    return std::max({first, second, turning});
 }
 
 struct Nearest {
