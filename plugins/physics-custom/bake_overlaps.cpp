@@ -129,7 +129,7 @@ void EventBake::meet_overlap(int i, int other, const Seen &seen, double t) {
     const double still = 1e-9 * std::max(1.0, glm::length(relative));
     if (along < -still) { // approaching: the collision they would have had on touching
         if (o) {
-            collide_bodies(i, other, seen.contact, t);
+            collide_bodies(i, other, seen.contact, {}, t);
             if (predicted_.size() == bodies_.size()) predict(other, t);
         } else {
             collide_obstacle(i, obstacles_[static_cast<size_t>(-1 - other)], seen.contact, {}, t);

@@ -254,6 +254,7 @@ void EventBake::predict(int i, double now) {
         if (!is_ignored(i, j)) {
             ++tested;
             std::optional<Contact> c;
+            std::vector<glm::dvec3> points; // every point touching, for two turning bodies
             if (b.free_sphere() && o.free_sphere()) {
                 double rb = b.radius, ro = o.radius;
                 radii_against(i, j, rb, ro);
@@ -261,10 +262,13 @@ void EventBake::predict(int i, double now) {
             } else if (b.shape && o.shape) {
                 if (!(b.still() && o.still()))
                     c = mesh_pair(*b.shape, from_now(b, now), *o.shape, from_now(o, now), limit);
+            } else if (b.turning() && o.turning() && !b.hinge && !o.hinge) {
+                if (!(b.still() && o.still())) c = predict_turning_pair(i, j, now, limit, points);
             } else if (!(b.still() && o.still()))
                 c = advance(i, j, -1, now, limit); // may find them overlapping, and ignore them
             if (c) {
                 next = predicted(now + c->t, EventKind::kBody, j, o.version, *c);
+                next.points = points;
                 limit = c->t;
             }
         }
@@ -616,6 +620,63 @@ void EventBake::predict_turning_obstacle(int i, size_t o, double now, double lim
     contact.normal = c.found() ? c.normal : glm::dvec3(0.0);
     next = predicted(now + c.t, EventKind::kObstacle, static_cast<int>(o), 0, contact);
     next.points = c.found() ? c.points : std::vector<glm::dvec3>{};
+}
+
+// Two turning bodies (a box knocked across the one it slept on, two tumbling dice): their first
+// contact within [now, now + limit] at which they move into each other, by the certified
+// advancement of turning_contact.hpp, as a turning body meets a static model
+// (predict_turning_obstacle): a contact found as they part or slide along each other is passed,
+// the search going on a step later in which no point can close the contact slack.
+std::optional<Contact> EventBake::predict_turning_pair(int i, int j, double now, double limit,
+                                                       std::vector<glm::dvec3> &points) {
+    const Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
+    const TurningPath pb = turning_path(b, now), po = turning_path(o, now);
+    // Broad phase: the centres cannot come nearer than they are by more than they travel.
+    const double travel = (glm::length(pb.v - po.v) + 0.5 * glm::length(pb.a - po.a) * limit) * limit;
+    if (glm::length(pb.c0 - po.c0) - b.turning_reach_now() - o.turning_reach_now() > travel)
+        return std::nullopt;
+    const TurningMesh mb = turning_mesh(b), mo = turning_mesh(o);
+    constexpr double kSlack = 1e-9; // turning_contact.hpp's contact slack (m)
+    auto closing = [&](const TurningContact &c) {
+        const double at = now + c.t;
+        const double still = 1e-12 * std::max(1.0, point_speed(b, at, 0.0) + point_speed(o, at, 0.0));
+        std::vector<glm::dvec3> touching = c.points;
+        if (touching.empty()) touching.push_back(c.point);
+        for (const glm::dvec3 &p : touching)
+            if (glm::dot(point_velocity(b, p, at) - point_velocity(o, p, at), c.normal) < -still)
+                return true;
+        return false;
+    };
+    double from = 0.0;
+    TurningContact c;
+    for (int tries = 0;; ++tries) {
+        c = turning_mesh_contact(mb, pb, mo, po, from, limit);
+        count_.mesh_tests += static_cast<std::size_t>(c.steps) + 1;
+        if (c.found())
+            c.normal = separating_face_normal(mb, pb, mo, po, c.t,
+                                              kSlack + c.gap, c.normal);
+        // The normal from o towards b: the side b's centre is on.
+        if (c.found() && glm::dot(c.normal, pb.center(c.t) - c.point) <
+                             glm::dot(c.normal, po.center(c.t) - c.point))
+            c.normal = -c.normal;
+        if (!(c.found() && tries < 1000 && !closing(c))) break;
+        const double speed = point_speed(b, now + c.t, 1e-6) + point_speed(o, now + c.t, 1e-6);
+        if (!(speed > 0.0)) return std::nullopt;
+        from = c.t + std::min(1e-6, 0.5 * kSlack / speed);
+        if (from >= limit) return std::nullopt;
+    }
+    if (c.kind == TurningContact::kInvalid)
+        throw ani::Failure(ANI_ERR_FAILED, std::string("models '") +
+                                               name_of(scene_->models[b.model]) + "' and '" +
+                                               name_of(scene_->models[o.model]) +
+                                               "' would turn to a value that is not finite");
+    if (!c.found() && c.kind != TurningContact::kUndecided) return std::nullopt;
+    Contact contact;
+    contact.t = c.t;
+    contact.point = c.point;
+    contact.normal = c.found() ? c.normal : glm::dvec3(0.0); // undecided: looked at again
+    points = c.found() ? c.points : std::vector<glm::dvec3>{};
+    return contact;
 }
 
 // The normal of a contact with a static model points from it towards the body's centre (for a

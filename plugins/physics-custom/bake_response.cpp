@@ -57,7 +57,8 @@ void EventBake::collide_obstacle(int i, const Obstacle &o, const Contact &contac
     report(e);
 }
 
-void EventBake::collide_bodies(int i, int j, const Contact &contact, double t) {
+void EventBake::collide_bodies(int i, int j, const Contact &contact,
+                               const std::vector<glm::dvec3> &points, double t) {
     Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
     const glm::dvec3 n = contact.normal;
     if (b.turning() || o.turning()) { // the turning models' section below
@@ -70,6 +71,18 @@ void EventBake::collide_bodies(int i, int j, const Contact &contact, double t) {
         // A resting body that the blow presses into its support takes it through that support
         // (bake_rest.cpp, "resting on other models"): it stays, as a static model would.
         const bool b_held = held_by_support(b, n), o_held = held_by_support(o, -n);
+        if (b_held != o_held && b.turning() && o.turning() && !b.keyed() && !o.keyed()) {
+            const int mover = b_held ? j : i, still = b_held ? i : j;
+            Contact towards = contact;
+            if (b_held) towards.normal = -n; // from the still one towards the mover
+            const ani_collision_event e = collision_event(
+                b.model, o.model, contact, t,
+                point_velocity(b, contact.point, t) - point_velocity(o, contact.point, t));
+            respond_turning_to_held(mover, still, towards, points, t);
+            after_contact(mover, t);
+            report(e);
+            return;
+        }
         const ImpulseBody ib = b_held ? ImpulseBody{} : impulse_body(b, contact.point, t),
                           io = o_held ? ImpulseBody{} : impulse_body(o, contact.point, t);
         const bool b_wall = b.keyed(), o_wall = o.keyed();
@@ -312,24 +325,20 @@ ImpulseBody EventBake::impulse_body(const Body &b, const glm::dvec3 &point, doub
     return x;
 }
 
-// A turning body meets static model o at `points` (world space; at least the contact's
-// point) with normal n: the impulse of the pair's restitution and friction at the points'
-// centre of pressure. The Zeno rule puts it on the face when its bounces there have become
-// too small to follow and it does not turn (a box landing flat). True when it was put there.
-bool EventBake::respond_turning_to_obstacle(int i, const Obstacle &o, const Contact &contact,
-                                            const std::vector<glm::dvec3> &points, double t) {
-    Body &b = bodies_[static_cast<size_t>(i)];
-    const Material mo = material_of(*scene_->models[o.model].desc);
-    const double e = combined_restitution(b.material.restitution, mo.restitution),
-                 mu = combined_friction(b.material.friction, mo.friction);
+// The impulse of a turning body b against something that does not move (a static model, or a
+// body held still by its support), touching at `points` (world space; at least the contact's
+// point) with normal n towards b: one point's impulse, or several points' together at their
+// centre of pressure. `a` receives b as the impulse saw it, with its r at that point.
+ImpulseResult EventBake::turning_impulse_on_still(const Body &b, const Contact &contact,
+                                                  const std::vector<glm::dvec3> &points,
+                                                  double e, double mu, double t,
+                                                  ImpulseBody &a) const {
     const glm::dvec3 n = contact.normal, c = b.path.at(t - b.t0);
-    ImpulseBody a = impulse_body(b, contact.point, t);
+    a = impulse_body(b, contact.point, t);
     const std::vector<glm::dvec3> offsets =
         contact_offsets(b, points.empty() ? std::vector<glm::dvec3>{contact.point} : points, t);
     std::vector<glm::dvec3> at;
     for (const glm::dvec3 &r : offsets) at.push_back(c + r);
-    // One point: its impulse. Several: their impulses together, at their centre of pressure.
-    ImpulseResult r;
     std::optional<SimultaneousImpulse> together;
     if (offsets.size() > 1)
         together = simultaneous_impulse(a, c, ImpulseBody{}, glm::dvec3(0.0), at, n, e);
@@ -340,21 +349,41 @@ bool EventBake::respond_turning_to_obstacle(int i, const Obstacle &o, const Cont
         // it gets no spin from rounding.
         const glm::dvec3 across = a.r - glm::dot(a.r, n) * n;
         if (glm::length(across) <= 1e-12 * b.turning_reach) a.r = glm::dot(a.r, n) * n;
-        r = contact_impulse_of(a, ImpulseBody{}, n, together->normal, mu);
-    } else { // the point that moves into it fastest
-        a.r = offsets[0];
-        ImpulseBody probe = a;
-        for (const glm::dvec3 &r_k : offsets) {
-            probe.r = r_k;
-            if (glm::dot(point_velocity_of(probe), n) < glm::dot(point_velocity_of(a), n))
-                a.r = r_k;
-        }
-        r = contact_impulse(a, ImpulseBody{}, n, e, mu);
+        return contact_impulse_of(a, ImpulseBody{}, n, together->normal, mu);
     }
+    // The point that moves into it fastest.
+    a.r = offsets[0];
+    ImpulseBody probe = a;
+    for (const glm::dvec3 &r_k : offsets) {
+        probe.r = r_k;
+        if (glm::dot(point_velocity_of(probe), n) < glm::dot(point_velocity_of(a), n)) a.r = r_k;
+    }
+    return contact_impulse(a, ImpulseBody{}, n, e, mu);
+}
+
+// The smallest bounce the Zeno rule follows, as a speed, for a body pressed along -n by g_n.
+double EventBake::microcollision_speed(const Body &b, double g_n, double t) const {
+    const double scale = std::max(1.0, glm::length(b.path.at(t - b.t0)));
+    return g_n > 0.0 ? std::sqrt(2.0 * g_n * kZenoHeight * scale) : 0.0;
+}
+
+// A turning body meets static model o at `points` with normal n: the impulse of the pair's
+// restitution and friction at the points' centre of pressure. The Zeno rule puts it on the face
+// when its bounces there have become too small to follow and it does not turn (a box landing
+// flat). True when it was put there.
+bool EventBake::respond_turning_to_obstacle(int i, const Obstacle &o, const Contact &contact,
+                                            const std::vector<glm::dvec3> &points, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    const Material mo = material_of(*scene_->models[o.model].desc);
+    const double e = combined_restitution(b.material.restitution, mo.restitution),
+                 mu = combined_friction(b.material.friction, mo.friction);
+    const glm::dvec3 n = contact.normal, c = b.path.at(t - b.t0);
+    ImpulseBody a;
+    ImpulseResult r = turning_impulse_on_still(b, contact, points, e, mu, t, a);
     const double vn = glm::dot(r.va, n), g_n = -glm::dot(b.free_a, n),
                  scale = std::max(1.0, glm::length(c));
     // The speed of the highest bounce the Zeno rule still follows (zeno.hpp).
-    const double v_min = g_n > 0.0 ? std::sqrt(2.0 * g_n * kZenoHeight * scale) : 0.0;
+    const double v_min = microcollision_speed(b, g_n, t);
     // The Zeno rule, for a model that does not turn, or turns so slowly that no point of it
     // moves as fast as the bounces too small to follow (then it stops turning). settle_on puts
     // it there only if it stands balanced; otherwise it tips over by the microcollisions below.
@@ -384,6 +413,29 @@ bool EventBake::respond_turning_to_obstacle(int i, const Obstacle &o, const Cont
     restart(b, t, r.va, false);
     turn(b, t, r.wa);
     return false;
+}
+
+// A turning body b meets body o, which its support holds still (bake_rest.cpp, "resting on other
+// models"), at `points` with normal n from o towards b: as against a static model, every
+// touching point shares the impulse, and b leaves at least at the microcollision speed (a box
+// knocked across the one it slept on slides over it by microcollisions, its face's corners
+// taking them together). o takes nothing. It goes to sleep on o when it comes to rest there.
+void EventBake::respond_turning_to_held(int i, int j, const Contact &contact,
+                                        const std::vector<glm::dvec3> &points, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    const Body &o = bodies_[static_cast<size_t>(j)];
+    const double e = combined_restitution(b.material.restitution, o.material.restitution),
+                 mu = combined_friction(b.material.friction, o.material.friction);
+    const glm::dvec3 n = contact.normal;
+    ImpulseBody a;
+    ImpulseResult r = turning_impulse_on_still(b, contact, points, e, mu, t, a);
+    const double v_min = microcollision_speed(b, -glm::dot(b.free_a, n), t);
+    ImpulseBody after = a;
+    after.v = r.va;
+    after.w = r.wa;
+    if (glm::dot(point_velocity_of(after), n) < v_min) r = leave_at(after, n, v_min, mu);
+    restart(b, t, r.va, false);
+    turn(b, t, r.wa);
 }
 
 // Two bodies, one or both turning, meet with normal n (from o towards b): the impulse between

@@ -230,9 +230,12 @@ void EventBake::unsupport(Body &b, double t) {
 // face gains one.
 void EventBake::after_contact(int i, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
-    if (b.on_body >= 0 && !b.still()) { // knocked off the body it slept on
-        b.on_body = -1;
+    if (b.on_body >= 0 && !b.still()) { // knocked off the body it slept on: its own
+        b.on_body = -1;                     // acceleration again (asleep, it had none)
         --sleepers_;
+        if (b.t0 != t) rebase(b, t);
+        b.path.a = b.free_a;
+        ++b.version;
     }
     if (b.support >= 0) {
         const glm::dvec3 v = b.path.velocity(t - b.t0);
@@ -442,8 +445,11 @@ bool EventBake::sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec
     const glm::dvec3 c = b.path.at(t - b.t0);
     const double scale = std::max(1.0, glm::length(c));
     const double v_min = std::sqrt(2.0 * g_n * kZenoHeight * scale);
-    const double approach = std::max(0.0, -glm::dot(point_velocity(b, point, t), n));
-    if (approach * approach / (2.0 * g_n) > kZenoHeight * scale ||
+    const glm::dvec3 v = point_velocity(b, point, t);
+    const double approach = std::max(0.0, -glm::dot(v, n));
+    // (Nor while it slides across y: a box knocked over the one it slept on.)
+    const double slide = glm::length(b.path.velocity(t - b.t0) - glm::dot(b.path.velocity(t - b.t0), n) * n);
+    if (approach * approach / (2.0 * g_n) > kZenoHeight * scale || slide > v_min ||
         glm::length(b.spin.rate(t)) * (b.sphere ? b.radius : b.turning_reach) > v_min)
         return false;
     const double mu = combined_friction(b.material.friction, under.material.friction);

@@ -148,13 +148,16 @@ void EventBake::handle(int i, const Predicted &event, double now) {
         }
         if (event.contact.normal == glm::dvec3(0.0)) break; // undecided: look again
         unhinge(o, now);
-        if (grazing(point_velocity(b, event.contact.point, now) -
+        // (Two turning models always respond, as one against a static model: they part at
+        // least at the microcollision speed, so neither is left inside the other.)
+        if (!(b.turning() && o.turning()) &&
+            grazing(point_velocity(b, event.contact.point, now) -
                         point_velocity(o, event.contact.point, now),
                     event.contact.normal)) {
             ignore(i, event.other, now);
             break;
         }
-        collide_bodies(i, event.other, event.contact, now);
+        collide_bodies(i, event.other, event.contact, event.points, now);
         predict(event.other, now);
         break;
     }

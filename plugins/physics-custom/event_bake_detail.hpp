@@ -373,6 +373,8 @@ class EventBake {
     TurningPath turning_path(const Body &b, double now) const;
     TurningMesh turning_mesh(const Body &b) const;
     void predict_turning_obstacle(int i, size_t o, double now, double limit, Predicted &next);
+    std::optional<Contact> predict_turning_pair(int i, int j, double now, double limit,
+                                                std::vector<glm::dvec3> &points);
     static void outward(TurningContact &c, const TurningPath &path);
     bool approaching(const Body &b, const TurningContact &c, double now) const;
 
@@ -401,7 +403,8 @@ class EventBake {
     void release(int i, double t);
     void collide_obstacle(int i, const Obstacle &o, const Contact &contact,
                           const std::vector<glm::dvec3> &points, double t);
-    void collide_bodies(int i, int j, const Contact &contact, double t);
+    void collide_bodies(int i, int j, const Contact &contact,
+                        const std::vector<glm::dvec3> &points, double t);
     static ani_collision_event collision_event(uint32_t a, uint32_t b, const Contact &contact,
                                                double t, const glm::dvec3 &closing);
     bool sphere_responds(const Body &b, const ani_physics_model &other) const;
@@ -419,8 +422,14 @@ class EventBake {
                                             double t) const;
     ImpulseBody impulse_body(const Body &b, const glm::dvec3 &point, double t) const;
     double collision_mass(const Body &b) const;
+    ImpulseResult turning_impulse_on_still(const Body &b, const Contact &contact,
+                                           const std::vector<glm::dvec3> &points, double e,
+                                           double mu, double t, ImpulseBody &a) const;
+    double microcollision_speed(const Body &b, double g_n, double t) const;
     bool respond_turning_to_obstacle(int i, const Obstacle &o, const Contact &contact,
                                      const std::vector<glm::dvec3> &points, double t);
+    void respond_turning_to_held(int i, int j, const Contact &contact,
+                                 const std::vector<glm::dvec3> &points, double t);
     void respond_turning_pair(Body &b, const ImpulseBody &ib, bool b_wall, Body &o,
                               const ImpulseBody &io, bool o_wall, const glm::dvec3 &n, double t);
 

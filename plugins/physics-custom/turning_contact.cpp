@@ -500,6 +500,42 @@ TurningContact turning_mesh_contact(const TurningMesh &a, const TurningPath &pat
     return out;
 }
 
+glm::dvec3 separating_face_normal(const TurningMesh &a, const TurningPath &path_a,
+                                  const TurningMesh &b, const TurningPath &path_b, double t,
+                                  double slack, const glm::dvec3 &fallback) {
+    std::vector<glm::dvec3> va(a.vertex_count), vb(b.vertex_count);
+    for (std::size_t i = 0; i < a.vertex_count; ++i) va[i] = path_a.place(a.vertices[i], t);
+    for (std::size_t i = 0; i < b.vertex_count; ++i) vb[i] = path_b.place(b.vertices[i], t);
+    // How far apart they are along unit n (from b towards a): a's lowest less b's highest.
+    auto apart = [&](const glm::dvec3 &n) {
+        double low = kInf, high = -kInf;
+        for (const glm::dvec3 &x : va) low = std::min(low, glm::dot(n, x));
+        for (const glm::dvec3 &x : vb) high = std::max(high, glm::dot(n, x));
+        return low - high;
+    };
+    glm::dvec3 best = fallback;
+    double widest = -slack;
+    for (int side = 0; side < 2; ++side) {
+        const TurningMesh &m = side == 0 ? a : b;
+        const std::vector<glm::dvec3> &v = side == 0 ? va : vb;
+        for (std::size_t k = 0; k < m.triangle_count; ++k) {
+            const uint32_t *tri = m.triangles + 3 * k;
+            const glm::dvec3 f = glm::cross(v[tri[1]] - v[tri[0]], v[tri[2]] - v[tri[0]]);
+            const double len = glm::length(f);
+            if (!(len > 0.0)) continue;
+            for (double sign : {1.0, -1.0}) {
+                const glm::dvec3 n = f * (sign / len);
+                const double d = apart(n);
+                if (d > widest) {
+                    widest = d;
+                    best = n;
+                }
+            }
+        }
+    }
+    return best;
+}
+
 double turning_plane_root(const TurningMesh &mesh, const TurningPath &path,
                           const StaticPlane &given, double t_lo, double t1, std::size_t *vertex) {
     if (!window_is_finite(t_lo, t1) || !turning_path_is_finite(path) || !mesh_is_finite(mesh) ||

@@ -110,6 +110,15 @@ TurningContact turning_mesh_contact(const TurningMesh &a, const TurningPath &pat
                                     double t1, const TurningContactSettings &settings = {},
                                     double contact_slack = 1e-9);
 
+// Of the face normals of a and b at t, the one along which the two are furthest apart, from b
+// towards a (the separating axis of two convex meshes): where faces touch faces (a box standing
+// on a box, their sides flush too), the touching features alone leave the normal undecided, and
+// this is the face they stand on. `fallback` when no face normal has them apart within `slack`
+// (edge on edge).
+glm::dvec3 separating_face_normal(const TurningMesh &a, const TurningPath &path_a,
+                                  const TurningMesh &b, const TurningPath &path_b, double t,
+                                  double slack, const glm::dvec3 &fallback);
+
 // Whether every number of the path is finite.
 bool turning_path_is_finite(const TurningPath &path);
 
