@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <tuple>
 
 namespace animator::bench {
 
@@ -22,7 +23,7 @@ namespace {
 constexpr double G = 9.81;
 
 struct RestScene {
-    std::string name, file, what;
+    std::string name, file, what; // file: under assets/
     double until = 3.0;
     std::vector<std::string> measures;
     // The errors of a bake (one per measure).
@@ -48,6 +49,22 @@ double worst(double until, const std::function<double(double)> &f) {
     return e;
 }
 
+// The energy of the models named (kinetic, turning and potential), with their masses and moments
+// of inertia (each about every axis through its centre: a cube's or a ball's).
+double energy(const Timeline &t, const Document &doc, double at,
+              const std::vector<std::tuple<std::string, double, double>> &models) {
+    double e = 0.0;
+    for (const auto &[name, mass, inertia] : models) {
+        const int m = model_named(doc, name);
+        const ModelPose p = t.evaluate(at).models[static_cast<size_t>(m)];
+        const RotationSegment *r = t.rotation_at(m, at);
+        const glm::dvec3 w = r ? angular_velocity_at(*r, at) : glm::dvec3(0.0);
+        e += 0.5 * mass * glm::dot(p.velocity, p.velocity) + 0.5 * inertia * glm::dot(w, w) +
+             mass * G * p.center.y;
+    }
+    return e;
+}
+
 // The angle (degrees past the vertical through its edge) of a cube of side 1 m tipping from 15
 // degrees at rest, at t (tests/physics/tipping_pendulum.hpp), until the face lands at 45 degrees.
 double tipped(double t) {
@@ -60,7 +77,7 @@ double tipped(double t) {
 
 std::vector<RestScene> scenes() {
     return {
-        {"puck", "sliding_puck.lua", "cylinder pushed at 3 m/s, mu 0.3: x(t) to the stop", 3.0,
+        {"puck", "scenes/sliding_puck.lua", "cylinder pushed at 3 m/s, mu 0.3: x(t) to the stop", 3.0,
          {"position (m)", "still after the stop (m/s)"},
          [](const Timeline &t, const Document &doc) {
              const int m = model_named(doc, "puck");
@@ -79,7 +96,7 @@ std::vector<RestScene> scenes() {
                                 : glm::length(t.evaluate(s).models[static_cast<size_t>(m)].velocity);
                  })};
          }},
-        {"ramp", "ramp_boxes.lua", "boxes on 20 degree ramps, mu 0.2 (slides) and 0.5 (sticks)",
+        {"ramp", "scenes/ramp_boxes.lua", "boxes on 20 degree ramps, mu 0.2 (slides) and 0.5 (sticks)",
          3.0,
          {"sliding position (m)", "sticking creep (m)"},
          [](const Timeline &t, const Document &doc) {
@@ -96,7 +113,7 @@ std::vector<RestScene> scenes() {
                      return glm::length(t.evaluate(s).models[static_cast<size_t>(sticking)].center - s0);
                  })};
          }},
-        {"rolling", "rolling_ball.lua", "ball launched at 4 m/s without spin, mu 0.2: rolls at 5/7 v0",
+        {"rolling", "scenes/rolling_ball.lua", "ball launched at 4 m/s without spin, mu 0.2: rolls at 5/7 v0",
          3.0,
          {"speed once rolling (relative)"},
          [](const Timeline &t, const Document &doc) {
@@ -109,7 +126,7 @@ std::vector<RestScene> scenes() {
                                        v1) / v1;
              })};
          }},
-        {"tipping", "tipping_cube.lua", "cube on its edge at 30 degrees tips onto its face (to 2 s)",
+        {"tipping", "scenes/tipping_cube.lua", "cube on its edge at 30 degrees tips onto its face (to 2 s)",
          2.0,
          {"angle while it tips (degrees)", "off its face at rest (m)"},
          [](const Timeline &t, const Document &doc) {
@@ -124,7 +141,7 @@ std::vector<RestScene> scenes() {
                  std::abs(t.evaluate(2.0).models[static_cast<size_t>(m)].center.y - 0.5)};
          },
          0.001}, // its default, 0.04, rounds the edge it tips about: 3.5 degrees off at every step
-        {"stack", "box_stack.lua", "three boxes standing, a ball dropped on them (to 3 s)", 3.0,
+        {"stack", "scenes/box_stack.lua", "three boxes standing, a ball dropped on them (to 3 s)", 3.0,
          {"boxes' largest move (m)", "ball at rest on top (m)"},
          [](const Timeline &t, const Document &doc) {
              const int ball = model_named(doc, "ball");
@@ -140,6 +157,45 @@ std::vector<RestScene> scenes() {
              const double r = 0.3 * bt::unit_sphere_radius();
              return std::vector<double>{
                  moved, std::abs(t.evaluate(3.0).models[static_cast<size_t>(ball)].center.y - (3.0 + r))};
+         }},
+        {"knock", "scenes/stack_knock.lua",
+         "ball knocks the top box off a stack, e 1, mu 0 (to 2.5 s)", 2.5,
+         {"energy drift (relative)", "boxes under it moved (m)"},
+         [](const Timeline &t, const Document &doc) {
+             const std::vector<std::tuple<std::string, double, double>> models = {
+                 {"ball", 2.0, 0.4 * 2.0 * 0.09},
+                 {"top", 1.0, 1.0 / 6.0},
+                 {"middle", 1.0, 1.0 / 6.0},
+                 {"bottom", 1.0, 1.0 / 6.0}};
+             const double e0 = energy(t, doc, 0.0, models);
+             double moved = 0.0;
+             for (const char *name : {"bottom", "middle"}) {
+                 const int m = model_named(doc, name);
+                 moved = std::max(moved, worst(2.5, [&](double s) {
+                                      return glm::length(
+                                          t.evaluate(s).models[static_cast<size_t>(m)].center -
+                                          start_of(doc, m));
+                                  }));
+             }
+             return std::vector<double>{
+                 worst(2.5, [&](double s) { return std::abs(energy(t, doc, s, models) - e0) / e0; }),
+                 moved};
+         }},
+        {"stairs", "animations/stairs_tumble.ani",
+         "cube pushed off a step tumbles down the stairs, e 0.4, mu 0.5 (to 6 s)", 6.0,
+         {"slide to the nose (m)", "energy gained (J)"},
+         [](const Timeline &t, const Document &doc) {
+             const int m = model_named(doc, "cube");
+             const double a = 0.5 * G, nose = (4.0 - std::sqrt(16.0 - 2.0 * a * 0.7)) / a;
+             const std::vector<std::tuple<std::string, double, double>> models = {
+                 {"cube", 1.0, 0.25 / 6.0}};
+             const double e0 = energy(t, doc, 0.0, models);
+             return std::vector<double>{
+                 worst(nose, [&](double s) {
+                     return std::abs(t.evaluate(s).models[static_cast<size_t>(m)].center.x -
+                                     (0.3 + 4.0 * s - 0.5 * a * s * s));
+                 }),
+                 worst(6.0, [&](double s) { return std::max(0.0, energy(t, doc, s, models) - e0); })};
          }},
     };
 }
@@ -161,7 +217,7 @@ void run_rest(const Options &o) {
     for (const RestScene &s : scenes()) {
         const Document doc =
             open_document(bt::env().plugins,
-                          std::filesystem::path(ANIMATOR_SOURCE_DIR) / "assets/scenes" / s.file)
+                          std::filesystem::path(ANIMATOR_SOURCE_DIR) / "assets" / s.file)
                 .document;
         struct Point {
             std::vector<double> errors;

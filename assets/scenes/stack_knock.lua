@@ -18,17 +18,32 @@ floor:scale(20, 20, 20)
 floor:set_material(gr.material({0.6, 0.6, 0.6}, {0.1, 0.1, 0.1}, 10))
 root:add_child(floor)
 
-local colours = {bottom = {0.9, 0.5, 0.2}, middle = {0.2, 0.5, 0.9}, top = {0.3, 0.8, 0.3}}
-for k, name in ipairs({'bottom', 'middle', 'top'}) do
-    local box = gr.mesh('cube', name)
-    box:scale(0.5, 0.5, 0.5)
-    box:translate(0, k - 0.5, 0)
-    box:set_material(gr.material(colours[name], {0.8, 0.8, 0.8}, 60))
-    box:set_physics{dynamics = true, gravity = true, mass = 1, restitution = 1, friction = 0,
-                    rotates = true}
-    box:set_sound{collision = 'click'}
-    root:add_child(box)
-end
+local bottom = gr.mesh('cube', 'bottom')
+bottom:scale(0.5, 0.5, 0.5)
+bottom:translate(0, 0.5, 0)
+bottom:set_material(gr.material({0.9, 0.5, 0.2}, {0.8, 0.8, 0.8}, 60))
+bottom:set_physics{dynamics = true, gravity = true, mass = 1, restitution = 1, friction = 0,
+                   rotates = true}
+bottom:set_sound{collision = 'click'}
+root:add_child(bottom)
+
+local middle = gr.mesh('cube', 'middle')
+middle:scale(0.5, 0.5, 0.5)
+middle:translate(0, 1.5, 0)
+middle:set_material(gr.material({0.2, 0.5, 0.9}, {0.8, 0.8, 0.8}, 60))
+middle:set_physics{dynamics = true, gravity = true, mass = 1, restitution = 1, friction = 0,
+                   rotates = true}
+middle:set_sound{collision = 'click'}
+root:add_child(middle)
+
+local top = gr.mesh('cube', 'top')
+top:scale(0.5, 0.5, 0.5)
+top:translate(0, 2.5, 0)
+top:set_material(gr.material({0.3, 0.8, 0.3}, {0.8, 0.8, 0.8}, 60))
+top:set_physics{dynamics = true, gravity = true, mass = 1, restitution = 1, friction = 0,
+                rotates = true}
+top:set_sound{collision = 'click'}
+root:add_child(top)
 
 local ball = gr.mesh('sphere', 'ball')
 ball:scale(0.3, 0.3, 0.3)
