@@ -466,6 +466,30 @@ bool EventBake::sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec
     return true;
 }
 
+// A blow along `push` on resting body b is taken by what holds it up when it presses b into its
+// support and friction there can hold its part across (the stack's contact problem solved as one:
+// the support's normal and friction forces together cancel it). A blow from the side, or one
+// slanting more than the friction cone allows (a ball striking a frictionless stack's edge),
+// moves b, which then meets its support as any other body does.
+bool EventBake::held_by_support(const Body &b, const glm::dvec3 &push) const {
+    if (!resting(b)) return false;
+    const double into = -glm::dot(push, b.support_n);
+    if (!(into > 0.0)) return false;
+    const double across = glm::length(push + into * b.support_n);
+    const double mu =
+        b.on_body >= 0
+            ? combined_friction(b.material.friction,
+                                bodies_[static_cast<size_t>(b.on_body)].material.friction)
+            : combined_friction(b.material.friction,
+                                material_of(*scene_->models[obstacles_[static_cast<size_t>(
+                                                                b.support)]
+                                                                .model]
+                                                 .desc)
+                                    .friction);
+    // (A push straight into it, to rounding, is held by any support.)
+    return across <= mu * into + 1e-12;
+}
+
 // At the start of the bake: a turning model placed at rest on a resting one (a stack, built
 // from the floor up) sleeps on it from the start, as one put on a face does (try_settle_mesh),
 // instead of falling into it by nothing and being followed through ever smaller bounces.

@@ -454,10 +454,9 @@ class EventBake {
     void predict_friction(int i, double now, double &limit, Predicted &next) const;
     void friction_changes(Body &b, double now, bool stops);
     static bool resting(const Body &b) { return b.still() && (b.support >= 0 || b.on_body >= 0); }
-    // A resting body that an impulse along `push` presses into what it rests on.
-    static bool held_by_support(const Body &b, const glm::dvec3 &push) {
-        return resting(b) && glm::dot(push, b.support_n) < 0.0;
-    }
+    // A resting body that an impulse along `push` (unit) presses into what it rests on, within
+    // the friction cone of that support: its support takes the blow (bake_rest.cpp).
+    bool held_by_support(const Body &b, const glm::dvec3 &push) const;
     bool sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec3 &point, double t);
     void wake_riders(int j, double t);
     void settle_stacks(double t);
