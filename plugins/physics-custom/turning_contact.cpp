@@ -246,19 +246,27 @@ double pair_step(const Moving &A, const uint32_t *ta, const TurningPath &pa_path
     }
     const double closing = -glm::dot(n, pa_path.velocity(t) - pb_path.velocity(t));
     const double first = first_reach(slab, closing + turn_a * ra + turn_b * rb, -na);
-    // Planes that turn with either body: the plane of its face, and the plane across n through
-    // its corner nearest the other (n as it is now, then turning with that body).
+    // Planes that turn with either body that turns: the plane of its face, and the plane across
+    // n through its corner nearest the other (n as it is now, then turning with that body). Only
+    // where the fixed direction's steps are short (they crawl near a contact a body turns about;
+    // elsewhere they are long and the planes would only cost time).
+    double step = std::max(first, second);
+    if (step >= 1e-4) return step;
+    double wa = 0.0, wa_rate = 0.0, wb = 0.0, wb_rate = 0.0;
+    turn_bounds(pa_path, wa, wa_rate);
+    turn_bounds(pb_path, wb, wb_rate);
     uint32_t lowest_a = ta[0], highest_b = tb[0];
     for (int i = 1; i < 3; ++i) {
         if (glm::dot(n, A.x[ta[i]]) < glm::dot(n, A.x[lowest_a])) lowest_a = ta[i];
         if (glm::dot(n, B.x[tb[i]]) > glm::dot(n, B.x[highest_b])) highest_b = tb[i];
     }
-    const double turning =
-        std::max({turning_face_step(A, ta, pa_path, B, tb, pb_path, t),
-                  turning_face_step(B, tb, pb_path, A, ta, pa_path, t),
-                  turning_plane_step(A, lowest_a, pa_path, -n, B, tb, pb_path, t),
-                  turning_plane_step(B, highest_b, pb_path, n, A, ta, pa_path, t)});
-    return std::max({first, second, turning});
+    if (wa > 0.0 || wa_rate > 0.0)
+        step = std::max({step, turning_face_step(A, ta, pa_path, B, tb, pb_path, t),
+                         turning_plane_step(A, lowest_a, pa_path, -n, B, tb, pb_path, t)});
+    if (wb > 0.0 || wb_rate > 0.0)
+        step = std::max({step, turning_face_step(B, tb, pb_path, A, ta, pa_path, t),
+                         turning_plane_step(B, highest_b, pb_path, n, A, ta, pa_path, t)});
+    return step;
 }
 
 struct Nearest {
