@@ -77,7 +77,10 @@ double tipped(double t) {
 
 std::vector<RestScene> scenes() {
     return {
-        {"puck", "scenes/sliding_puck.lua", "cylinder pushed at 3 m/s, mu 0.3: x(t) to the stop", 3.0,
+        {"puck",
+         "scenes/sliding_puck.lua",
+         "cylinder pushed at 3 m/s, mu 0.3: x(t) to the stop",
+         3.0,
          {"position (m)", "still after the stop (m/s)"},
          [](const Timeline &t, const Document &doc) {
              const int m = model_named(doc, "puck");
@@ -96,7 +99,9 @@ std::vector<RestScene> scenes() {
                                 : glm::length(t.evaluate(s).models[static_cast<size_t>(m)].velocity);
                  })};
          }},
-        {"ramp", "scenes/ramp_boxes.lua", "boxes on 20 degree ramps, mu 0.2 (slides) and 0.5 (sticks)",
+        {"ramp",
+         "scenes/ramp_boxes.lua",
+         "boxes on 20 degree ramps, mu 0.2 (slides) and 0.5 (sticks)",
          3.0,
          {"sliding position (m)", "sticking creep (m)"},
          [](const Timeline &t, const Document &doc) {
@@ -113,7 +118,9 @@ std::vector<RestScene> scenes() {
                      return glm::length(t.evaluate(s).models[static_cast<size_t>(sticking)].center - s0);
                  })};
          }},
-        {"rolling", "scenes/rolling_ball.lua", "ball launched at 4 m/s without spin, mu 0.2: rolls at 5/7 v0",
+        {"rolling",
+         "scenes/rolling_ball.lua",
+         "ball launched at 4 m/s without spin, mu 0.2: rolls at 5/7 v0",
          3.0,
          {"speed once rolling (relative)"},
          [](const Timeline &t, const Document &doc) {
@@ -126,7 +133,9 @@ std::vector<RestScene> scenes() {
                                        v1) / v1;
              })};
          }},
-        {"tipping", "scenes/tipping_cube.lua", "cube on its edge at 30 degrees tips onto its face (to 2 s)",
+        {"tipping",
+         "scenes/tipping_cube.lua",
+         "cube on its edge at 30 degrees tips onto its face (to 2 s)",
          2.0,
          {"angle while it tips (degrees)", "off its face at rest (m)"},
          [](const Timeline &t, const Document &doc) {
@@ -141,7 +150,10 @@ std::vector<RestScene> scenes() {
                  std::abs(t.evaluate(2.0).models[static_cast<size_t>(m)].center.y - 0.5)};
          },
          0.001}, // its default, 0.04, rounds the edge it tips about: 3.5 degrees off at every step
-        {"stack", "scenes/box_stack.lua", "three boxes standing, a ball dropped on them (to 3 s)", 3.0,
+        {"stack",
+         "scenes/box_stack.lua",
+         "three boxes standing, a ball dropped on them (to 3 s)",
+         3.0,
          {"boxes' largest move (m)", "ball at rest on top (m)"},
          [](const Timeline &t, const Document &doc) {
              const int ball = model_named(doc, "ball");
@@ -158,8 +170,10 @@ std::vector<RestScene> scenes() {
              return std::vector<double>{
                  moved, std::abs(t.evaluate(3.0).models[static_cast<size_t>(ball)].center.y - (3.0 + r))};
          }},
-        {"knock", "scenes/stack_knock.lua",
-         "ball dropped on a stack's edge knocks its top box off, e 1, mu 0 (to 2 s)", 2.0,
+        {"knock",
+         "scenes/stack_knock.lua",
+         "ball dropped on a stack's edge knocks its top box off, e 1, mu 0 (to 2 s)",
+         2.0,
          {"energy drift (relative)", "boxes under it moved (m)"},
          [](const Timeline &t, const Document &doc) {
              const std::vector<std::tuple<std::string, double, double>> models = {
@@ -178,11 +192,14 @@ std::vector<RestScene> scenes() {
                                   }));
              }
              return std::vector<double>{
-                 worst(2.0, [&](double s) { return std::abs(energy(t, doc, s, models) - e0) / e0; }),
+                 worst(2.0,
+                       [&](double s) { return std::abs(energy(t, doc, s, models) - e0) / e0; }),
                  moved};
          }},
-        {"stairs", "animations/stairs_tumble.ani",
-         "cube pushed off a step tumbles down the stairs, e 0.4, mu 0.5 (to 6 s)", 6.0,
+        {"stairs",
+         "animations/stairs_tumble.ani",
+         "cube pushed off a step tumbles down the stairs, e 0.4, mu 0.5 (to 6 s)",
+         6.0,
          {"slide to the nose (m)", "energy gained (J)"},
          [](const Timeline &t, const Document &doc) {
              const int m = model_named(doc, "cube");
@@ -191,11 +208,13 @@ std::vector<RestScene> scenes() {
                  {"cube", 1.0, 0.25 / 6.0}};
              const double e0 = energy(t, doc, 0.0, models);
              return std::vector<double>{
-                 worst(nose, [&](double s) {
-                     return std::abs(t.evaluate(s).models[static_cast<size_t>(m)].center.x -
-                                     (0.3 + 4.0 * s - 0.5 * a * s * s));
-                 }),
-                 worst(6.0, [&](double s) { return std::max(0.0, energy(t, doc, s, models) - e0); })};
+                 worst(nose,
+                       [&](double s) {
+                           return std::abs(t.evaluate(s).models[static_cast<size_t>(m)].center.x -
+                                           (0.3 + 4.0 * s - 0.5 * a * s * s));
+                       }),
+                 worst(6.0,
+                       [&](double s) { return std::max(0.0, energy(t, doc, s, models) - e0); })};
          }},
     };
 }

@@ -632,34 +632,24 @@ std::optional<Contact> EventBake::predict_turning_pair(int i, int j, double now,
     const Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
     const TurningPath pb = turning_path(b, now), po = turning_path(o, now);
     // Broad phase: the centres cannot come nearer than they are by more than they travel.
-    const double travel = (glm::length(pb.v - po.v) + 0.5 * glm::length(pb.a - po.a) * limit) * limit;
+    const double travel =
+        (glm::length(pb.v - po.v) + 0.5 * glm::length(pb.a - po.a) * limit) * limit;
     if (glm::length(pb.c0 - po.c0) - b.turning_reach_now() - o.turning_reach_now() > travel)
         return std::nullopt;
     const TurningMesh mb = turning_mesh(b), mo = turning_mesh(o);
     constexpr double kSlack = 1e-9; // turning_contact.hpp's contact slack (m)
-    auto closing = [&](const TurningContact &c) {
-        const double at = now + c.t;
-        const double still = 1e-12 * std::max(1.0, point_speed(b, at, 0.0) + point_speed(o, at, 0.0));
-        std::vector<glm::dvec3> touching = c.points;
-        if (touching.empty()) touching.push_back(c.point);
-        for (const glm::dvec3 &p : touching)
-            if (glm::dot(point_velocity(b, p, at) - point_velocity(o, p, at), c.normal) < -still)
-                return true;
-        return false;
-    };
     double from = 0.0;
     TurningContact c;
     for (int tries = 0;; ++tries) {
         c = turning_mesh_contact(mb, pb, mo, po, from, limit);
         count_.mesh_tests += static_cast<std::size_t>(c.steps) + 1;
         if (c.found())
-            c.normal = separating_face_normal(mb, pb, mo, po, c.t,
-                                              kSlack + c.gap, c.normal);
+            c.normal = separating_face_normal(mb, pb, mo, po, c.t, kSlack + c.gap, c.normal);
         // The normal from o towards b: the side b's centre is on.
         if (c.found() && glm::dot(c.normal, pb.center(c.t) - c.point) <
                              glm::dot(c.normal, po.center(c.t) - c.point))
             c.normal = -c.normal;
-        if (!(c.found() && tries < 1000 && !closing(c))) break;
+        if (!(c.found() && tries < 1000 && !approaching(b, c, now + c.t, &o))) break;
         const double speed = point_speed(b, now + c.t, 1e-6) + point_speed(o, now + c.t, 1e-6);
         if (!(speed > 0.0)) return std::nullopt;
         from = c.t + std::min(1e-6, 0.5 * kSlack / speed);
@@ -685,13 +675,18 @@ void EventBake::outward(TurningContact &c, const TurningPath &path) {
     if (c.found() && glm::dot(c.normal, path.center(c.t) - c.point) < 0.0) c.normal = -c.normal;
 }
 
-// Whether any point of a contact found at `now` moves into the obstacle.
-bool EventBake::approaching(const Body &b, const TurningContact &c, double now) const {
-    const double still = 1e-12 * std::max(1.0, point_speed(b, now, 0.0));
+// Whether any point of a contact found at `now` moves into the obstacle (or into body `other`).
+bool EventBake::approaching(const Body &b, const TurningContact &c, double now,
+                            const Body *other) const {
+    const double still = 1e-12 * std::max(1.0, point_speed(b, now, 0.0) +
+                                                   (other ? point_speed(*other, now, 0.0) : 0.0));
     std::vector<glm::dvec3> points = c.points;
     if (points.empty()) points.push_back(c.point);
-    for (const glm::dvec3 &p : points)
-        if (glm::dot(point_velocity(b, p, now), c.normal) < -still) return true;
+    for (const glm::dvec3 &p : points) {
+        const glm::dvec3 v =
+            point_velocity(b, p, now) - (other ? point_velocity(*other, p, now) : glm::dvec3(0.0));
+        if (glm::dot(v, c.normal) < -still) return true;
+    }
     return false;
 }
 

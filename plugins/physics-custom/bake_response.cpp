@@ -75,9 +75,9 @@ void EventBake::collide_bodies(int i, int j, const Contact &contact,
             const int mover = b_held ? j : i, still = b_held ? i : j;
             Contact towards = contact;
             if (b_held) towards.normal = -n; // from the still one towards the mover
-            const ani_collision_event e = collision_event(
-                b.model, o.model, contact, t,
-                point_velocity(b, contact.point, t) - point_velocity(o, contact.point, t));
+            const ani_collision_event e = collision_event(b.model, o.model, contact, t,
+                                                          point_velocity(b, contact.point, t) -
+                                                              point_velocity(o, contact.point, t));
             respond_turning_to_held(mover, still, towards, points, t);
             after_contact(mover, t);
             report(e);
@@ -330,9 +330,8 @@ ImpulseBody EventBake::impulse_body(const Body &b, const glm::dvec3 &point, doub
 // point) with normal n towards b: one point's impulse, or several points' together at their
 // centre of pressure. `a` receives b as the impulse saw it, with its r at that point.
 ImpulseResult EventBake::turning_impulse_on_still(const Body &b, const Contact &contact,
-                                                  const std::vector<glm::dvec3> &points,
-                                                  double e, double mu, double t,
-                                                  ImpulseBody &a) const {
+                                                  const std::vector<glm::dvec3> &points, double e,
+                                                  double mu, double t, ImpulseBody &a) const {
     const glm::dvec3 n = contact.normal, c = b.path.at(t - b.t0);
     a = impulse_body(b, contact.point, t);
     const std::vector<glm::dvec3> offsets =

@@ -231,7 +231,7 @@ void EventBake::unsupport(Body &b, double t) {
 void EventBake::after_contact(int i, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
     if (b.on_body >= 0 && !b.still()) { // knocked off the body it slept on: its own
-        b.on_body = -1;                     // acceleration again (asleep, it had none)
+        b.on_body = -1;                 // acceleration again (asleep, it had none)
         --sleepers_;
         if (b.t0 != t) rebase(b, t);
         b.path.a = b.free_a;
@@ -448,7 +448,8 @@ bool EventBake::sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec
     const glm::dvec3 v = point_velocity(b, point, t);
     const double approach = std::max(0.0, -glm::dot(v, n));
     // (Nor while it slides across y: a box knocked over the one it slept on.)
-    const double slide = glm::length(b.path.velocity(t - b.t0) - glm::dot(b.path.velocity(t - b.t0), n) * n);
+    const double slide =
+        glm::length(b.path.velocity(t - b.t0) - glm::dot(b.path.velocity(t - b.t0), n) * n);
     if (approach * approach / (2.0 * g_n) > kZenoHeight * scale || slide > v_min ||
         glm::length(b.spin.rate(t)) * (b.sphere ? b.radius : b.turning_reach) > v_min)
         return false;
@@ -480,12 +481,11 @@ bool EventBake::held_by_support(const Body &b, const glm::dvec3 &push) const {
         b.on_body >= 0
             ? combined_friction(b.material.friction,
                                 bodies_[static_cast<size_t>(b.on_body)].material.friction)
-            : combined_friction(b.material.friction,
-                                material_of(*scene_->models[obstacles_[static_cast<size_t>(
-                                                                b.support)]
-                                                                .model]
-                                                 .desc)
-                                    .friction);
+            : combined_friction(
+                  b.material.friction,
+                  material_of(
+                      *scene_->models[obstacles_[static_cast<size_t>(b.support)].model].desc)
+                      .friction);
     // (A push straight into it, to rounding, is held by any support.)
     return across <= mu * into + 1e-12;
 }

@@ -376,7 +376,8 @@ class EventBake {
     std::optional<Contact> predict_turning_pair(int i, int j, double now, double limit,
                                                 std::vector<glm::dvec3> &points);
     static void outward(TurningContact &c, const TurningPath &path);
-    bool approaching(const Body &b, const TurningContact &c, double now) const;
+    bool approaching(const Body &b, const TurningContact &c, double now,
+                     const Body *other = nullptr) const;
 
     // Pairs that overlap when they start to collide (bake_overlaps.cpp).
     void find_overlaps(int i, double t);
@@ -403,8 +404,8 @@ class EventBake {
     void release(int i, double t);
     void collide_obstacle(int i, const Obstacle &o, const Contact &contact,
                           const std::vector<glm::dvec3> &points, double t);
-    void collide_bodies(int i, int j, const Contact &contact,
-                        const std::vector<glm::dvec3> &points, double t);
+    void collide_bodies(int i, int j, const Contact &contact, const std::vector<glm::dvec3> &points,
+                        double t);
     static ani_collision_event collision_event(uint32_t a, uint32_t b, const Contact &contact,
                                                double t, const glm::dvec3 &closing);
     bool sphere_responds(const Body &b, const ani_physics_model &other) const;

@@ -159,8 +159,8 @@ double turning_plane_step(const Moving &F, uint32_t x0_index, const TurningPath 
 }
 
 // turning_plane_step from the plane of F's triangle f, turned towards o.
-double turning_face_step(const Moving &F, const uint32_t *f, const TurningPath &pf,
-                         const Moving &O, const uint32_t *o, const TurningPath &po, double t) {
+double turning_face_step(const Moving &F, const uint32_t *f, const TurningPath &pf, const Moving &O,
+                         const uint32_t *o, const TurningPath &po, double t) {
     const glm::dvec3 x0 = F.x[f[0]];
     const glm::dvec3 n = glm::cross(F.x[f[1]] - x0, F.x[f[2]] - x0);
     const double len = glm::length(n);

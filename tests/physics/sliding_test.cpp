@@ -495,7 +495,7 @@ TEST_CASE("stairs_tumble.ani: the cube slides to the top step's nose, tips over 
             CAPTURE(t);
             CHECK(energy(*timeline, t) <= e0 + 1e-6);
             const glm::dvec3 c = timeline->evaluate(t).models[static_cast<size_t>(cube)].center;
-            CHECK(c.y >= s / 2 - 1e-6); // never in the floor
+            CHECK(c.y >= s / 2 - 1e-6);                              // never in the floor
             CHECK((c.x > -1.0 && c.x < 9.0 && std::abs(c.z) < 3.0)); // in view
         }
         // At rest on the floor beyond the stairs (x > 5), flat on a face: its centre s / 2 up,
@@ -509,7 +509,8 @@ TEST_CASE("stairs_tumble.ani: the cube slides to the top step's nose, tips over 
         CHECK(std::abs(p6.center.y - s / 2) < 1e-8);
         CHECK(p6.center.x > 5.0 + s / 2);
         const glm::dquat q = orientation_at(*timeline->rotation_at(cube, end), end);
-        const glm::dvec3 up = glm::conjugate(q) * glm::dvec3(0, 1, 0); // the world's up, in the cube
+        const glm::dvec3 up =
+            glm::conjugate(q) * glm::dvec3(0, 1, 0); // the world's up, in the cube
         const double largest = std::max({std::abs(up.x), std::abs(up.y), std::abs(up.z)});
         CHECK(largest > 1.0 - 1e-9);
         CHECK(energy(*timeline, end) < e0 - m * G * 2.5); // the height of the stairs, and more
