@@ -1,0 +1,46 @@
+# Issue 19's scenes as a user opens them in the editor, run in editor_e2e.py's namespace (its
+# helpers, Editor, Case...). One case_NAME per test (tests/editor/CMakeLists.txt).
+
+
+def red_die(img):
+    """The die's pixels in the 3D view (kd 0.9 0.3 0.2, lit or in shade): red well above green
+    and blue, unlike the wooden stairs (r > g > b, close together), the grey floor and the sky."""
+    return img.blob(lambda p: p[0] > 90 and p[0] > 2.2 * p[1] and p[0] > 2.2 * p[2], view_box(img))
+
+
+def case_stairs_tumble(c):
+    """assets/animations/stairs_tumble.ani opened as a user would: the editor bakes the die's
+    tumble down the stairs in its slices (physics.md: each slice goes on from where the last one
+    left the bodies) and says so, and playing it to the end shows the die come to rest on the
+    floor beyond the stairs, low and right of where it started on the top step, and still there:
+    two frames a second apart at the end are the same."""
+    with open(os.path.join(c.source, 'assets/animations/stairs_tumble.ani')) as f:
+        c.write('stairs_tumble.ani', f.read())
+    e = c.start('stairs_tumble.ani')
+    e.wait_baked()
+    check(re.search(r'^animator: physics\.custom: baked, 6 s$', e.stdout(), re.M),
+          'no "baked, 6 s" line in the log:\n' + e.stdout())
+    e.mouse_away()
+    start = e.screenshot('start')
+    n0, x0, y0, _ = red_die(start)
+    check(n0 > 100, 'the die is not on screen at the start (%d red pixels)' % n0)
+    e.key('space')  # settles once playback has stopped by itself at the end
+    check(re.search(r'^animator: played to the end, 6000 ms$', e.stdout(), re.M),
+          'playback did not say it ended:\n' + e.stdout())
+    e.mouse_away()
+    end = e.screenshot('end')
+    n1, x1, y1, _ = red_die(end)
+    c.log('die at the start: %d px at (%.0f, %.0f); at the end: %d px at (%.0f, %.0f)' %
+          (n0, x0, y0, n1, x1 or -1, y1 or -1))
+    check(n1 > 50, 'the die is not on screen at the end (%d red pixels)' % n1)
+    # Down the stairs (y grows downwards on screen) and along them (+x goes right).
+    check(y1 > y0 + 60, 'the die did not come down the stairs: y %.0f at the start, %.0f at the end' % (y0, y1))
+    check(x1 > x0 + 200, 'the die did not tumble along the stairs: x %.0f at the start, %.0f at the end' % (x0, x1))
+    # At rest: a second earlier it is where it ends, to the pixel.
+    e.set_time(5000)
+    e.mouse_away()
+    n2, x2, y2, _ = red_die(e.screenshot('a-second-before'))
+    check(n2 == n1 and abs(x2 - x1) < 0.5 and abs(y2 - y1) < 0.5,
+          'the die still moves in the last second: %d px at (%.1f, %.1f), then %d px at (%.1f, %.1f)' %
+          (n2, x2, y2, n1, x1, y1))
+    e.quit()
