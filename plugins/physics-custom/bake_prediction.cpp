@@ -6,6 +6,10 @@
 
 namespace physics_custom::bake {
 
+namespace {
+constexpr double kContactSlack = 1e-9; // turning_contact.hpp's contact slack (m)
+} // namespace
+
 // The nearest point of a mesh body (at pose p) to q.
 glm::dvec3 EventBake::nearest_on_mesh(const Body &b, const Pose &p, const glm::dvec3 &q) const {
     const ani_mesh_view &mesh = mesh_of(b);
@@ -543,10 +547,7 @@ TurningMesh EventBake::turning_mesh(const Body &b) const {
 }
 
 // A turning body against a static model: the first contact within [now, now + limit] at which
-// it moves into the obstacle. A contact found where every point within the contact slack
-// moves away (just after a bounce, as it leaves) is passed: the search goes on a step later,
-// a step in which no point can close the slack (at most 1,000 times; then the contact is
-// reported, and handle() leaves the pair alone until apart).
+// it moves into the obstacle (contact_moving_in).
 void EventBake::predict_turning_obstacle(int i, size_t o, double now, double limit,
                                          Predicted &next) {
     const Body &b = bodies_[static_cast<size_t>(i)];
@@ -591,22 +592,11 @@ void EventBake::predict_turning_obstacle(int i, size_t o, double now, double lim
                            !near.empty() ? near.size() / 3 : ob.shape->triangles.size(),
                            ob.shape->edges.data(),
                            ob.shape->edges.size()};
-    constexpr double kSlack = 1e-9; // turning_contact.hpp's contact slack (m)
-    double from = 0.0;
-    TurningContact c;
-    for (int tries = 0;; ++tries) {
-        c = turning_mesh_contact(mesh, path, soup, TurningPath{}, from, window);
-        count_.mesh_tests += static_cast<std::size_t>(c.steps) + 1;
-        outward(c, path);
-        if (!(c.found() && tries < 1000 && !approaching(b, c, now + c.t))) break;
-        const double speed = point_speed(b, now + c.t, 1e-6);
-        if (!(speed > 0.0)) return;                        // nothing moves: nothing to meet
-        from = c.t + std::min(1e-6, 0.5 * kSlack / speed); // the bound holds for 1e-6 s
-        if (from >= window) {
-            c.kind = TurningContact::kNone;
-            break;
-        }
-    }
+    const std::optional<TurningContact> moving_in =
+        contact_moving_in(b, mesh, path, nullptr, soup, TurningPath{}, now, window,
+                          [&](TurningContact &c) { outward(c, path); });
+    if (!moving_in) return; // nothing moves: nothing to meet
+    const TurningContact &c = *moving_in;
     if (c.kind == TurningContact::kInvalid)
         throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
                                                name_of(scene_->models[b.model]) +
@@ -622,11 +612,40 @@ void EventBake::predict_turning_obstacle(int i, size_t o, double now, double lim
     next.points = c.found() ? c.points : std::vector<glm::dvec3>{};
 }
 
+// The first contact of turning body b (mesh mb on path pb) with body o (or, o null, a static
+// model: mesh mo on a still path) within [now, now + window] at which a point moves in: one found
+// where every point within the contact slack moves away or along (just after a bounce, as it
+// leaves, or sliding over it) is passed, the search going on a step later in which no point can
+// close the slack (at most 1,000 times; then the contact is reported, and handle() leaves the pair
+// alone until apart). `orient` turns each contact's normal from o towards b. A contact of kind
+// kNone when none is found; none at all when nothing moves at a contact passed.
+std::optional<TurningContact>
+EventBake::contact_moving_in(const Body &b, const TurningMesh &mb, const TurningPath &pb,
+                             const Body *o, const TurningMesh &mo, const TurningPath &po,
+                             double now, double window,
+                             const std::function<void(TurningContact &)> &orient) {
+    double from = 0.0;
+    TurningContact c;
+    for (int tries = 0;; ++tries) {
+        c = turning_mesh_contact(mb, pb, mo, po, from, window);
+        count_.mesh_tests += static_cast<std::size_t>(c.steps) + 1;
+        orient(c);
+        if (!(c.found() && tries < 1000 && !approaching(b, c, now + c.t, o))) return c;
+        const double speed =
+            point_speed(b, now + c.t, 1e-6) + (o ? point_speed(*o, now + c.t, 1e-6) : 0.0);
+        if (!(speed > 0.0)) return std::nullopt;
+        from = c.t + std::min(1e-6, 0.5 * kContactSlack / speed); // the bound holds for 1e-6 s
+        if (from >= window) {
+            c.kind = TurningContact::kNone;
+            return c;
+        }
+    }
+}
+
 // Two turning bodies (a box knocked across the one it slept on, two tumbling dice): their first
 // contact within [now, now + limit] at which they move into each other, by the certified
 // advancement of turning_contact.hpp, as a turning body meets a static model
-// (predict_turning_obstacle): a contact found as they part or slide along each other is passed,
-// the search going on a step later in which no point can close the contact slack.
+// (predict_turning_obstacle).
 std::optional<Contact> EventBake::predict_turning_pair(int i, int j, double now, double limit,
                                                        std::vector<glm::dvec3> &points) {
     const Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
@@ -637,24 +656,17 @@ std::optional<Contact> EventBake::predict_turning_pair(int i, int j, double now,
     if (glm::length(pb.c0 - po.c0) - b.turning_reach_now() - o.turning_reach_now() > travel)
         return std::nullopt;
     const TurningMesh mb = turning_mesh(b), mo = turning_mesh(o);
-    constexpr double kSlack = 1e-9; // turning_contact.hpp's contact slack (m)
-    double from = 0.0;
-    TurningContact c;
-    for (int tries = 0;; ++tries) {
-        c = turning_mesh_contact(mb, pb, mo, po, from, limit);
-        count_.mesh_tests += static_cast<std::size_t>(c.steps) + 1;
-        if (c.found())
-            c.normal = separating_face_normal(mb, pb, mo, po, c.t, kSlack + c.gap, c.normal);
-        // The normal from o towards b: the side b's centre is on.
-        if (c.found() && glm::dot(c.normal, pb.center(c.t) - c.point) <
-                             glm::dot(c.normal, po.center(c.t) - c.point))
-            c.normal = -c.normal;
-        if (!(c.found() && tries < 1000 && !approaching(b, c, now + c.t, &o))) break;
-        const double speed = point_speed(b, now + c.t, 1e-6) + point_speed(o, now + c.t, 1e-6);
-        if (!(speed > 0.0)) return std::nullopt;
-        from = c.t + std::min(1e-6, 0.5 * kSlack / speed);
-        if (from >= limit) return std::nullopt;
-    }
+    const std::optional<TurningContact> moving_in =
+        contact_moving_in(b, mb, pb, &o, mo, po, now, limit, [&](TurningContact &c) {
+            if (!c.found()) return;
+            c.normal = separating_face_normal(mb, pb, mo, po, c.t, kContactSlack + c.gap, c.normal);
+            // The normal from o towards b: the side b's centre is on.
+            if (glm::dot(c.normal, pb.center(c.t) - c.point) <
+                glm::dot(c.normal, po.center(c.t) - c.point))
+                c.normal = -c.normal;
+        });
+    if (!moving_in) return std::nullopt;
+    const TurningContact &c = *moving_in;
     if (c.kind == TurningContact::kInvalid)
         throw ani::Failure(ANI_ERR_FAILED, std::string("models '") +
                                                name_of(scene_->models[b.model]) + "' and '" +

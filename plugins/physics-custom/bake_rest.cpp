@@ -445,11 +445,10 @@ bool EventBake::sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec
     const glm::dvec3 c = b.path.at(t - b.t0);
     const double scale = std::max(1.0, glm::length(c));
     const double v_min = std::sqrt(2.0 * g_n * kZenoHeight * scale);
-    const glm::dvec3 v = point_velocity(b, point, t);
-    const double approach = std::max(0.0, -glm::dot(v, n));
+    const double approach = std::max(0.0, -glm::dot(point_velocity(b, point, t), n));
     // (Nor while it slides across y: a box knocked over the one it slept on.)
-    const double slide =
-        glm::length(b.path.velocity(t - b.t0) - glm::dot(b.path.velocity(t - b.t0), n) * n);
+    const glm::dvec3 v = b.path.velocity(t - b.t0);
+    const double slide = glm::length(v - glm::dot(v, n) * n);
     if (approach * approach / (2.0 * g_n) > kZenoHeight * scale || slide > v_min ||
         glm::length(b.spin.rate(t)) * (b.sphere ? b.radius : b.turning_reach) > v_min)
         return false;

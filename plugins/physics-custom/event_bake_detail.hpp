@@ -35,6 +35,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -373,6 +374,10 @@ class EventBake {
     TurningPath turning_path(const Body &b, double now) const;
     TurningMesh turning_mesh(const Body &b) const;
     void predict_turning_obstacle(int i, size_t o, double now, double limit, Predicted &next);
+    std::optional<TurningContact>
+    contact_moving_in(const Body &b, const TurningMesh &mb, const TurningPath &pb, const Body *o,
+                      const TurningMesh &mo, const TurningPath &po, double now, double window,
+                      const std::function<void(TurningContact &)> &orient);
     std::optional<Contact> predict_turning_pair(int i, int j, double now, double limit,
                                                 std::vector<glm::dvec3> &points);
     static void outward(TurningContact &c, const TurningPath &path);
