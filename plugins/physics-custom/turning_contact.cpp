@@ -106,6 +106,23 @@ double plane_taylor_step(const TurningMesh &mesh, const TurningPath &path, const
     return step;
 }
 
+// Of the unit directions c / |c| and -c / |c|, the one along which `apart` (how far two shapes
+// are apart along a unit direction) is largest, kept in best when larger than widest. A zero c
+// offers nothing.
+template <class Apart>
+void offer_direction(const glm::dvec3 &c, const Apart &apart, double &widest, glm::dvec3 &best) {
+    const double len = glm::length(c);
+    if (!(len > 0.0)) return;
+    for (double sign : {1.0, -1.0}) {
+        const glm::dvec3 m = c * (sign / len);
+        const double d = apart(m);
+        if (d > widest) {
+            widest = d;
+            best = m;
+        }
+    }
+}
+
 // The bounds of a path's turn over all time: |w| <= spin, |w'| <= spin_rate.
 void turn_bounds(const TurningPath &path, double &spin, double &spin_rate) {
     spin = path.turn ? path.w_bound : glm::length(path.w);
@@ -218,18 +235,7 @@ double pair_step(const Moving &A, const uint32_t *ta, const TurningPath &pa_path
                                       glm::cross(b[1] - b[0], b[2] - b[0]), edge_cross};
     glm::dvec3 n(0.0);
     double slab = -kInf;
-    for (const glm::dvec3 &c : candidates) {
-        const double len = glm::length(c);
-        if (!(len > 0.0)) continue;
-        for (double sign : {1.0, -1.0}) {
-            const glm::dvec3 m = c * (sign / len);
-            const double across = slab_along(m);
-            if (across > slab) {
-                slab = across;
-                n = m;
-            }
-        }
-    }
+    for (const glm::dvec3 &c : candidates) offer_direction(c, slab_along, slab, n);
     if (normal) *normal = n;
     if (!(d > 0.0) || !(slab > 0.0)) return 0.0;
     const double turn_a = pa_path.turn_across(n), turn_b = pb_path.turn_across(n);
@@ -528,17 +534,8 @@ glm::dvec3 separating_face_normal(const TurningMesh &a, const TurningPath &path_
         const std::vector<glm::dvec3> &v = side == 0 ? va : vb;
         for (std::size_t k = 0; k < m.triangle_count; ++k) {
             const uint32_t *tri = m.triangles + 3 * k;
-            const glm::dvec3 f = glm::cross(v[tri[1]] - v[tri[0]], v[tri[2]] - v[tri[0]]);
-            const double len = glm::length(f);
-            if (!(len > 0.0)) continue;
-            for (double sign : {1.0, -1.0}) {
-                const glm::dvec3 n = f * (sign / len);
-                const double d = apart(n);
-                if (d > widest) {
-                    widest = d;
-                    best = n;
-                }
-            }
+            offer_direction(glm::cross(v[tri[1]] - v[tri[0]], v[tri[2]] - v[tri[0]]), apart, widest,
+                            best);
         }
     }
     return best;
