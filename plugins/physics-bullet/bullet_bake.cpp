@@ -1296,7 +1296,7 @@ class Bake {
         struct Hit {
             double t;
             ani_collision_event event;
-            bool fresh;
+            bool fresh, strikes;
             Body *bodies[2];
         };
         std::vector<Hit> hits;
@@ -1345,6 +1345,9 @@ class Bake {
             e.normal = ani(n);
             e.point = ani(touch.point);
             e.speed = speed;
+            // A keyed body is released by a collision, not by a model resting or sliding on it
+            // (a box on a keyed platform), which meets it by about G dt at each step.
+            hit.strikes = speed > 2.0 * glm::length(gravity_) * dt_;
             if (hit.fresh || speed > 0.0) hits.push_back(hit);
         }
         contacts_ = std::move(in_contact);
@@ -1356,6 +1359,7 @@ class Bake {
             for (Body *b : hit.bodies) {
                 if (!b || handled.count(b)) continue;
                 if (b->mode == Mode::kKeyed) {
+                    if (!hit.strikes) continue;
                     pending.push_back({b, true, hit.t});
                     handled.insert(b);
                 } else if (b->mode == Mode::kFalling) {

@@ -154,6 +154,20 @@ void EventBake::add_obstacle(uint32_t i, double t) {
         const double *p = mesh.positions + 3 * static_cast<size_t>(mesh.triangles[k]);
         o.corners.push_back(vec(state.center) + linear * glm::dvec3(p[0], p[1], p[2]));
     }
+    finish_obstacle(o);
+    if (!o.boxes.empty() && std::all_of(o.normals.begin(), o.normals.end(),
+                                        [](const glm::dvec3 &n) { return n == glm::dvec3(0.0); }))
+        throw ani::Failure(ANI_ERR_INVALID_ARGUMENT,
+                           std::string("model '") + name_of(scene_->models[i]) +
+                               "' has a mesh without area (every triangle is degenerate)");
+    o.shape = build_shape(i, state.center, linear, glm::dvec3(0.0));
+    triangle_count_ += o.boxes.size();
+    obstacles_.push_back(std::move(o));
+}
+
+// An obstacle's triangles from its corners (3 per triangle, world space): their boxes, unit
+// normals and planes, and its bounding sphere.
+void EventBake::finish_obstacle(Obstacle &o) {
     for (size_t k = 0; k + 2 < o.corners.size(); k += 3) {
         Box box{o.corners[k], o.corners[k]};
         for (size_t j = 1; j < 3; ++j) {
@@ -166,18 +180,10 @@ void EventBake::add_obstacle(uint32_t i, double t) {
         o.normals.push_back(glm::length(n) > 0.0 ? glm::normalize(n) : glm::dvec3(0.0));
         o.offsets.push_back(glm::dot(o.normals.back(), o.corners[k]));
     }
-    if (!o.boxes.empty() && std::all_of(o.normals.begin(), o.normals.end(),
-                                        [](const glm::dvec3 &n) { return n == glm::dvec3(0.0); }))
-        throw ani::Failure(ANI_ERR_INVALID_ARGUMENT,
-                           std::string("model '") + name_of(scene_->models[i]) +
-                               "' has a mesh without area (every triangle is degenerate)");
     glm::dvec3 sum(0.0);
     for (const auto &c : o.corners) sum += c;
     o.center = o.corners.empty() ? glm::dvec3(0.0) : sum / static_cast<double>(o.corners.size());
     for (const auto &c : o.corners) o.radius = std::max(o.radius, glm::length(c - o.center));
-    o.shape = build_shape(i, state.center, linear, glm::dvec3(0.0));
-    triangle_count_ += o.boxes.size();
-    obstacles_.push_back(std::move(o));
 }
 
 // Model i's triangles as a MeshShape: model-space vertices turned and scaled by `linear`,
@@ -307,7 +313,7 @@ void EventBake::restart(Body &b, double t, const glm::dvec3 &velocity, bool stop
     b.t0 = t;
     b.path = stop ? Path{p, glm::dvec3(0.0), glm::dvec3(0.0)} : Path{p, velocity, b.path.a};
     b.motion = stop ? ANI_MOTION_REST : ANI_MOTION_FREE;
-    if (b.support >= 0 && !stop) aim_friction(b); // on its support: friction against it now
+    if (b.supported() && !stop) aim_friction(b); // on its support: friction against it now
     b.settles_at = kNever;
     ++b.version;
 }

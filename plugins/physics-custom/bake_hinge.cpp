@@ -40,7 +40,7 @@ bool EventBake::on_flat_region(const Obstacle &o, const glm::dvec3 &n, double d,
 bool EventBake::try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v,
                           const glm::dvec3 &w, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
-    if (!b.turning() || b.hinge || !b.dynamics || b.support >= 0) return false;
+    if (!b.turning() || b.hinge || !b.dynamics || b.supported()) return false;
     const glm::dvec3 g = b.free_a;
     const double gl = glm::length(g);
     if (!(gl > 0.0) || !(glm::dot(g, n) < 0.0)) return false;

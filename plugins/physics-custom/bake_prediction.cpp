@@ -244,6 +244,7 @@ void EventBake::predict(int i, double now) {
         return;
     }
     double limit = std::min(horizon_, next.t) - now;
+    predict_carrier(i, now, limit, next);
     predict_friction(i, now, limit, next);
     if (b.in_grid)
         if (auto exit = first_exit(from_now(b, now), grid_->bounds(b.cell), limit)) {
@@ -255,6 +256,7 @@ void EventBake::predict(int i, double now) {
     for_candidates(i, [&](int j) {
         const Body &o = bodies_[static_cast<size_t>(j)];
         if (!o.active) return;
+        if (riders_ > 0 && carries(i, j)) return; // held on its face: they move together
         if (!is_ignored(i, j)) {
             ++tested;
             std::optional<Contact> c;
@@ -280,7 +282,7 @@ void EventBake::predict(int i, double now) {
     });
     count_.done += tested;
     count_.skipped += (bodies_.size() - 1) - tested;
-    if (b.support >= 0) predict_leave(i, now, limit, next);
+    if (b.supported()) predict_leave(i, now, limit, next);
     if (b.shape)
         predict_mesh_obstacles(i, now, limit, next); // exact: it translates
     else
@@ -538,12 +540,8 @@ TurningPath EventBake::turning_path(const Body &b, double now) const {
 TurningMesh EventBake::turning_mesh(const Body &b) const {
     const ani_mesh_view &mesh = mesh_of(b);
     const std::vector<glm::dvec3> &vertices = b.hinge ? b.hinge->vertices : b.turning_vertices;
-    return {vertices.data(),
-            vertices.size(),
-            mesh.triangles,
-            mesh.triangle_count,
-            b.edges.data(),
-            b.edges.size()};
+    return {vertices.data(),     vertices.size(), mesh.triangles,
+            mesh.triangle_count, b.edges.data(),  b.edges.size()};
 }
 
 // A turning body against a static model: the first contact within [now, now + limit] at which

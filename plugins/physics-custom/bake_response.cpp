@@ -137,6 +137,9 @@ void EventBake::collide_bodies(int i, int j, const Contact &contact,
             restart(o, t, o.dynamics ? reflect_off_moving_wall(vo, v, -n) : glm::dvec3(0.0),
                     !o.dynamics);
     }
+    // Off a carrier (a keyed platform, released by the blow and standing still): the Zeno rule
+    // puts the model on it once its bounces are too small to follow (bake_carrier.cpp).
+    if (!settle_on_carrier(i, j, n, t)) settle_on_carrier(j, i, -n, t);
     after_contact(i, t);
     after_contact(j, t);
     report(e);

@@ -9,7 +9,8 @@ namespace physics_custom::bake {
 
 // Whether triangle k of the obstacle lies in the plane n . x = d (to rounding).
 bool EventBake::in_plane(const Obstacle &o, size_t k, const glm::dvec3 &n, double d) {
-    return glm::dot(o.normals[k], n) > 1.0 - 1e-9 && std::abs(o.offsets[k] - d) <= 1e-9 * (1.0 + std::abs(d));
+    return glm::dot(o.normals[k], n) > 1.0 - 1e-9 &&
+           std::abs(o.offsets[k] - d) <= 1e-9 * (1.0 + std::abs(d));
 }
 
 bool EventBake::in_support_plane(const Body &b, const Obstacle &o, size_t k) {
@@ -23,7 +24,7 @@ bool EventBake::in_support_plane(const Body &b, const Obstacle &o, size_t k) {
 // zero speed at every instant.
 bool EventBake::try_settle(int i, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
-    if (!b.free_sphere() || b.support >= 0 || b.motion == ANI_MOTION_REST) return false;
+    if (!b.free_sphere() || b.supported() || b.motion == ANI_MOTION_REST) return false;
     const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
     const double tol = touching(b);
     for (size_t o = 0; o < obstacles_.size(); ++o) {
@@ -60,7 +61,7 @@ bool EventBake::try_settle(int i, double t) {
             held.motion = ANI_MOTION_FREE;
             ++held.version;
             b = std::move(held);
-            hold_on(b, static_cast<int>(o), n);
+            hold_on(b, material_of(*scene_->models[ob.model].desc), n);
             return true;
         }
     }
@@ -70,23 +71,37 @@ bool EventBake::try_settle(int i, double t) {
 // A free model that is not a sphere, meeting a face of a static model with no speed along its
 // normal and pulled into it, rests or slides on the flat region of that face's plane.
 bool EventBake::settle_on(int i, int o, const glm::dvec3 &n, double t) {
+    Holder holder;
+    holder.obstacle = o;
+    return settle_on_face(i, obstacles_[static_cast<size_t>(o)], holder, n, t);
+}
+
+// The same on the faces `ob` of what holds it: a static model, or a carrier (try_ride), against
+// which it moves at its velocity less the holder's.
+bool EventBake::settle_on_face(int i, const Obstacle &ob, const Holder &holder, const glm::dvec3 &n,
+                               double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
     // (A turning model settles only while it does not turn.)
-    if (!(b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))) || b.support >= 0 ||
+    if (!(b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))) || b.supported() ||
         b.motion == ANI_MOTION_REST || !(glm::dot(b.free_a, n) < 0.0))
         return false;
-    const Obstacle &ob = obstacles_[static_cast<size_t>(o)];
     const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
     // Where its tests against the obstacle place it: moved out by its depth while it
     // overlaps it (held at that depth).
-    const glm::dvec3 placed_c = c + shift_against(i, o);
+    const glm::dvec3 placed_c = holder.obstacle >= 0 ? c + shift_against(i, holder.obstacle) : c;
     // The face: one of the obstacle's, in the plane through the contact with normal n.
     int face = -1;
     for (size_t k = 0; k < ob.normals.size() && face < 0; ++k)
         if (glm::dot(ob.normals[k], n) > 1.0 - 1e-9) face = static_cast<int>(k);
     if (face < 0) return false;
     Body held = b;
-    held.support = o;
+    held.support = holder.obstacle;
+    held.carrier = holder.carrier;
+    held.support_v = holder.velocity;
+    held.support_t = t;
+    held.carrier_until = holder.until;
+    if (holder.carrier >= 0)
+        held.carrier_version = bodies_[static_cast<size_t>(holder.carrier)].version;
     held.support_n = n;
     // Of the faces facing that way, the plane the body touches: the nearest below its center.
     double best = kNever;
@@ -132,7 +147,8 @@ bool EventBake::settle_on(int i, int o, const glm::dvec3 &n, double t) {
     held.motion = ANI_MOTION_FREE;
     ++held.version;
     b = std::move(held);
-    hold_on(b, o, n);
+    if (b.carrier >= 0) ++riders_;
+    hold_on(b, material_of(*scene_->models[ob.model].desc), n);
     return true;
 }
 
@@ -181,7 +197,10 @@ std::vector<std::array<glm::dvec3, 3>> EventBake::support_boundary(const Obstacl
 // the normal), or every corner of a model that cannot turn (it tips over nothing: it is held
 // until it is wholly past the rim).
 std::optional<double> EventBake::leaves_support(const Body &b, double now, double limit) const {
-    const Path c = from_now(b, now);
+    // Relative to the support, whose edges were at support_edges at support_t.
+    Path c = from_now(b, now);
+    c.p -= b.support_v * (now - b.support_t);
+    c.v -= b.support_v;
     std::optional<double> last;
     for (const glm::dvec3 &foot : b.support_feet) {
         const Path p{c.p + foot, c.v, c.a};
@@ -210,12 +229,16 @@ void EventBake::predict_leave(int i, double now, double limit, Predicted &next) 
 
 // Nothing holds it up any more: its own acceleration again.
 void EventBake::unsupport(Body &b, double t) {
-    if (b.support < 0) return;
+    if (!b.supported()) return;
     const glm::dvec3 v = b.path.velocity(t - b.t0);
     close_segment(b, t);
     b.path = Path{b.path.at(t - b.t0), v, b.free_a};
     b.t0 = t;
     b.support = -1;
+    if (b.carrier >= 0) --riders_;
+    b.carrier = -1;
+    b.carrier_until = kNever;
+    b.support_v = glm::dvec3(0.0);
     b.rub = 0.0;
     b.reaim_at = kNever;
     b.rolling = false;
@@ -237,8 +260,8 @@ void EventBake::after_contact(int i, double t) {
         b.path.a = b.free_a;
         ++b.version;
     }
-    if (b.support >= 0) {
-        const glm::dvec3 v = b.path.velocity(t - b.t0);
+    if (b.supported()) {
+        const glm::dvec3 v = b.path.velocity(t - b.t0) - b.support_v;
         if (std::abs(glm::dot(v, b.support_n)) > 1e-9 * std::max(1.0, glm::length(v)))
             unsupport(b, t);
         else { // its new velocity and spin on the support, from here
@@ -270,7 +293,7 @@ std::optional<glm::dvec3> EventBake::standing_point(const std::vector<glm::dvec3
 // turning, rests or slides there from the start: settle_on, as if it had landed there.
 bool EventBake::try_settle_mesh(int i, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
-    if (b.sphere || !b.active || b.keyed() || b.support >= 0 || b.motion == ANI_MOTION_REST ||
+    if (b.sphere || !b.active || b.keyed() || b.supported() || b.motion == ANI_MOTION_REST ||
         !(b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))))
         return false;
     const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
@@ -299,7 +322,7 @@ bool EventBake::try_settle_mesh(int i, double t) {
             if (settle_on(i, static_cast<int>(o), n, t)) return true;
         }
     }
-    return false;
+    return try_ride(i, t);
 }
 
 // ---- sliding, skidding and rolling with Coulomb friction ---------------------------------
@@ -307,9 +330,8 @@ bool EventBake::try_settle_mesh(int i, double t) {
 // A body put on the support o with normal n: friction there acts with at most mu g_n per unit
 // mass, the pair's mu (the higher of the two) times the part of its acceleration into the face,
 // and its path on the face starts with that (aim_friction).
-void EventBake::hold_on(Body &b, int o, const glm::dvec3 &n) {
-    const Material mo = material_of(*scene_->models[obstacles_[static_cast<size_t>(o)].model].desc);
-    const double mu = combined_friction(b.material.friction, mo.friction);
+void EventBake::hold_on(Body &b, const Material &support, const glm::dvec3 &n) {
+    const double mu = combined_friction(b.material.friction, support.friction);
     b.rub = mu * std::max(0.0, -glm::dot(b.free_a, n));
     aim_friction(b);
 }
@@ -328,8 +350,10 @@ void EventBake::hold_on(Body &b, int o, const glm::dvec3 &n) {
 //    that is at most rub (it rolls down a slope at 5/7 a_t), else it skids along a_t.
 void EventBake::aim_friction(Body &b, bool rolls) {
     constexpr double kAimTurn = 1e-3; // radians
+    // (On a carrier: its velocity relative to the carrier, whose frame is inertial.)
+    const glm::dvec3 v_rel = b.path.v - b.support_v;
     const glm::dvec3 n = b.support_n, a_t = b.free_a - glm::dot(b.free_a, n) * n,
-                     v = b.path.v - glm::dot(b.path.v, n) * n;
+                     v = v_rel - glm::dot(v_rel, n) * n;
     const bool ball = b.sphere && b.spin.on;
     const double r = b.radius;
     b.reaim_at = kNever;
@@ -353,7 +377,7 @@ void EventBake::aim_friction(Body &b, bool rolls) {
         if (!holds && !rolls && glm::length(across) > 1e-12 * pull &&
             b.t0 + kAimTurn * slip / glm::length(across) == b.t0) {
             holds = true;
-            if (!ball) b.path.v = glm::dvec3(0.0);
+            if (!ball) b.path.v = b.support_v;
         }
         if (rolls || holds) {
             // (Static friction needs (2/7) |a_t| for a ball to roll, all of |a_t| for a model
@@ -390,9 +414,9 @@ void EventBake::aim_friction(Body &b, bool rolls) {
 // starts rolling) where it reaches 0 along a line against it, or friction is aimed again.
 void EventBake::predict_friction(int i, double now, double &limit, Predicted &next) const {
     const Body &b = bodies_[static_cast<size_t>(i)];
-    if (b.support < 0 || b.rub == 0.0 || b.rolling) return;
+    if (!b.supported() || b.rub == 0.0 || b.rolling) return;
     const Path p = from_now(b, now);
-    glm::dvec3 u = p.v, rate = p.a;
+    glm::dvec3 u = p.v - b.support_v, rate = p.a;
     if (b.sphere && b.spin.on) {
         u -= b.radius * glm::cross(b.spin.rate(now), b.support_n);
         rate -= b.radius * glm::cross(b.spin.alpha, b.support_n);
@@ -420,7 +444,7 @@ void EventBake::friction_changes(Body &b, double now, bool stops) {
     const bool ball = b.sphere && b.spin.on;
     close_segment(b, now);
     b.t0 = now;
-    b.path = Path{p, stops && !ball ? glm::dvec3(0.0) : v, b.path.a};
+    b.path = Path{p, stops && !ball ? b.support_v : v, b.path.a};
     aim_friction(b, stops && ball);
     ++b.version;
 }
@@ -437,7 +461,7 @@ bool EventBake::sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec
                               double t) {
     Body &b = bodies_[static_cast<size_t>(x)];
     const Body &under = bodies_[static_cast<size_t>(y)];
-    if (!(b.turning() || b.free_sphere()) || b.keyed() || !b.dynamics || b.support >= 0 ||
+    if (!(b.turning() || b.free_sphere()) || b.keyed() || !b.dynamics || b.supported() ||
         b.on_body >= 0 || !resting(under))
         return false;
     const double g_n = -glm::dot(b.free_a, n);

@@ -188,6 +188,9 @@ void EventBake::handle(int i, const Predicted &event, double now) {
         break;
     case EventKind::kHinge: // unhinged above
         break;
+    case EventKind::kCarrier: // its carrier's next key
+        recarry(i, now);
+        break;
     case EventKind::kSettle: // the Zeno bounces' accumulation time: resting from here
         rebase(b, now);
         b.settles_at = kNever;
@@ -196,6 +199,10 @@ void EventBake::handle(int i, const Predicted &event, double now) {
     if (sleepers_ > 0) { // the bodies asleep on one that moved wake
         wake_riders(i, now);
         if (event.kind == EventKind::kBody) wake_riders(event.other, now);
+    }
+    if (riders_ > 0) { // the bodies on a carrier whose motion changed follow it
+        carry_on(i, now);
+        if (event.kind == EventKind::kBody) carry_on(event.other, now);
     }
     predict(i, now);
 }

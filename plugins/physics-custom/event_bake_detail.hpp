@@ -121,6 +121,15 @@ struct Body {
     // Asleep on another body that rests (a box on a box of a stack): that body. It is still
     // until that body moves (bake_rest.cpp, "resting on other models").
     int on_body = -1;
+    // Resting or sliding on a face of another body that translates at a constant velocity (a
+    // keyed platform, between two of its keys; bake_carrier.cpp): that body (support stays -1),
+    // its version then, and until when it keeps that velocity. support_v is the velocity of
+    // the support (0 for a static model); support_edges are where they were at support_t.
+    int carrier = -1;
+    uint64_t carrier_version = 0;
+    double carrier_until = kNever;
+    glm::dvec3 support_v{0.0};
+    double support_t = 0.0;
     std::vector<std::array<glm::dvec3, 3>> support_edges;
     // Where it touches the support, relative to its center: a sphere's lowest point, or the
     // vertices of a mesh in the support's plane. It leaves the support when all have left it.
@@ -149,6 +158,8 @@ struct Body {
     std::shared_ptr<const Hinge> hinge;
 
     bool keyed() const { return mode == Mode::kKeyed; }
+    // Held up by a face: of a static model, or of a carrier.
+    bool supported() const { return support >= 0 || carrier >= 0; }
     bool free_sphere() const { return sphere && mode == Mode::kFree; }
     // Turning from its contacts now (free after its last key): its pose is its spin's.
     bool turning() const { return turns && spin.on; }
@@ -195,7 +206,8 @@ enum class EventKind {
     kLeave,
     kSettle,
     kFriction, // sliding on its support: it stops, or its friction is aimed again
-    kHinge     // tipping over an edge, the contact forces it needs fail: it turns freely
+    kHinge,    // tipping over an edge, the contact forces it needs fail: it turns freely
+    kCarrier   // the body it rides changes its velocity (its next key): friction against that
 };
 struct Predicted {
     double t = kNever;
@@ -295,6 +307,7 @@ class EventBake {
     double next_key(uint32_t i, double t) const;
     std::optional<double> sphere_radius(uint32_t i, double t);
     void add_obstacle(uint32_t i, double t);
+    static void finish_obstacle(Obstacle &o);
     std::shared_ptr<const MeshShape> build_shape(uint32_t i, const ani_vec3 &center,
                                                  const glm::dmat3 &linear,
                                                  const glm::dvec3 &origin) const;
@@ -444,6 +457,15 @@ class EventBake {
     static bool in_support_plane(const Body &b, const Obstacle &o, size_t k);
     bool try_settle(int i, double t);
     bool settle_on(int i, int o, const glm::dvec3 &n, double t);
+    // What holds a body up when it settles: a static model (`obstacle`), or a carrier moving at
+    // `velocity` until `until`.
+    struct Holder {
+        int obstacle = -1, carrier = -1;
+        glm::dvec3 velocity{0.0};
+        double until = kNever;
+    };
+    bool settle_on_face(int i, const Obstacle &ob, const Holder &holder, const glm::dvec3 &n,
+                        double t);
     static std::vector<std::array<glm::dvec3, 3>> support_boundary(const Obstacle &o,
                                                                    const Body &b);
     std::optional<double> leaves_support(const Body &b, double now, double limit) const;
@@ -455,7 +477,7 @@ class EventBake {
                                                     const glm::dvec3 &p0, const glm::dvec3 &p1,
                                                     const glm::dvec3 &p2, const glm::dvec3 &n,
                                                     double d, double slack);
-    void hold_on(Body &b, int o, const glm::dvec3 &n);
+    void hold_on(Body &b, const Material &support, const glm::dvec3 &n);
     void aim_friction(Body &b, bool rolls = false);
     void predict_friction(int i, double now, double &limit, Predicted &next) const;
     void friction_changes(Body &b, double now, bool stops);
@@ -466,6 +488,23 @@ class EventBake {
     bool sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec3 &point, double t);
     void wake_riders(int j, double t);
     void settle_stacks(double t);
+
+    // Riding a body that translates at a constant velocity: a keyed platform (bake_carrier.cpp).
+    struct Carried {
+        glm::dvec3 velocity{0.0};
+        double until = kNever;
+    };
+    std::optional<Carried> carried_motion(int j, double t);
+    Obstacle face_of(const Body &b, double t) const;
+    bool try_ride(int i, double t);
+    bool settle_on_carrier(int x, int y, const glm::dvec3 &n, double t);
+    void predict_carrier(int i, double now, double &limit, Predicted &next) const;
+    void recarry(int i, double t);
+    void carry_on(int j, double t);
+    bool carries(int i, int j) const {
+        return bodies_[static_cast<size_t>(i)].carrier == j ||
+               bodies_[static_cast<size_t>(j)].carrier == i;
+    }
 
     // The data, shared by every stage.
     const ani_physics_scene *scene_; // this call's (the host builds it anew for each)
@@ -490,15 +529,15 @@ class EventBake {
     OverlapMemory &memory_;                  // overlaps found by the earlier slices of the bake
     struct {
         std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0,
-                    collisions = 0, advancements = 0, releases = 0, mesh_tests = 0,
-                    hinges = 0;
+                    collisions = 0, advancements = 0, releases = 0, mesh_tests = 0, hinges = 0;
     } count_;
     std::size_t reports_ = 0;
-    std::size_t sleepers_ = 0;        // bodies asleep on others
+    std::size_t sleepers_ = 0;         // bodies asleep on others
+    std::size_t riders_ = 0;           // bodies on carriers
     std::array<double, 10> counted_{}; // the counts reported by the earlier slices
-    std::vector<bool> is_body_;       // per model: a body (the others are reported each slice)
-    double horizon_ = 0.0;            // how far predictions look
-    ScenePrint fingerprint_;          // the scene the bake goes on with
+    std::vector<bool> is_body_;        // per model: a body (the others are reported each slice)
+    double horizon_ = 0.0;             // how far predictions look
+    ScenePrint fingerprint_;           // the scene the bake goes on with
 };
 
 // Calls f(j) for every active body that body i could meet: its grid neighbours and the
