@@ -64,50 +64,65 @@ Obstacle EventBake::face_of(const Body &b, double t) const {
     return o;
 }
 
-// A free model that is not a sphere, placed on a face of a carrier (touching its plane with its
-// lowest vertices over the face, not moving into or out of it relative to the carrier, pulled
-// into it, the carrier moving along the face), rests or slides on it from here, as try_settle_mesh
-// puts one on a static model.
+// A free model placed on a face of a carrier (touching its plane with its lowest point over the
+// face, not moving into or out of it relative to the carrier, pulled into it, the carrier moving
+// along the face) rests, slides or rolls on it from here, as try_settle and try_settle_mesh put
+// one on a static model.
 bool EventBake::try_ride(int i, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
-    if (b.sphere || !b.active || b.keyed() || b.supported() || b.motion == ANI_MOTION_REST ||
-        !(b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))))
+    if (!b.active || b.keyed() || b.supported() || b.motion == ANI_MOTION_REST ||
+        !(b.sphere || b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))))
         return false;
-    const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
-    std::vector<glm::dvec3> corners = placed_vertices(b, t);
-    for (glm::dvec3 &r : corners) r += c; // in world space
-    const double reach = body_size(b), slack = 1e-9 * std::max(1.0, 2.0 * reach);
+    const glm::dvec3 c = b.path.at(t - b.t0);
+    const double reach = b.sphere ? b.radius : body_size(b);
     for (size_t j = 0; j < bodies_.size(); ++j) {
         const Body &o = bodies_[j];
         const int other = static_cast<int>(j);
-        if (other == i || o.sphere || !o.active || is_ignored(i, other) || is_overlapped(i, other))
-            continue;
+        if (other == i || o.sphere || !o.active || is_ignored(i, other)) continue;
         const Pose po = pose(o, t);
-        if (glm::length(c - po.center) > reach + o.reach * frobenius(po.linear) + slack) continue;
+        if (glm::length(c - po.center) > 1.01 * (reach + o.reach * frobenius(po.linear))) continue;
         const std::optional<Carried> motion = carried_motion(other, t);
         if (!motion) continue;
-        const glm::dvec3 u = motion->velocity, v_rel = v - u;
-        const Obstacle ob = face_of(o, t);
-        std::vector<glm::dvec3> tried; // the normals settle_on_face has been asked about
-        for (size_t k = 0; k < ob.normals.size(); ++k) {
-            const glm::dvec3 n = ob.normals[k];
-            if (n == glm::dvec3(0.0) || !(glm::dot(b.free_a, n) < 0.0) ||
-                std::abs(glm::dot(v_rel, n)) > 1e-9 * std::max(1.0, glm::length(v_rel)) ||
-                std::abs(glm::dot(u, n)) > 1e-12 * std::max(1.0, glm::length(u)))
-                continue;
-            if (!standing_point(corners, ob.corners[3 * k], ob.corners[3 * k + 1],
-                                ob.corners[3 * k + 2], n, ob.offsets[k], slack))
-                continue;
-            if (std::any_of(tried.begin(), tried.end(),
-                            [&](const glm::dvec3 &m) { return glm::dot(m, n) > 1.0 - 1e-9; }))
-                continue;
-            tried.push_back(n);
-            Holder holder;
-            holder.carrier = other;
-            holder.velocity = u;
-            holder.until = motion->until;
-            if (settle_on_face(i, ob, holder, n, t)) return true;
-        }
+        Holder holder;
+        holder.carrier = other;
+        holder.velocity = motion->velocity;
+        holder.until = motion->until;
+        if (ride_on(i, face_of(o, t), holder, t)) return true;
+    }
+    return false;
+}
+
+// Body i on one of the faces `ob` of the carrier in `holder`, if it stands on one.
+bool EventBake::ride_on(int i, const Obstacle &ob, const Holder &holder, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    if (b.sphere) {
+        double r = b.radius; // less while it overlaps the carrier (touching at that depth)
+        if (const OverlapRecord *rec = overlap_of(i, holder.carrier);
+            rec && rec->kind == OverlapRecord::Kind::kContactDistance)
+            r = std::min(r, rec->contact);
+        return settle_sphere_on(i, ob, holder, r, t);
+    }
+    if (is_overlapped(i, holder.carrier)) return false;
+    const glm::dvec3 c = b.path.at(t - b.t0), v_rel = b.path.velocity(t - b.t0) - holder.velocity;
+    std::vector<glm::dvec3> corners = placed_vertices(b, t);
+    for (glm::dvec3 &r : corners) r += c; // in world space
+    const double slack = 1e-9 * std::max(1.0, 2.0 * body_size(b));
+    std::vector<glm::dvec3> tried; // the normals settle_on_face has been asked about
+    for (size_t k = 0; k < ob.normals.size(); ++k) {
+        const glm::dvec3 n = ob.normals[k];
+        if (n == glm::dvec3(0.0) || !(glm::dot(b.free_a, n) < 0.0) ||
+            std::abs(glm::dot(v_rel, n)) > 1e-9 * std::max(1.0, glm::length(v_rel)) ||
+            std::abs(glm::dot(holder.velocity, n)) >
+                1e-12 * std::max(1.0, glm::length(holder.velocity)))
+            continue;
+        if (!standing_point(corners, ob.corners[3 * k], ob.corners[3 * k + 1],
+                            ob.corners[3 * k + 2], n, ob.offsets[k], slack))
+            continue;
+        if (std::any_of(tried.begin(), tried.end(),
+                        [&](const glm::dvec3 &m) { return glm::dot(m, n) > 1.0 - 1e-9; }))
+            continue;
+        tried.push_back(n);
+        if (settle_on_face(i, ob, holder, n, t)) return true;
     }
     return false;
 }
@@ -117,7 +132,7 @@ bool EventBake::try_ride(int i, double t) {
 // respond_to_obstacle does on a static model, in y's frame (inertial while y's velocity holds).
 bool EventBake::settle_on_carrier(int x, int y, const glm::dvec3 &n, double t) {
     Body &b = bodies_[static_cast<size_t>(x)];
-    if (b.sphere || b.turning() || !b.dynamics || b.supported() || b.keyed()) return false;
+    if (b.turning() || !b.dynamics || b.supported() || b.keyed()) return false;
     const std::optional<Carried> motion = carried_motion(y, t);
     if (!motion) return false;
     const glm::dvec3 u = motion->velocity, v = b.path.velocity(t - b.t0), v_rel = v - u;
@@ -132,20 +147,12 @@ bool EventBake::settle_on_carrier(int x, int y, const glm::dvec3 &n, double t) {
     holder.carrier = y;
     holder.velocity = u;
     holder.until = motion->until;
-    if (!settle_on_face(x, face_of(bodies_[static_cast<size_t>(y)], t), holder, n, t)) {
+    if (!ride_on(x, face_of(bodies_[static_cast<size_t>(y)], t), holder, t)) {
         restart(b, t, v, false);
         return false;
     }
     b.settles_at = zeno_accumulation(t, vn, g_n, e);
     return true;
-}
-
-// A rider's event: its carrier's velocity changes (the carrier's next key).
-void EventBake::predict_carrier(int i, double now, double &limit, Predicted &next) const {
-    const Body &b = bodies_[static_cast<size_t>(i)];
-    if (b.carrier < 0 || !(b.carrier_until - now <= limit)) return;
-    limit = std::max(0.0, b.carrier_until - now);
-    next = predicted(now + limit, EventKind::kCarrier);
 }
 
 // Rider i at t, where its carrier's motion may change: on the same face from here, with friction

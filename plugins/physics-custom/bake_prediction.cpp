@@ -233,6 +233,8 @@ void EventBake::predict(int i, double now) {
     else if (b.resume_at < kNever)
         next = predicted(b.resume_at, EventKind::kResume);
     if (b.settles_at < next.t) next = predicted(b.settles_at, EventKind::kSettle);
+    if (b.carrier >= 0 && b.carrier_until < next.t) // its carrier's next key (bake_carrier.cpp)
+        next = predicted(b.carrier_until, EventKind::kCarrier);
     if (!b.active) {
         set_prediction(i, next);
         return;
@@ -244,7 +246,6 @@ void EventBake::predict(int i, double now) {
         return;
     }
     double limit = std::min(horizon_, next.t) - now;
-    predict_carrier(i, now, limit, next);
     predict_friction(i, now, limit, next);
     if (b.in_grid)
         if (auto exit = first_exit(from_now(b, now), grid_->bounds(b.cell), limit)) {

@@ -25,45 +25,68 @@ bool EventBake::in_support_plane(const Body &b, const Obstacle &o, size_t k) {
 bool EventBake::try_settle(int i, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
     if (!b.free_sphere() || b.supported() || b.motion == ANI_MOTION_REST) return false;
-    const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
+    const glm::dvec3 c = b.path.at(t - b.t0);
     const double tol = touching(b);
     for (size_t o = 0; o < obstacles_.size(); ++o) {
         const Obstacle &ob = obstacles_[o];
         if (glm::length(c - ob.center) > b.radius + ob.radius + tol) continue;
         if (b.ignored_obstacles > 0 && is_ignored(i, -1 - static_cast<int>(o))) continue;
-        const double r = radius_against(i, static_cast<int>(o)); // less while overlapping
-        Box near{c - glm::dvec3(r + tol), c + glm::dvec3(r + tol)};
-        for (size_t k = 0; k < ob.boxes.size(); ++k) {
-            const glm::dvec3 n = ob.normals[k];
-            if (n == glm::dvec3(0.0) || !near.overlaps(ob.boxes[k])) continue;
-            const double h =
-                glm::dot(n, c) - ob.offsets[k]; // height of the center above the face's plane
-            if (std::abs(h - r) > tol) continue;
-            const glm::dvec3 q = closest_point_on_triangle(
-                c, ob.corners[3 * k], ob.corners[3 * k + 1], ob.corners[3 * k + 2]);
-            if (glm::length((c - q) - h * n) > tol)
-                continue; // nearest to an edge or a corner, not the face
-            if (glm::dot(b.free_a, n) > 0.0) continue; // pulled away from it
-            if (std::abs(glm::dot(v, n)) > 1e-9 * std::max(1.0, glm::length(v)))
-                continue; // bouncing
-            Body held = b;
-            held.t0 = t;
-            held.path =
-                Path{c - (h - r) * n, v - glm::dot(v, n) * n, b.free_a - glm::dot(b.free_a, n) * n};
-            held.support = static_cast<int>(o);
-            held.support_n = n;
-            held.support_d = ob.offsets[k];
-            held.support_edges = support_boundary(ob, held);
-            held.support_feet = {-r * n};
-            if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t))))
-                continue; // on the rim of the flat region, on its way off
-            close_segment(b, t);
-            held.motion = ANI_MOTION_FREE;
-            ++held.version;
-            b = std::move(held);
-            hold_on(b, material_of(*scene_->models[ob.model].desc), n);
-            return true;
-        }
+        Holder holder;
+        holder.obstacle = static_cast<int>(o);
+        // (Its radius is less while it overlaps the obstacle.)
+        if (settle_sphere_on(i, ob, holder, radius_against(i, static_cast<int>(o)), t)) return true;
+    }
+    return try_ride(i, t);
+}
+
+// The same on the faces `ob` of what holds it (a static model, or a carrier: try_ride), against
+// which it moves at its velocity less the holder's, with radius r there.
+bool EventBake::settle_sphere_on(int i, const Obstacle &ob, const Holder &holder, double r,
+                                 double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0),
+                     v_rel = v - holder.velocity;
+    const double tol = touching(b);
+    Box near{c - glm::dvec3(r + tol), c + glm::dvec3(r + tol)};
+    for (size_t k = 0; k < ob.boxes.size(); ++k) {
+        const glm::dvec3 n = ob.normals[k];
+        if (n == glm::dvec3(0.0) || !near.overlaps(ob.boxes[k])) continue;
+        const double h = glm::dot(n, c) - ob.offsets[k]; // height of the center above the face
+        if (std::abs(h - r) > tol) continue;
+        const glm::dvec3 q = closest_point_on_triangle(c, ob.corners[3 * k], ob.corners[3 * k + 1],
+                                                       ob.corners[3 * k + 2]);
+        if (glm::length((c - q) - h * n) > tol)
+            continue;                              // nearest to an edge or a corner, not the face
+        if (glm::dot(b.free_a, n) > 0.0) continue; // pulled away from it
+        if (std::abs(glm::dot(v_rel, n)) > 1e-9 * std::max(1.0, glm::length(v_rel)))
+            continue; // bouncing
+        if (std::abs(glm::dot(holder.velocity, n)) >
+            1e-12 * std::max(1.0, glm::length(holder.velocity)))
+            continue; // a carrier moving across its face
+        Body held = b;
+        held.t0 = t;
+        held.path =
+            Path{c - (h - r) * n, v - glm::dot(v_rel, n) * n, b.free_a - glm::dot(b.free_a, n) * n};
+        held.support = holder.obstacle;
+        held.carrier = holder.carrier;
+        held.support_v = holder.velocity;
+        held.support_t = t;
+        held.carrier_until = holder.until;
+        if (holder.carrier >= 0)
+            held.carrier_version = bodies_[static_cast<size_t>(holder.carrier)].version;
+        held.support_n = n;
+        held.support_d = ob.offsets[k];
+        held.support_edges = support_boundary(ob, held);
+        held.support_feet = {-r * n};
+        if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t))))
+            continue; // on the rim of the flat region, on its way off
+        close_segment(b, t);
+        held.motion = ANI_MOTION_FREE;
+        ++held.version;
+        b = std::move(held);
+        if (b.carrier >= 0) ++riders_;
+        hold_on(b, material_of(*scene_->models[ob.model].desc), n);
+        return true;
     }
     return false;
 }

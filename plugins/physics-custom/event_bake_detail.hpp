@@ -466,6 +466,7 @@ class EventBake {
     };
     bool settle_on_face(int i, const Obstacle &ob, const Holder &holder, const glm::dvec3 &n,
                         double t);
+    bool settle_sphere_on(int i, const Obstacle &ob, const Holder &holder, double r, double t);
     static std::vector<std::array<glm::dvec3, 3>> support_boundary(const Obstacle &o,
                                                                    const Body &b);
     std::optional<double> leaves_support(const Body &b, double now, double limit) const;
@@ -497,8 +498,8 @@ class EventBake {
     std::optional<Carried> carried_motion(int j, double t);
     Obstacle face_of(const Body &b, double t) const;
     bool try_ride(int i, double t);
+    bool ride_on(int i, const Obstacle &ob, const Holder &holder, double t);
     bool settle_on_carrier(int x, int y, const glm::dvec3 &n, double t);
-    void predict_carrier(int i, double now, double &limit, Predicted &next) const;
     void recarry(int i, double t);
     void carry_on(int j, double t);
     bool carries(int i, int j) const {

@@ -163,3 +163,47 @@ TEST_CASE("a box dropped onto a moving keyed platform stops it (a collision rele
     // through its bounces without end).
     CHECK(timeline->stats().backend_counts.at("predictions") < 500);
 }
+
+TEST_CASE("a ball placed on the keyed platform skids, then rolls on it from t = 2 v / (7 mu g) at "
+          "5/7 of its speed relative to it, and rolls off its back") {
+    // platform_ride.ani with the box a ball (radius 0.25, Rotates on). Relative to the platform
+    // (3 m/s) it starts at v = -3 m/s without spin; friction mu g = 4.905 m/s^2 speeds its centre
+    // up (in the world, from rest) and spins it until its touching point stops slipping, at
+    // t_r = 2 * 3 / (7 mu g) = 0.1747 s, with relative speed 5/7 * 3 (2/7 * 3 in the world) and
+    // spin 15/7 / r about z. It rolls on at that until it leaves the platform's back (1.5 m
+    // behind the middle, its centre passing the rim).
+    Document doc = platform_ride();
+    const int box = model_named(doc, "box");
+    Model ball = doc.models()[static_cast<size_t>(box)];
+    ball.mesh = "sphere";
+    ball.rotates = true;
+    doc.set_model(box, ball);
+    const double a = 0.5 * G, tr = 6.0 / (7.0 * a);
+    auto timeline = timeline_of(doc);
+    timeline->bake(1.0);
+    // (Its radius is the sphere mesh's, 1 to single precision, times 0.25: where its centre
+    // stands above the platform's top, at y = 1.1.)
+    const double r = timeline->evaluate(0.0).models[static_cast<size_t>(box)].center.y - 1.1;
+    REQUIRE(std::abs(r - 0.25) < 1e-7);
+    for (double t : {0.05, 0.1, tr - 1e-6, tr + 1e-6, 0.3, 0.6}) {
+        CAPTURE(t);
+        const ModelPose p = timeline->evaluate(t).models[static_cast<size_t>(box)];
+        const double s = std::min(t, tr);
+        const double x = -3.0 + 0.5 * a * s * s + (3.0 / 7.0 * 2.0) * (t - s);
+        CHECK(std::abs(p.center.x - x) < 1e-9);
+        CHECK(std::abs(p.velocity.x - a * s) < 1e-9);
+        const RotationSegment *rot = timeline->rotation_at(box, t);
+        REQUIRE(rot);
+        // The spin: friction's torque r F = (2/5) m r^2 alpha, so alpha = 5 a / (2 r), about +z
+        // for a ball pushed along +x under it, until it rolls.
+        const glm::dvec3 w = angular_velocity_at(*rot, t);
+        CHECK(std::abs(w.z - 2.5 * a * s / r) < 1e-9);
+    }
+    // Rolling: its touching point moves with the platform.
+    const ModelPose p = timeline->evaluate(0.5).models[static_cast<size_t>(box)];
+    const glm::dvec3 w = angular_velocity_at(*timeline->rotation_at(box, 0.5), 0.5);
+    CHECK(std::abs(p.velocity.x + r * w.z - 3.0) < 1e-9); // v + w x (-r y)
+    // Relative to the platform it rolls back at 15/7 m/s: its centre passes the back rim, 1.5 m
+    // behind the middle, at 0.67 s, where it leaves it and falls.
+    CHECK(timeline->evaluate(1.0).models[static_cast<size_t>(box)].center.y < 1.0);
+}
