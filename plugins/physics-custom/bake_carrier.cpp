@@ -81,15 +81,76 @@ bool EventBake::try_ride(int i, double t) {
         if (other == i || o.sphere || !o.active || is_ignored(i, other)) continue;
         const Pose po = pose(o, t);
         if (glm::length(c - po.center) > 1.01 * (reach + o.reach * frobenius(po.linear))) continue;
-        const std::optional<Carried> motion = carried_motion(other, t);
-        if (!motion) continue;
+        const Obstacle ob = face_of(o, t);
+        const std::optional<glm::dvec3> n = standing_face(i, ob, po.velocity, t);
+        if (!n) continue;
+        std::optional<Carried> motion = carried_motion(other, t);
+        if (!carries_along(motion, *n)) {
+            if (!let_go(other, i, t)) continue;
+            motion = carried_motion(other, t);
+            if (!carries_along(motion, *n)) continue;
+        }
         Holder holder;
         holder.carrier = other;
         holder.velocity = motion->velocity;
         holder.until = motion->until;
-        if (ride_on(i, face_of(o, t), holder, t)) return true;
+        if (ride_on(i, ob, holder, t)) return true;
     }
     return false;
+}
+
+// Whether a carrier's motion keeps to the plane of its face with normal n.
+bool EventBake::carries_along(const std::optional<Carried> &motion, const glm::dvec3 &n) {
+    return motion && std::abs(glm::dot(motion->velocity, n)) <=
+                         1e-12 * std::max(1.0, glm::length(motion->velocity));
+}
+
+// The normal of the face of `ob` (a body's, moving at v_other) that body i stands on at t: its
+// lowest point on the face, pulled into it, not moving into or out of it.
+std::optional<glm::dvec3> EventBake::standing_face(int i, const Obstacle &ob,
+                                                   const glm::dvec3 &v_other, double t) const {
+    const Body &b = bodies_[static_cast<size_t>(i)];
+    const glm::dvec3 c = b.path.at(t - b.t0), v_rel = b.path.velocity(t - b.t0) - v_other;
+    std::vector<glm::dvec3> points;
+    double slack = 1e-9 * std::max(1.0, 2.0 * body_size(b));
+    if (!b.sphere) {
+        points = placed_vertices(b, t);
+        for (glm::dvec3 &r : points) r += c;
+    } else {
+        slack = touching(b);
+    }
+    for (size_t k = 0; k < ob.normals.size(); ++k) {
+        const glm::dvec3 n = ob.normals[k];
+        if (n == glm::dvec3(0.0) || !(glm::dot(b.free_a, n) < 0.0) ||
+            std::abs(glm::dot(v_rel, n)) > 1e-9 * std::max(1.0, glm::length(v_rel)))
+            continue;
+        const glm::dvec3 &p0 = ob.corners[3 * k], &p1 = ob.corners[3 * k + 1],
+                         &p2 = ob.corners[3 * k + 2];
+        if (b.sphere
+                ? glm::length(closest_point_on_triangle(c, p0, p1, p2) - c) <= b.radius + slack &&
+                      std::abs(glm::dot(n, c) - ob.offsets[k] - b.radius) <= slack
+                : standing_point(points, p0, p1, p2, n, ob.offsets[k], slack).has_value())
+            return n;
+    }
+    return std::nullopt;
+}
+
+// Keyed body j cannot carry body i on its face (its keys accelerate it, turn it, or move it across
+// that face: not yet, physics.md), which would sink into it: j is released from its keys, as at a
+// collision, and said so. Without Dynamics it then stands still, and carries i.
+bool EventBake::let_go(int j, int i, double t) {
+    if (!bodies_[static_cast<size_t>(j)].keyed()) return false;
+    log_warning("model '" +
+                std::string(name_of(scene_->models[bodies_[static_cast<size_t>(i)].model])) +
+                "' stands on keyed model '" +
+                name_of(scene_->models[bodies_[static_cast<size_t>(j)].model]) +
+                "' at t = " + short_number(t) +
+                " s, whose keys cannot carry it (physics.custom carries a model only on a "
+                "platform that its keys translate at a constant velocity along the face, as "
+                "linear keys do): the platform is released from its keys, as at a collision");
+    release(j, t);
+    predict(j, t);
+    return true;
 }
 
 // Body i on one of the faces `ob` of the carrier in `holder`, if it stands on one.
@@ -163,12 +224,6 @@ void EventBake::recarry(int i, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
     if (b.carrier < 0) return;
     const Body &o = bodies_[static_cast<size_t>(b.carrier)];
-    const std::optional<Carried> motion = carried_motion(b.carrier, t);
-    if (!motion || std::abs(glm::dot(motion->velocity, b.support_n)) >
-                       1e-12 * std::max(1.0, glm::length(motion->velocity))) {
-        unsupport(b, t);
-        return;
-    }
     const Obstacle ob = face_of(o, t);
     const glm::dvec3 c = b.path.at(t - b.t0);
     const double slack = 1e-9 * std::max(1.0, 2.0 * body_size(b));
@@ -185,7 +240,13 @@ void EventBake::recarry(int i, double t) {
             }
         }
     }
-    if (!under) {
+    std::optional<Carried> motion;
+    if (under) {
+        motion = carried_motion(b.carrier, t);
+        if (!carries_along(motion, b.support_n) && let_go(b.carrier, i, t))
+            motion = carried_motion(b.carrier, t);
+    }
+    if (!carries_along(motion, b.support_n)) {
         unsupport(b, t);
         return;
     }
