@@ -44,3 +44,36 @@ def case_stairs_tumble(c):
           'the die still moves in the last second: %d px at (%.1f, %.1f), then %d px at (%.1f, %.1f)' %
           (n2, x2, y2, n1, x1, y1))
     e.quit()
+
+
+def case_platform_ride(c):
+    """assets/animations/platform_ride.ani opened as a user would: the editor bakes the box's ride
+    on the keyed platform and says so. The box stays at the platform's height throughout (it
+    neither sinks into the platform nor falls off it); a second into the ride it has been carried
+    right of where it started, at 3 s it stands 6 m further right, where the platform paused,
+    still (the same at 3.5 s, to the pixel), and at the end it is back where it started."""
+    with open(os.path.join(c.source, 'assets/animations/platform_ride.ani')) as f:
+        c.write('platform_ride.ani', f.read())
+    e = c.start('platform_ride.ani')
+    e.wait_baked()
+    check(re.search(r'^animator: physics\.custom: baked, 7 s$', e.stdout(), re.M),
+          'no "baked, 7 s" line in the log:\n' + e.stdout())
+    shots = {}
+    for ms in (0, 1000, 3000, 3500, 7000):
+        e.set_time(ms)
+        e.mouse_away()
+        n, x, y, _ = red_die(e.screenshot('t%d' % ms))
+        c.log('box at %d ms: %d px at (%.1f, %.1f)' % (ms, n, x or -1, y or -1))
+        check(n > 50, 'the box is not on screen at %d ms (%d red pixels)' % (ms, n))
+        shots[ms] = (n, x, y)
+    n0, x0, y0 = shots[0]
+    for ms in (1000, 3000, 7000):
+        check(abs(shots[ms][2] - y0) < 3,
+              'the box left the platform\'s height at %d ms: y %.1f, %.1f at the start' % (ms, shots[ms][2], y0))
+    check(shots[1000][1] > x0 + 60, 'the box was not carried right in the first second')
+    check(shots[3000][1] > shots[1000][1] + 60, 'the box did not ride on to where the platform paused')
+    check(shots[3500] == shots[3000], 'the box moves while the platform is paused: %s, then %s' %
+          (shots[3000], shots[3500]))
+    check(abs(shots[7000][1] - x0) < 2, 'the box is not back where it started: x %.1f, %.1f at the start' %
+          (shots[7000][1], x0))
+    e.quit()
