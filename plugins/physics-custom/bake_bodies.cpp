@@ -224,6 +224,10 @@ void EventBake::activate(Body &b, double t, const ani_body_state &start) {
     b.free_a = b.path.a;
     b.motion = s.motion;
     b.support = -1;
+    if (b.carrier >= 0) --riders_;
+    b.carrier = -1;
+    b.support_v = glm::dvec3(0.0);
+    b.carrier_until = kNever;
     b.support_edges.clear();
     b.settles_at = kNever;
     start_spin(b, t);

@@ -82,13 +82,13 @@ bool EventBake::try_ride(int i, double t) {
         const Pose po = pose(o, t);
         if (glm::length(c - po.center) > 1.01 * (reach + o.reach * frobenius(po.linear))) continue;
         const Obstacle ob = face_of(o, t);
-        const std::optional<glm::dvec3> n = standing_face(i, ob, po.velocity, t);
-        if (!n) continue;
+        const std::vector<glm::dvec3> faces = standing_faces(i, ob, po.velocity, t);
+        if (faces.empty()) continue;
         std::optional<Carried> motion = carried_motion(other, t);
-        if (!carries_along(motion, *n)) {
+        if (!carries_along(motion, faces.front())) {
             if (!let_go(other, i, t)) continue;
             motion = carried_motion(other, t);
-            if (!carries_along(motion, *n)) continue;
+            if (!carries_along(motion, faces.front())) continue;
         }
         Holder holder;
         holder.carrier = other;
@@ -103,36 +103,6 @@ bool EventBake::try_ride(int i, double t) {
 bool EventBake::carries_along(const std::optional<Carried> &motion, const glm::dvec3 &n) {
     return motion && std::abs(glm::dot(motion->velocity, n)) <=
                          1e-12 * std::max(1.0, glm::length(motion->velocity));
-}
-
-// The normal of the face of `ob` (a body's, moving at v_other) that body i stands on at t: its
-// lowest point on the face, pulled into it, not moving into or out of it.
-std::optional<glm::dvec3> EventBake::standing_face(int i, const Obstacle &ob,
-                                                   const glm::dvec3 &v_other, double t) const {
-    const Body &b = bodies_[static_cast<size_t>(i)];
-    const glm::dvec3 c = b.path.at(t - b.t0), v_rel = b.path.velocity(t - b.t0) - v_other;
-    std::vector<glm::dvec3> points;
-    double slack = 1e-9 * std::max(1.0, 2.0 * body_size(b));
-    if (!b.sphere) {
-        points = placed_vertices(b, t);
-        for (glm::dvec3 &r : points) r += c;
-    } else {
-        slack = touching(b);
-    }
-    for (size_t k = 0; k < ob.normals.size(); ++k) {
-        const glm::dvec3 n = ob.normals[k];
-        if (n == glm::dvec3(0.0) || !(glm::dot(b.free_a, n) < 0.0) ||
-            std::abs(glm::dot(v_rel, n)) > 1e-9 * std::max(1.0, glm::length(v_rel)))
-            continue;
-        const glm::dvec3 &p0 = ob.corners[3 * k], &p1 = ob.corners[3 * k + 1],
-                         &p2 = ob.corners[3 * k + 2];
-        if (b.sphere
-                ? glm::length(closest_point_on_triangle(c, p0, p1, p2) - c) <= b.radius + slack &&
-                      std::abs(glm::dot(n, c) - ob.offsets[k] - b.radius) <= slack
-                : standing_point(points, p0, p1, p2, n, ob.offsets[k], slack).has_value())
-            return n;
-    }
-    return std::nullopt;
 }
 
 // Keyed body j cannot carry body i on its face (its keys accelerate it, turn it, or move it across
@@ -164,27 +134,10 @@ bool EventBake::ride_on(int i, const Obstacle &ob, const Holder &holder, double 
         return settle_sphere_on(i, ob, holder, r, t);
     }
     if (is_overlapped(i, holder.carrier)) return false;
-    const glm::dvec3 c = b.path.at(t - b.t0), v_rel = b.path.velocity(t - b.t0) - holder.velocity;
-    std::vector<glm::dvec3> corners = placed_vertices(b, t);
-    for (glm::dvec3 &r : corners) r += c; // in world space
-    const double slack = 1e-9 * std::max(1.0, 2.0 * body_size(b));
-    std::vector<glm::dvec3> tried; // the normals settle_on_face has been asked about
-    for (size_t k = 0; k < ob.normals.size(); ++k) {
-        const glm::dvec3 n = ob.normals[k];
-        if (n == glm::dvec3(0.0) || !(glm::dot(b.free_a, n) < 0.0) ||
-            std::abs(glm::dot(v_rel, n)) > 1e-9 * std::max(1.0, glm::length(v_rel)) ||
-            std::abs(glm::dot(holder.velocity, n)) >
-                1e-12 * std::max(1.0, glm::length(holder.velocity)))
-            continue;
-        if (!standing_point(corners, ob.corners[3 * k], ob.corners[3 * k + 1],
-                            ob.corners[3 * k + 2], n, ob.offsets[k], slack))
-            continue;
-        if (std::any_of(tried.begin(), tried.end(),
-                        [&](const glm::dvec3 &m) { return glm::dot(m, n) > 1.0 - 1e-9; }))
-            continue;
-        tried.push_back(n);
-        if (settle_on_face(i, ob, holder, n, t)) return true;
-    }
+    for (const glm::dvec3 &n : standing_faces(i, ob, holder.velocity, t))
+        if (carries_along(Carried{holder.velocity, holder.until}, n) &&
+            settle_on_face(i, ob, holder, n, t))
+            return true;
     return false;
 }
 

@@ -319,9 +319,7 @@ bool EventBake::try_settle_mesh(int i, double t) {
     if (b.sphere || !b.active || b.keyed() || b.supported() || b.motion == ANI_MOTION_REST ||
         !(b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))))
         return false;
-    const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
-    std::vector<glm::dvec3> corners = placed_vertices(b, t);
-    for (glm::dvec3 &r : corners) r += c; // in world space
+    const glm::dvec3 c = b.path.at(t - b.t0);
     const double reach = body_size(b), slack = 1e-9 * std::max(1.0, 2.0 * reach);
     for (size_t o = 0; o < obstacles_.size(); ++o) {
         const Obstacle &ob = obstacles_[o];
@@ -329,23 +327,45 @@ bool EventBake::try_settle_mesh(int i, double t) {
         if (glm::length(c - ob.center) > reach + ob.radius + slack || is_ignored(i, key) ||
             is_overlapped(i, key))
             continue;
-        std::vector<glm::dvec3> tried; // the normals settle_on has been asked about
-        for (size_t k = 0; k < ob.normals.size(); ++k) {
-            const glm::dvec3 n = ob.normals[k];
-            if (n == glm::dvec3(0.0) || !(glm::dot(b.free_a, n) < 0.0) ||
-                std::abs(glm::dot(v, n)) > 1e-9 * std::max(1.0, glm::length(v)))
-                continue;
-            if (!standing_point(corners, ob.corners[3 * k], ob.corners[3 * k + 1],
-                                ob.corners[3 * k + 2], n, ob.offsets[k], slack))
-                continue;
-            if (std::any_of(tried.begin(), tried.end(),
-                            [&](const glm::dvec3 &m) { return glm::dot(m, n) > 1.0 - 1e-9; }))
-                continue;
-            tried.push_back(n);
+        for (const glm::dvec3 &n : standing_faces(i, ob, glm::dvec3(0.0), t))
             if (settle_on(i, static_cast<int>(o), n, t)) return true;
-        }
     }
     return try_ride(i, t);
+}
+
+// The normals of the faces of `ob` (what holds it up, moving at v_other) that body i stands on at
+// t, each once: pulled into the face, not moving into or out of it, and touching it with its
+// lowest point over the face (a sphere: its centre a radius above the face's plane, over it).
+std::vector<glm::dvec3> EventBake::standing_faces(int i, const Obstacle &ob,
+                                                  const glm::dvec3 &v_other, double t) const {
+    const Body &b = bodies_[static_cast<size_t>(i)];
+    const glm::dvec3 c = b.path.at(t - b.t0), v_rel = b.path.velocity(t - b.t0) - v_other;
+    std::vector<glm::dvec3> corners;
+    double slack = touching(b);
+    if (!b.sphere) {
+        corners = placed_vertices(b, t);
+        for (glm::dvec3 &r : corners) r += c; // in world space
+        slack = 1e-9 * std::max(1.0, 2.0 * body_size(b));
+    }
+    std::vector<glm::dvec3> faces;
+    for (size_t k = 0; k < ob.normals.size(); ++k) {
+        const glm::dvec3 n = ob.normals[k];
+        if (n == glm::dvec3(0.0) || !(glm::dot(b.free_a, n) < 0.0) ||
+            std::abs(glm::dot(v_rel, n)) > 1e-9 * std::max(1.0, glm::length(v_rel)))
+            continue;
+        const glm::dvec3 &p0 = ob.corners[3 * k], &p1 = ob.corners[3 * k + 1],
+                         &p2 = ob.corners[3 * k + 2];
+        const bool stands =
+            b.sphere
+                ? std::abs(glm::dot(n, c) - ob.offsets[k] - b.radius) <= slack &&
+                      glm::length(closest_point_on_triangle(c, p0, p1, p2) - c) <= b.radius + slack
+                : standing_point(corners, p0, p1, p2, n, ob.offsets[k], slack).has_value();
+        if (stands && std::none_of(faces.begin(), faces.end(), [&](const glm::dvec3 &m) {
+                return glm::dot(m, n) > 1.0 - 1e-9;
+            }))
+            faces.push_back(n);
+    }
+    return faces;
 }
 
 // ---- sliding, skidding and rolling with Coulomb friction ---------------------------------

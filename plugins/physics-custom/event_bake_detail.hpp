@@ -474,6 +474,8 @@ class EventBake {
     void unsupport(Body &b, double t);
     void after_contact(int i, double t);
     bool try_settle_mesh(int i, double t);
+    std::vector<glm::dvec3> standing_faces(int i, const Obstacle &ob, const glm::dvec3 &v_other,
+                                           double t) const;
     static std::optional<glm::dvec3> standing_point(const std::vector<glm::dvec3> &points,
                                                     const glm::dvec3 &p0, const glm::dvec3 &p1,
                                                     const glm::dvec3 &p2, const glm::dvec3 &n,
@@ -500,8 +502,6 @@ class EventBake {
     bool try_ride(int i, double t);
     bool ride_on(int i, const Obstacle &ob, const Holder &holder, double t);
     static bool carries_along(const std::optional<Carried> &motion, const glm::dvec3 &n);
-    std::optional<glm::dvec3> standing_face(int i, const Obstacle &ob, const glm::dvec3 &v_other,
-                                            double t) const;
     bool let_go(int j, int i, double t);
     bool settle_on_carrier(int x, int y, const glm::dvec3 &n, double t);
     void recarry(int i, double t);
