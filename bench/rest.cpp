@@ -1,5 +1,5 @@
 // Run time against error on the scenes of contacts that last (docs/physics.md, "Sliding,
-// skidding and rolling", "Tipping" and "Resting on other models"): each shipped scene baked by
+// skidding and rolling", "Tipping", "Resting on other models" and "Riding a keyed platform"): each shipped scene baked by
 // physics.custom once and by physics.bullet at steps from 1/60 to 1/4000 s, its errors against
 // the closed forms (for the tip, the pendulum equation integrated finely) that
 // tests/physics/sliding_test.cpp checks physics.custom with.
@@ -215,6 +215,33 @@ std::vector<RestScene> scenes() {
                        }),
                  worst(6.0,
                        [&](double s) { return std::max(0.0, energy(t, doc, s, models) - e0); })};
+         }},
+        {"platform",
+         "animations/platform_ride.ani",
+         "box placed on a platform keyed at 3 m/s, paused and back, mu 0.5 (to 7 s)",
+         7.0,
+         {"box's position (m)"},
+         [](const Timeline &t, const Document &doc) {
+             // tests/physics/carrier_test.cpp derives the pieces: the box slips back at mu g
+             // relative to the platform for t* = 3 / (mu g) after each change of its velocity
+             // (0, 2, 4 and 6 s), and moves with it in between.
+             const int m = model_named(doc, "box");
+             const double a = 0.5 * G, ts = 3.0 / a, d = 1.5 * ts;
+             const double x2 = -3.0 + d + 3.0 * (2.0 - ts), x6 = 3.0 - d - 3.0 * (2.0 - ts);
+             auto x_at = [&](double s) {
+                 if (s <= ts) return -3.0 + 0.5 * a * s * s;
+                 if (s <= 2.0) return -3.0 + d + 3.0 * (s - ts);
+                 if (s <= 2.0 + ts) return x2 + 3.0 * (s - 2.0) - 0.5 * a * (s - 2.0) * (s - 2.0);
+                 if (s <= 4.0) return 3.0;
+                 if (s <= 4.0 + ts) return 3.0 - 0.5 * a * (s - 4.0) * (s - 4.0);
+                 if (s <= 6.0) return 3.0 - d - 3.0 * (s - 4.0 - ts);
+                 if (s <= 6.0 + ts) return x6 - 3.0 * (s - 6.0) + 0.5 * a * (s - 6.0) * (s - 6.0);
+                 return -3.0;
+             };
+             return std::vector<double>{worst(7.0, [&](double s) {
+                 const glm::dvec3 c = t.evaluate(s).models[static_cast<size_t>(m)].center;
+                 return glm::length(c - glm::dvec3(x_at(s), 1.35, 0.0));
+             })};
          }},
     };
 }
