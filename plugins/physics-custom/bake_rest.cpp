@@ -67,25 +67,14 @@ bool EventBake::settle_sphere_on(int i, const Obstacle &ob, const Holder &holder
         held.t0 = t;
         held.path =
             Path{c - (h - r) * n, v - glm::dot(v_rel, n) * n, b.free_a - glm::dot(b.free_a, n) * n};
-        held.support = holder.obstacle;
-        held.carrier = holder.carrier;
-        held.support_v = holder.velocity;
-        held.support_t = t;
-        held.carrier_until = holder.until;
-        if (holder.carrier >= 0)
-            held.carrier_version = bodies_[static_cast<size_t>(holder.carrier)].version;
+        held_by(held, holder, t);
         held.support_n = n;
         held.support_d = ob.offsets[k];
         held.support_edges = support_boundary(ob, held);
         held.support_feet = {-r * n};
         if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t))))
             continue; // on the rim of the flat region, on its way off
-        close_segment(b, t);
-        held.motion = ANI_MOTION_FREE;
-        ++held.version;
-        b = std::move(held);
-        if (b.carrier >= 0) ++riders_;
-        hold_on(b, material_of(*scene_->models[ob.model].desc), n);
+        put_on(i, std::move(held), ob, n, t);
         return true;
     }
     return false;
@@ -118,13 +107,7 @@ bool EventBake::settle_on_face(int i, const Obstacle &ob, const Holder &holder, 
         if (glm::dot(ob.normals[k], n) > 1.0 - 1e-9) face = static_cast<int>(k);
     if (face < 0) return false;
     Body held = b;
-    held.support = holder.obstacle;
-    held.carrier = holder.carrier;
-    held.support_v = holder.velocity;
-    held.support_t = t;
-    held.carrier_until = holder.until;
-    if (holder.carrier >= 0)
-        held.carrier_version = bodies_[static_cast<size_t>(holder.carrier)].version;
+    held_by(held, holder, t);
     held.support_n = n;
     // Of the faces facing that way, the plane the body touches: the nearest below its center.
     double best = kNever;
@@ -166,13 +149,31 @@ bool EventBake::settle_on_face(int i, const Obstacle &ob, const Holder &holder, 
     held.t0 = t;
     held.path = Path{c, v - glm::dot(v, n) * n, b.free_a - glm::dot(b.free_a, n) * n};
     if (leaves_support(held, t, 1e-9 * std::max(1.0, std::abs(t)))) return false;
+    put_on(i, std::move(held), ob, n, t);
+    return true;
+}
+
+// A copy of a body, `held`, held up from t by what `holder` says.
+void EventBake::held_by(Body &held, const Holder &holder, double t) const {
+    held.support = holder.obstacle;
+    held.carrier = holder.carrier;
+    held.support_v = holder.velocity;
+    held.support_t = t;
+    held.carrier_until = holder.until;
+    if (holder.carrier >= 0)
+        held.carrier_version = bodies_[static_cast<size_t>(holder.carrier)].version;
+}
+
+// Body i becomes `held` (itself, put on the face of `ob` with normal n at t): its motion so far
+// reported, friction there from now.
+void EventBake::put_on(int i, Body held, const Obstacle &ob, const glm::dvec3 &n, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
     close_segment(b, t);
     held.motion = ANI_MOTION_FREE;
     ++held.version;
     b = std::move(held);
     if (b.carrier >= 0) ++riders_;
     hold_on(b, material_of(*scene_->models[ob.model].desc), n);
-    return true;
 }
 
 // The edges that bound the flat region of an obstacle in a body's support plane: those of

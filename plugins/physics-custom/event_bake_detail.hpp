@@ -467,6 +467,8 @@ class EventBake {
     bool settle_on_face(int i, const Obstacle &ob, const Holder &holder, const glm::dvec3 &n,
                         double t);
     bool settle_sphere_on(int i, const Obstacle &ob, const Holder &holder, double r, double t);
+    void held_by(Body &held, const Holder &holder, double t) const;
+    void put_on(int i, Body held, const Obstacle &ob, const glm::dvec3 &n, double t);
     static std::vector<std::array<glm::dvec3, 3>> support_boundary(const Obstacle &o,
                                                                    const Body &b);
     std::optional<double> leaves_support(const Body &b, double now, double limit) const;

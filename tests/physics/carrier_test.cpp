@@ -5,6 +5,7 @@
 #include "io/environment.hpp"
 #include "timeline/timeline.hpp"
 
+#include "platform_ride.hpp"
 #include "scene_support.hpp"
 
 #include <catch2/catch.hpp>
@@ -17,7 +18,7 @@ using namespace physics_test;
 
 namespace {
 
-Document platform_ride() {
+Document ride_document() {
     return open_document(env().plugins, test::source_dir() / "assets/animations/platform_ride.ani")
         .document;
 }
@@ -29,37 +30,12 @@ int model_named(const Document &doc, const std::string &name) {
     return -1;
 }
 
-// platform_ride.ani: the platform's linear keys move it from x = -3 to 3 over [0, 2] s, hold it
-// over [2, 4] and bring it back over [4, 6]: its velocity u is 3, 0, -3 m/s on those spans, and
-// 0 after its last key. Between keys its frame is inertial, so the box (mu = 0.5 against it)
-// slides on it as on a floor: friction a = mu g takes its velocity relative to the platform to 0
-// in t* = 3 / a, over d = 3 t* / 2, and it moves with the platform from then. Placed at rest at
-// x = -3: x = -3 + a t^2 / 2 until t*, then -3 + d + 3 (t - t*) until 2 s; at 2 s the
-// platform stops and the box slides on, x = x2 + 3 s - a s^2 / 2 (s = t - 2), to 3 at 2 + t*;
-// at 4 s the platform leaves it behind again, the mirror image, and at 6 s stops under it.
 double box_x(double t) {
-    const double a = 0.5 * G, ts = 3.0 / a, d = 1.5 * ts;
-    const double x2 = -3.0 + d + 3.0 * (2.0 - ts), x6 = 3.0 - d - 3.0 * (2.0 - ts);
-    if (t <= ts) return -3.0 + 0.5 * a * t * t;
-    if (t <= 2.0) return -3.0 + d + 3.0 * (t - ts);
-    if (t <= 2.0 + ts) return x2 + 3.0 * (t - 2.0) - 0.5 * a * (t - 2.0) * (t - 2.0);
-    if (t <= 4.0) return 3.0;
-    if (t <= 4.0 + ts) return 3.0 - 0.5 * a * (t - 4.0) * (t - 4.0);
-    if (t <= 6.0) return 3.0 - d - 3.0 * (t - 4.0 - ts);
-    if (t <= 6.0 + ts) return x6 - 3.0 * (t - 6.0) + 0.5 * a * (t - 6.0) * (t - 6.0);
-    return -3.0;
+    return platform_ride::box_x(t, G);
 }
 
 double box_vx(double t) {
-    const double a = 0.5 * G, ts = 3.0 / a;
-    if (t <= ts) return a * t;
-    if (t <= 2.0) return 3.0;
-    if (t <= 2.0 + ts) return 3.0 - a * (t - 2.0);
-    if (t <= 4.0) return 0.0;
-    if (t <= 4.0 + ts) return -a * (t - 4.0);
-    if (t <= 6.0) return -3.0;
-    if (t <= 6.0 + ts) return -3.0 + a * (t - 6.0);
-    return 0.0;
+    return platform_ride::box_vx(t, G);
 }
 
 Document with_bullet_step(Document doc, double step) {
@@ -73,7 +49,7 @@ Document with_bullet_step(Document doc, double step) {
 
 TEST_CASE("platform_ride.ani: a box placed on a keyed platform slides on it and rides it, in "
           "closed form, and the platform keeps to its keys") {
-    const Document doc = platform_ride();
+    const Document doc = ride_document();
     const int box = model_named(doc, "box"), platform = model_named(doc, "platform");
     REQUIRE(doc.models()[box].friction == 0.5);
     const double end = static_cast<double>(doc.settings().max_time_ms) / 1000.0;
@@ -111,7 +87,7 @@ TEST_CASE("platform_ride.ani: Bullet carries the box too, converging on the clos
           "step shrinks") {
     // Bullet's kinematic platform drags the box by friction at each step: first order in the
     // step. Measured (animator compare): 1.2e-2, 3.0e-3, 7.5e-4 m at 1/250, 1/1000, 1/4000 s.
-    const Document doc = platform_ride();
+    const Document doc = ride_document();
     const int box = model_named(doc, "box");
     const double end = static_cast<double>(doc.settings().max_time_ms) / 1000.0;
     double previous = 1e300;
@@ -142,7 +118,7 @@ TEST_CASE("a box dropped onto a moving keyed platform stops it (a collision rele
     // (physics.md, "Release from keys"): without Dynamics, the platform stops there until its next
     // key (2 s), where it jumps to x = 3. The box bounces on it (e = 0.5), slides to rest by
     // friction, and rests on it from the bounces' accumulation time, until the platform leaves.
-    Document doc = platform_ride();
+    Document doc = ride_document();
     const int box = model_named(doc, "box");
     ModelState placed = *doc.keyframes().front().states[static_cast<size_t>(box)];
     placed.center = glm::dvec3(-2.0, 1.6, 0.0);
@@ -172,7 +148,7 @@ TEST_CASE("a ball placed on the keyed platform skids, then rolls on it from t = 
     // t_r = 2 * 3 / (7 mu g) = 0.1747 s, with relative speed 5/7 * 3 (2/7 * 3 in the world) and
     // spin 15/7 / r about z. It rolls on at that until it leaves the platform's back (1.5 m
     // behind the middle, its centre passing the rim).
-    Document doc = platform_ride();
+    Document doc = ride_document();
     const int box = model_named(doc, "box");
     Model ball = doc.models()[static_cast<size_t>(box)];
     ball.mesh = "sphere";
@@ -216,7 +192,7 @@ TEST_CASE("a box on a platform that smooth keys accelerate cannot ride it yet, s
     // without end. Now the platform is released from its keys at t = 0 as a collision would
     // release it: it stands still with the box on it until its next key (2 s), which takes it
     // away, and the box falls to the floor, where it comes to rest.
-    Document doc = platform_ride();
+    Document doc = ride_document();
     Settings s = doc.settings();
     s.interpolation = "interpolation.smooth";
     doc.set_settings(s);
