@@ -1,8 +1,8 @@
 // Run time against error on the scenes of contacts that last (docs/physics.md, "Sliding,
-// skidding and rolling", "Tipping", "Resting on other models" and "Riding a keyed platform"): each shipped scene baked by
-// physics.custom once and by physics.bullet at steps from 1/60 to 1/4000 s, its errors against
-// the closed forms (for the tip, the pendulum equation integrated finely) that
-// tests/physics/sliding_test.cpp checks physics.custom with.
+// skidding and rolling", "Tipping", "Resting on other models" and "Riding a keyed platform"):
+// each shipped scene baked by physics.custom once and by physics.bullet at steps from 1/60 to
+// 1/4000 s, its errors against the closed forms (for the tip, the pendulum equation integrated
+// finely) that tests/physics/sliding_test.cpp and carrier_test.cpp check physics.custom with.
 #include "bench.hpp"
 
 #include "bullet_support.hpp"

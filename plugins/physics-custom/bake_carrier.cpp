@@ -85,10 +85,10 @@ bool EventBake::try_ride(int i, double t) {
         const std::vector<glm::dvec3> faces = standing_faces(i, ob, po.velocity, t);
         if (faces.empty()) continue;
         std::optional<Carried> motion = carried_motion(other, t);
-        if (!carries_along(motion, faces.front())) {
+        if (!(motion && carries_along(motion->velocity, faces.front()))) {
             if (!let_go(other, i, t)) continue;
             motion = carried_motion(other, t);
-            if (!carries_along(motion, faces.front())) continue;
+            if (!(motion && carries_along(motion->velocity, faces.front()))) continue;
         }
         Holder holder;
         holder.carrier = other;
@@ -99,10 +99,9 @@ bool EventBake::try_ride(int i, double t) {
     return false;
 }
 
-// Whether a carrier's motion keeps to the plane of its face with normal n.
-bool EventBake::carries_along(const std::optional<Carried> &motion, const glm::dvec3 &n) {
-    return motion && std::abs(glm::dot(motion->velocity, n)) <=
-                         1e-12 * std::max(1.0, glm::length(motion->velocity));
+// Whether a carrier moving at u keeps to the plane of its face with normal n.
+bool EventBake::carries_along(const glm::dvec3 &u, const glm::dvec3 &n) {
+    return std::abs(glm::dot(u, n)) <= 1e-12 * std::max(1.0, glm::length(u));
 }
 
 // Keyed body j cannot carry body i on its face (its keys accelerate it, turn it, or move it across
@@ -135,9 +134,7 @@ bool EventBake::ride_on(int i, const Obstacle &ob, const Holder &holder, double 
     }
     if (is_overlapped(i, holder.carrier)) return false;
     for (const glm::dvec3 &n : standing_faces(i, ob, holder.velocity, t))
-        if (carries_along(Carried{holder.velocity, holder.until}, n) &&
-            settle_on_face(i, ob, holder, n, t))
-            return true;
+        if (carries_along(holder.velocity, n) && settle_on_face(i, ob, holder, n, t)) return true;
     return false;
 }
 
@@ -153,7 +150,7 @@ bool EventBake::settle_on_carrier(int x, int y, const glm::dvec3 &n, double t) {
     const double vn = glm::dot(v_rel, n), g_n = -glm::dot(b.free_a, n);
     const Material mo = material_of(*scene_->models[bodies_[static_cast<size_t>(y)].model].desc);
     const double e = combined_restitution(b.material.restitution, mo.restitution);
-    if (std::abs(glm::dot(u, n)) > 1e-12 * std::max(1.0, glm::length(u)) ||
+    if (!carries_along(u, n) ||
         !zeno_settles(vn, g_n, e, std::max(1.0, glm::length(b.path.at(t - b.t0)))))
         return false;
     restart(b, t, v_rel - vn * n + u, false); // on the face, at its speed along it
@@ -179,27 +176,17 @@ void EventBake::recarry(int i, double t) {
     const Body &o = bodies_[static_cast<size_t>(b.carrier)];
     const Obstacle ob = face_of(o, t);
     const glm::dvec3 c = b.path.at(t - b.t0);
-    const double slack = 1e-9 * std::max(1.0, 2.0 * body_size(b));
-    bool under = false;
-    for (size_t k = 0; k < ob.normals.size() && !under; ++k) {
-        if (!in_support_plane(b, ob, k)) continue;
-        for (const glm::dvec3 &foot : b.support_feet) {
-            const glm::dvec3 p = c + foot;
-            if (glm::length(closest_point_on_triangle(p, ob.corners[3 * k], ob.corners[3 * k + 1],
-                                                      ob.corners[3 * k + 2]) -
-                            p) <= slack) {
-                under = true;
-                break;
-            }
-        }
-    }
+    const bool under =
+        std::any_of(b.support_feet.begin(), b.support_feet.end(), [&](const glm::dvec3 &foot) {
+            return on_flat_region(ob, b.support_n, b.support_d, c + foot);
+        });
     std::optional<Carried> motion;
     if (under) {
         motion = carried_motion(b.carrier, t);
-        if (!carries_along(motion, b.support_n) && let_go(b.carrier, i, t))
+        if (!(motion && carries_along(motion->velocity, b.support_n)) && let_go(b.carrier, i, t))
             motion = carried_motion(b.carrier, t);
     }
-    if (!carries_along(motion, b.support_n)) {
+    if (!(motion && carries_along(motion->velocity, b.support_n))) {
         unsupport(b, t);
         return;
     }

@@ -59,10 +59,8 @@ bool EventBake::settle_sphere_on(int i, const Obstacle &ob, const Holder &holder
             continue;                              // nearest to an edge or a corner, not the face
         if (glm::dot(b.free_a, n) > 0.0) continue; // pulled away from it
         if (std::abs(glm::dot(v_rel, n)) > 1e-9 * std::max(1.0, glm::length(v_rel)))
-            continue; // bouncing
-        if (std::abs(glm::dot(holder.velocity, n)) >
-            1e-12 * std::max(1.0, glm::length(holder.velocity)))
-            continue; // a carrier moving across its face
+            continue;                                     // bouncing
+        if (!carries_along(holder.velocity, n)) continue; // a carrier moving across its face
         Body held = b;
         held.t0 = t;
         held.path =

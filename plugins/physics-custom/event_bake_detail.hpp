@@ -503,7 +503,7 @@ class EventBake {
     Obstacle face_of(const Body &b, double t) const;
     bool try_ride(int i, double t);
     bool ride_on(int i, const Obstacle &ob, const Holder &holder, double t);
-    static bool carries_along(const std::optional<Carried> &motion, const glm::dvec3 &n);
+    static bool carries_along(const glm::dvec3 &u, const glm::dvec3 &n);
     bool let_go(int j, int i, double t);
     bool settle_on_carrier(int x, int y, const glm::dvec3 &n, double t);
     void recarry(int i, double t);
