@@ -99,13 +99,14 @@ void write_events(const std::string &path, const Timeline &timeline) {
 
 void print_stats(const Timeline &timeline, double wall_seconds) {
     const auto &models = timeline.document().models();
-    std::size_t keyed = 0, free = 0, rest = 0, key_only_at_zero = 0, never_free = 0;
+    std::size_t keyed = 0, free = 0, rest = 0, carried = 0, key_only_at_zero = 0, never_free = 0;
     for (size_t m = 0; m < models.size(); ++m) {
         bool any_free = false;
         for (const ani_motion_segment &s : timeline.segments(static_cast<int>(m))) {
             keyed += s.motion == ANI_MOTION_KEYED;
             free += s.motion == ANI_MOTION_FREE;
             rest += s.motion == ANI_MOTION_REST;
+            carried += s.motion == ANI_MOTION_CARRIED;
             any_free = any_free || s.motion == ANI_MOTION_FREE;
         }
         never_free += !any_free;
@@ -116,8 +117,9 @@ void print_stats(const Timeline &timeline, double wall_seconds) {
               << "wall time: " << wall_seconds << " s\n"
               << "baked:     " << st.seconds_baked << " s of animation in " << st.bake_calls
               << " bake call(s)\n"
-              << "segments:  " << keyed + free + rest << " (" << keyed << " keyed, " << free
-              << " free, " << rest << " at rest)\n"
+              << "segments:  " << keyed + free + rest + carried << " (" << keyed << " keyed, " << free
+              << " free, " << rest << " at rest" << (carried ? ", " + std::to_string(carried) + " carried" : "")
+              << ")\n"
               << "events:    " << timeline.events().size() << "\n"
               << "skipped:   interpolation for " << key_only_at_zero << " of " << models.size()
               << " models (keyed at t = 0 only); free flight for " << never_free << " of "

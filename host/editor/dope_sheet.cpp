@@ -21,6 +21,7 @@ const ImU32 kTick = IM_COL32(140, 142, 152, 255);
 const ImU32 kTickText = IM_COL32(190, 192, 200, 255);
 const ImU32 kFree = IM_COL32(50, 100, 160, 255);     // released, flying
 const ImU32 kRest = IM_COL32(60, 78, 98, 255);       // released, at rest
+const ImU32 kCarried = IM_COL32(70, 130, 110, 255);  // released, carried by another model
 const ImU32 kCollision = IM_COL32(240, 60, 200, 255); // the motion paths' colour for collisions
 const ImU32 kKey = IM_COL32(215, 215, 215, 255);
 const ImU32 kKeyMoving = IM_COL32(255, 165, 30, 110); // where dragged keys were
@@ -159,7 +160,9 @@ PanelPlace DopeSheet::draw(EditorSession &session, const ScreenRect &rect) {
         for (const ReleasedSpan &s : spans_[model]) {
             const double x0 = std::max(tracks.x, layout.x_of(s.t0)), x1 = std::min(right, layout.x_of(s.t1));
             if (x1 <= x0) continue;
-            dl->AddRectFilled(v2(x0, y + 2), v2(std::max(x1, x0 + 1), y + row_h - 2), s.motion == ANI_MOTION_FREE ? kFree : kRest);
+            dl->AddRectFilled(v2(x0, y + 2), v2(std::max(x1, x0 + 1), y + row_h - 2), s.motion == ANI_MOTION_FREE      ? kFree
+                                                                                       : s.motion == ANI_MOTION_CARRIED ? kCarried
+                                                                                                                        : kRest);
         }
     }
     for (const EventTick &t : event_ticks(layout, session.timeline().events(), static_cast<int>(doc.models().size()))) {

@@ -160,7 +160,7 @@ std::int64_t retime_offset(const DopeSheetLayout &layout, const KeyRef &grabbed,
 std::vector<ReleasedSpan> released_spans(const std::vector<ani_motion_segment> &segments) {
     std::vector<ReleasedSpan> spans;
     for (const ani_motion_segment &s : segments) {
-        if (s.motion != ANI_MOTION_FREE && s.motion != ANI_MOTION_REST) continue;
+        if (s.motion != ANI_MOTION_FREE && s.motion != ANI_MOTION_REST && s.motion != ANI_MOTION_CARRIED) continue;
         if (!spans.empty() && spans.back().motion == s.motion && s.t0 <= spans.back().t1 + 1e-9 && s.t0 >= spans.back().t0) {
             spans.back().t1 = std::max(spans.back().t1, s.t1);
             continue;

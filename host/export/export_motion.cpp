@@ -78,6 +78,10 @@ class ModelMotion {
             Piece piece;
             if (!s || s->motion == ANI_MOTION_KEYED) {
                 piece.value = [this](double t) { return timeline_.keyed().model(m_, t).center; };
+            } else if (s->motion == ANI_MOTION_CARRIED) {
+                // Where its carrier takes it (sampled as its carrier's keys are).
+                piece.value = [this](double t) { return timeline_.placement(m_, t).center; };
+                piece.rate = [this](double t) { return timeline_.placement(m_, t).velocity; };
             } else {
                 const ani_motion_segment seg = *s;
                 const RotationSegment *r = pivot ? timeline_.rotation_at(m_, mid) : nullptr;
@@ -125,6 +129,10 @@ class ModelMotion {
             cuts.insert(r.t0);
             cuts.insert(r.t1);
         }
+        for (const ani_carried_segment &c : timeline_.carried(m_)) {
+            cuts.insert(c.t0);
+            cuts.insert(c.t1);
+        }
         const std::vector<double> times = breakpoints(cuts, options_.from, options_.until);
         auto keyed = [this](double t) {
             return euler_rotation(timeline_.keyed().model(m_, t).angles);
@@ -136,6 +144,8 @@ class ModelMotion {
             if (r) {
                 const RotationSegment turn = *r;
                 f = [turn](double t) { return orientation_at(turn, t); };
+            } else if (timeline_.carried_at(m_, 0.5 * (a + b))) {
+                f = [this](double t) { return timeline_.placement(m_, t).q; };
             }
             motion_keys::append_rotation(keys, a, b, f, options_.rotation_tolerance,
                                          &stats_.rotation);

@@ -4,9 +4,9 @@
 // Translation and scale are cubic Hermite keys (motion_keys.hpp): a key at every keyframe and
 // every event, each span the closed form's own cubic (free flight's parabola, the interpolators'
 // spans), exact to rounding; only a model turned about a point that is not its origin (its
-// centre of mass) is sampled. Rotation is slerped keys: exact for a turn at a constant rate about
-// a fixed axis (keys at most 90 degrees apart), sampled within a bound for keyed Euler angles,
-// torque-free tumbling, spin-up and hinges.
+// centre of mass), or carried by another model, is sampled. Rotation is slerped keys: exact for a
+// turn at a constant rate about a fixed axis (keys at most 90 degrees apart), sampled within a
+// bound for keyed Euler angles, torque-free tumbling, spin-up, hinges and carried models.
 #pragma once
 
 #include "export/motion_keys.hpp"

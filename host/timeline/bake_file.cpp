@@ -119,7 +119,7 @@ class Reader {
 
 // The bytes of each record in the file, for Reader::count.
 constexpr std::size_t kMotionBytes = 4 + 4 + 8 * 11, kRotationBytes = 1 + 4 + 8 * 28,
-                      kEventBytes = 8 * 9, kOverlapBytes = 8 * 6;
+                      kCarriedBytes = 4 + 4 + 8 * 9, kEventBytes = 8 * 9, kOverlapBytes = 8 * 6;
 
 // What a bake depends on. The document counts only as it bears on motion (a colour, a camera
 // key or a light changes no bake), and each part is a hash of a canonical serialisation.
@@ -341,6 +341,17 @@ void write_state(Writer &w, const BakedState &b) {
         w.u64(list.size());
         for (const RotationSegment &s : list) write_rotation(w, s);
     }
+    for (const auto &list : b.carried) {
+        w.u64(list.size());
+        for (const ani_carried_segment &s : list) {
+            w.u32(s.model);
+            w.u32(s.carrier);
+            w.f64(s.t0);
+            w.f64(s.t1);
+            w.vec(s.offset);
+            w.quat(s.relative);
+        }
+    }
     w.u64(b.events.size());
     for (const ani_collision_event &e : b.events) {
         w.f64(e.t);
@@ -365,6 +376,7 @@ BakedState read_state(Reader &r, std::size_t models) {
     b.until = r.f64();
     b.segments.resize(models);
     b.rotations.resize(models);
+    b.carried.resize(models);
     const auto check_model = [&](std::uint32_t m, std::size_t expected) {
         if (m != expected)
             r.corrupt("a segment of model " + std::to_string(m) + " in model " +
@@ -379,7 +391,7 @@ BakedState read_state(Reader &r, std::size_t models) {
             s.t1 = r.f64();
             for (ani_vec3 *v : {&s.p0, &s.v0, &s.a}) *v = r.vec();
             check_model(s.model, m);
-            if (s.motion < ANI_MOTION_KEYED || s.motion > ANI_MOTION_REST)
+            if (s.motion < ANI_MOTION_KEYED || s.motion > ANI_MOTION_CARRIED)
                 r.corrupt("a motion of unknown kind");
         }
     }
@@ -387,6 +399,20 @@ BakedState read_state(Reader &r, std::size_t models) {
         for (std::size_t n = r.count(kRotationBytes); n > 0; --n) {
             b.rotations[m].push_back(read_rotation(r));
             check_model(b.rotations[m].back().model, m);
+        }
+    }
+    for (std::size_t m = 0; m < models; ++m) {
+        b.carried[m].resize(r.count(kCarriedBytes));
+        for (ani_carried_segment &s : b.carried[m]) {
+            s.model = r.u32();
+            s.carrier = r.u32();
+            s.t0 = r.f64();
+            s.t1 = r.f64();
+            s.offset = r.vec();
+            s.relative = r.quat();
+            check_model(s.model, m);
+            if (s.carrier >= models || s.carrier == s.model)
+                r.corrupt("a model carried by a model there is not");
         }
     }
     b.events.resize(r.count(kEventBytes));

@@ -19,7 +19,7 @@ struct BakeFileError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-inline constexpr std::uint32_t kBakeFormatVersion = 1;
+inline constexpr std::uint32_t kBakeFormatVersion = 2; // 2: carried segments (ABI 1.8)
 
 // Writes the timeline's bake to `path`, through `.NAME.partial` beside it, renamed when whole (a
 // failure part way leaves an earlier file as it was). Throws BakeFileError.

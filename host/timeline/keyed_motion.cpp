@@ -121,6 +121,14 @@ std::vector<ModelPose> KeyedMotion::model(int m, const std::vector<double> &time
     return out;
 }
 
+void keyed_turning(const ModelPose &pose, glm::dquat &q, glm::dvec3 &w) {
+    const glm::dvec3 kX{1.0, 0.0, 0.0}, kY{0.0, 1.0, 0.0}, kZ{0.0, 0.0, 1.0};
+    const glm::dvec3 a = glm::radians(pose.angles), rate = glm::radians(pose.angle_rates);
+    const glm::dquat A = glm::angleAxis(a.x, kX), B = glm::angleAxis(a.y, kY), C = glm::angleAxis(a.z, kZ);
+    q = A * B * C;
+    w = rate.x * kX + A * (rate.y * kY) + (A * B) * (rate.z * kZ);
+}
+
 ModelPose KeyedMotion::model(int m, double t) const { return model(m, std::vector<double>{t}).front(); }
 
 CameraState KeyedMotion::camera(double t) const {

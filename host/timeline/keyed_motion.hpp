@@ -10,6 +10,8 @@
 #include <animator/interpolator.h>
 #include <animator/physics.h>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <memory>
 #include <vector>
 
@@ -22,6 +24,11 @@ struct ModelPose {
     glm::dvec3 velocity{0.0}; // of the center, m/s
     glm::dvec3 angle_rates{0.0}; // of the keyed angles, degrees per second (the interpolator's; 0 outside the keys)
 };
+
+// The rotation R = Rx(a) Ry(b) Rz(c) of a pose's angles (in its parent's frame) and its angular
+// velocity there, exact from the angle rates: from R' R^T = [w]x for a product A B C,
+// w = a' e_x + A (b' e_y) + A B (c' e_z).
+void keyed_turning(const ModelPose &pose, glm::dquat &q, glm::dvec3 &w);
 
 // The interpolator instances a document needs: its choice (the seed's linear by default) for
 // everything but the center of a model with Dynamics on, which is kinematic.

@@ -55,6 +55,8 @@ struct BakeContext {
     std::map<std::string, double> *counts;
     std::vector<std::vector<RotationSegment>> *rotations;
     std::vector<ani_overlap> *overlaps;
+    std::vector<std::vector<ani_carried_segment>> *carried;
+    const std::vector<Model> *models;
     std::string refused = {}; // a free-rotation segment the host cannot evaluate
 
     // Refuses the bake for model `model`'s segment of `kind` at t0 when `why` says something.
@@ -79,9 +81,10 @@ template <std::size_t N> bool all_finite(const double (&numbers)[N]) {
     return std::all_of(numbers, numbers + N, [](double x) { return std::isfinite(x); });
 }
 
-// Euler angles (degrees in [0, 360), the documents' X-Y-Z convention) of a rotation segment at t.
-glm::dvec3 angles_at(const RotationSegment &s, double t) {
-    const glm::dmat4 m = glm::mat4_cast(orientation_at(s, t));
+} // namespace
+
+glm::dvec3 angles_of(const glm::dquat &q) {
+    const glm::dmat4 m = glm::mat4_cast(q);
     double x = 0.0, y = 0.0, z = 0.0;
     glm::extractEulerAngleXYZ(m, x, y, z);
     glm::dvec3 degrees = glm::degrees(glm::dvec3(x, y, z));
@@ -91,8 +94,6 @@ glm::dvec3 angles_at(const RotationSegment &s, double t) {
     }
     return degrees;
 }
-
-} // namespace
 
 glm::dquat orientation_at(const RotationSegment &s, double t) {
     if (s.free) {
@@ -139,7 +140,7 @@ Timeline::Timeline(const Document &doc, PluginRegistry &plugins, const std::stri
     : doc_(doc), plugins_(plugins), interpolators_(Interpolators::load(plugins, doc)),
       keyed_(std::make_unique<KeyedMotion>(doc_, interpolators_)), backend_override_(backend),
       physics_(physics_instance(plugins, doc_, backend)), segments_(doc_.models().size()),
-      rotations_(doc_.models().size()) {}
+      rotations_(doc_.models().size()), carried_(doc_.models().size()) {}
 
 const ani_motion_segment *Timeline::segment_at(int model, double t) const {
     const auto &list = segments_[static_cast<size_t>(model)];
@@ -156,10 +157,80 @@ const RotationSegment *Timeline::rotation_at(int model, double t) const {
     return r != turns.begin() && t <= (r - 1)->t1 ? &*(r - 1) : nullptr;
 }
 
+const ani_carried_segment *Timeline::carried_at(int model, double t) const {
+    const auto &list = carried_[static_cast<size_t>(model)];
+    const auto c = std::upper_bound(list.begin(), list.end(), t,
+                                    [](double time, const ani_carried_segment &x) { return time < x.t0; });
+    return c != list.begin() && t <= (c - 1)->t1 ? &*(c - 1) : nullptr;
+}
+
+Placement Timeline::placement(int model, double t) const {
+    return placement(model, t, 0);
+}
+
+Placement Timeline::placement(int model, double t, std::size_t depth) const {
+    Placement p;
+    const ani_motion_segment *s = segment_at(model, t);
+    const ani_carried_segment *c = s && s->motion == ANI_MOTION_CARRIED ? carried_at(model, t) : nullptr;
+    // (A chain of carriers longer than the models would come back to one: carried_refusal
+    // refuses such a bake, and a restored one ends it here.)
+    if (c && depth < carried_.size()) {
+        const Placement carrier = placement(static_cast<int>(c->carrier), t, depth + 1);
+        const glm::dvec3 arm = carrier.q * glm::dvec3(c->offset.x, c->offset.y, c->offset.z);
+        p.center = carrier.center + arm;
+        p.velocity = carrier.velocity + glm::cross(carrier.w, arm);
+        p.q = glm::normalize(carrier.q * glm::dquat(c->relative.w, c->relative.x, c->relative.y, c->relative.z));
+        p.w = carrier.w;
+        return p;
+    }
+    const ModelPose pose = keyed_->model(model, t);
+    p.center = pose.center;
+    p.velocity = pose.velocity;
+    if (s && s->motion != ANI_MOTION_KEYED && s->motion != ANI_MOTION_CARRIED) origin_at(model, *s, t, p.center, p.velocity);
+    if (const RotationSegment *r = rotation_at(model, t)) {
+        p.q = orientation_at(*r, t);
+        p.w = angular_velocity_at(*r, t);
+    } else {
+        keyed_turning(pose, p.q, p.w);
+    }
+    return p;
+}
+
+std::string Timeline::carried_refusal(double from) const {
+    const std::size_t n = carried_.size();
+    for (std::size_t m = 0; m < n; ++m) {
+        for (const ani_carried_segment &c : carried_[m]) {
+            if (c.t1 < from) continue;
+            const std::string which = "model " + std::to_string(m) + "'s carried segment at t = " + std::to_string(c.t0) + " s: ";
+            // Along the chain of carriers at the middle of the span, no model comes back.
+            const double mid = 0.5 * (c.t0 + c.t1);
+            std::vector<char> seen(n, 0);
+            seen[m] = 1;
+            for (const ani_carried_segment *link = &c; link;) {
+                const std::size_t up = link->carrier;
+                if (seen[up]) return which + "its chain of carriers comes back to model " + std::to_string(up);
+                seen[up] = 1;
+                const ani_motion_segment *s = segment_at(static_cast<int>(up), mid);
+                link = s && s->motion == ANI_MOTION_CARRIED ? carried_at(static_cast<int>(up), mid) : nullptr;
+            }
+            const ani_motion_segment *s = segment_at(static_cast<int>(m), mid);
+            if (!s || s->motion != ANI_MOTION_CARRIED) return which + "its motion segment there does not say ANI_MOTION_CARRIED";
+            if (rotation_at(static_cast<int>(m), mid)) return which + "a rotation segment covers it too";
+        }
+    }
+    return "";
+}
+
 ani_body_state Timeline::state_at(int model, double t) const {
     ani_body_state state{};
     const ani_motion_segment *s = segment_at(model, t);
-    if (!s || s->motion == ANI_MOTION_KEYED) {
+    if (s && s->motion == ANI_MOTION_CARRIED) {
+        // Given to the backend as free at this state (physics.h): it finds again what carries it.
+        const Placement p = placement(model, t);
+        state.motion = ANI_MOTION_FREE;
+        state.center = to_ani(p.center);
+        state.velocity = to_ani(p.velocity);
+    } else if (!s || s->motion == ANI_MOTION_KEYED) {
         const ModelPose pose = keyed_->model(model, t);
         state.motion = ANI_MOTION_KEYED;
         state.center = to_ani(pose.center);
@@ -249,6 +320,11 @@ void Timeline::truncate(double from) {
                    list.end());
         if (!list.empty() && list.back().t1 > from) list.back().t1 = from;
     }
+    for (auto &list : carried_) {
+        list.erase(std::remove_if(list.begin(), list.end(), [&](const ani_carried_segment &s) { return s.t0 >= from; }),
+                   list.end());
+        if (!list.empty() && list.back().t1 > from) list.back().t1 = from;
+    }
     overlaps_.erase(std::remove_if(overlaps_.begin(), overlaps_.end(), [&](const ani_overlap &o) { return o.t >= from; }),
                     overlaps_.end());
     baked_until_ = std::min(baked_until_, from);
@@ -282,6 +358,11 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
             pm.start_orientation = ani_quat{q.w, q.x, q.y, q.z};
             pm.start_angular_velocity = to_ani(angular_velocity_at(*r, from));
             pm.start_turning = 1;
+        } else if (starts[m].motion == ANI_MOTION_FREE && carried_at(static_cast<int>(m), from)) {
+            const Placement p = placement(static_cast<int>(m), from);
+            pm.start_orientation = ani_quat{p.q.w, p.q.x, p.q.y, p.q.z};
+            pm.start_angular_velocity = to_ani(p.w);
+            pm.start_turning = 1;
         }
         for (const Keyframe *k : doc_.keys_of(static_cast<int>(m))) key_times[m].push_back(static_cast<double>(k->time_ms) / 1000.0);
         pm.key_times = key_times[m].data();
@@ -309,7 +390,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         }
     };
 
-    BakeContext context{this, &segments_, &events_, &progress, &stats_.backend_counts, &rotations_, &overlaps_};
+    BakeContext context{this, &segments_, &events_, &progress, &stats_.backend_counts, &rotations_, &overlaps_, &carried_, &models};
     ani_bake_sink sink{};
     sink.context = &context;
     sink.segment = [](void *c, const ani_motion_segment *s) {
@@ -384,6 +465,25 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         r.hinge = hinge_of(r);
         (*ctx->rotations)[s->model].push_back(std::move(r));
     };
+    sink.carried = [](void *c, const ani_carried_segment *s) {
+        auto *ctx = static_cast<BakeContext *>(c);
+        const std::size_t n = ctx->carried->size();
+        if (s->model >= n || !ctx->refused.empty()) return;
+        const double numbers[] = {s->t0, s->t1, s->offset.x, s->offset.y, s->offset.z,
+                                  s->relative.w, s->relative.x, s->relative.y, s->relative.z};
+        const glm::dquat q(s->relative.w, s->relative.x, s->relative.y, s->relative.z);
+        std::string why;
+        if (!all_finite(numbers)) why = "a time, the offset or the orientation is not finite";
+        else if (glm::length(q) == 0.0) why = "the orientation is zero";
+        else if (s->carrier >= n || s->carrier == s->model) why = "its carrier " + std::to_string(s->carrier) + " is not another model";
+        else if ((*ctx->models)[s->model].parent >= 0 || (*ctx->models)[s->carrier].parent >= 0)
+            why = "a part of a jointed model carries or is carried";
+        if (ctx->refuse(s->model, "carried", s->t0, why)) return;
+        ani_carried_segment r = *s;
+        const glm::dquat unit = glm::normalize(q);
+        r.relative = ani_quat{unit.w, unit.x, unit.y, unit.z};
+        (*ctx->carried)[s->model].push_back(r);
+    };
     sink.overlap = [](void *c, const ani_overlap *o) {
         auto *ctx = static_cast<BakeContext *>(c);
         const std::size_t n = ctx->segments->size();
@@ -406,6 +506,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         truncate(from);
         throw PluginError("physics backend '" + physics_->info().id + "': " + status.message);
     }
+    if (context.refused.empty()) context.refused = carried_refusal(from);
     if (!context.refused.empty()) {
         truncate(from);
         throw PluginError("physics backend '" + physics_->info().id + "' reported " + context.refused);
@@ -416,16 +517,17 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
 }
 
 BakedState Timeline::baked_state() const {
-    return BakedState{baked_any_ ? baked_until_ : 0.0, segments_, rotations_, events_, overlaps_};
+    return BakedState{baked_any_ ? baked_until_ : 0.0, segments_, rotations_, carried_, events_, overlaps_};
 }
 
 void Timeline::restore(BakedState state) {
     const std::size_t n = doc_.models().size();
-    if (state.segments.size() != n || state.rotations.size() != n)
+    if (state.segments.size() != n || state.rotations.size() != n || state.carried.size() != n)
         throw std::invalid_argument("a bake of " + std::to_string(state.segments.size()) + " models for a document of " +
                                     std::to_string(n));
     segments_ = std::move(state.segments);
     rotations_ = std::move(state.rotations);
+    carried_ = std::move(state.carried);
     events_ = std::move(state.events);
     overlaps_ = std::move(state.overlaps);
     baked_until_ = state.until;
@@ -458,9 +560,17 @@ Frame Timeline::evaluate(double t) const {
         ModelPose pose = keyed_->model(m, t); // rotation and scale always come from the keys
         const ani_motion_segment *s = segment_at(m, t);
         frame.motion[static_cast<size_t>(m)] = s ? s->motion : ANI_MOTION_KEYED;
+        if (s && s->motion == ANI_MOTION_CARRIED) {
+            const Placement p = placement(m, t);
+            pose.center = p.center;
+            pose.velocity = p.velocity;
+            pose.angles = angles_of(p.q);
+            frame.models[static_cast<size_t>(m)] = pose;
+            continue;
+        }
         if (s && s->motion != ANI_MOTION_KEYED) origin_at(m, *s, t, pose.center, pose.velocity);
         // A backend that turns models (rigid-body rotation) overrides the keys' angles.
-        if (const RotationSegment *r = rotation_at(m, t)) pose.angles = angles_at(*r, t);
+        if (const RotationSegment *r = rotation_at(m, t)) pose.angles = angles_of(orientation_at(*r, t));
         frame.models[static_cast<size_t>(m)] = pose;
     }
     frame.camera = keyed_->camera(t);
@@ -516,6 +626,7 @@ void Timeline::edit(const Document &doc) {
     if (doc_.models().size() != segments_.size()) {
         segments_.assign(doc_.models().size(), {});
         rotations_.assign(doc_.models().size(), {});
+        carried_.assign(doc_.models().size(), {});
         overlaps_.clear();
     }
     if (baked_any_ && from < baked_until_) truncate(from);

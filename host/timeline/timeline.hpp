@@ -73,6 +73,7 @@ struct BakedState {
     double until = 0.0;
     std::vector<std::vector<ani_motion_segment>> segments; // per model, in time order
     std::vector<std::vector<RotationSegment>> rotations;   // per model, in time order
+    std::vector<std::vector<ani_carried_segment>> carried; // per model, in time order
     std::vector<ani_collision_event> events;
     std::vector<ani_overlap> overlaps;
 };
@@ -80,6 +81,18 @@ struct BakedState {
 // The world orientation and angular velocity (rad/s, world axes) of a rotation segment at t.
 glm::dquat orientation_at(const RotationSegment &s, double t);
 glm::dvec3 angular_velocity_at(const RotationSegment &s, double t);
+
+// Where a model without a parent is at one time, and how it moves: its origin and that point's
+// velocity, its world orientation (unit, without its scale) and angular velocity (rad/s, world
+// axes).
+struct Placement {
+    glm::dvec3 center{0.0}, velocity{0.0};
+    glm::dquat q{1.0, 0.0, 0.0, 0.0};
+    glm::dvec3 w{0.0};
+};
+
+// Euler angles in degrees in [0, 360) (the documents' X-Y-Z convention) of an orientation.
+glm::dvec3 angles_of(const glm::dquat &q);
 
 class Timeline {
   public:
@@ -144,6 +157,12 @@ class Timeline {
     const KeyedMotion &keyed() const { return *keyed_; }
     // The backend's rotation segment that turns the model at t, if one does.
     const RotationSegment *rotation_at(int model, double t) const;
+    // The backend's carried segments of a model (ABI 1.8), and the one that carries it at t.
+    const std::vector<ani_carried_segment> &carried(int model) const { return carried_[static_cast<size_t>(model)]; }
+    const ani_carried_segment *carried_at(int model, double t) const;
+    // Model `model` (without a parent) at t, within what is baked: from its keys, the backend's
+    // segments, or its carrier's placement where it is carried.
+    Placement placement(int model, double t) const;
 
   private:
     void truncate(double from);
@@ -153,6 +172,9 @@ class Timeline {
     void origin_at(int model, const ani_motion_segment &s, double t, glm::dvec3 &center,
                    glm::dvec3 &velocity) const;
     const ani_motion_segment *segment_at(int model, double t) const;
+    Placement placement(int model, double t, std::size_t depth) const;
+    // Empty, or why the carried segments reported since `from` cannot be evaluated.
+    std::string carried_refusal(double from) const;
     void run_bake(double from, double until, const std::function<bool(double)> &progress);
 
     Document doc_;
@@ -170,6 +192,7 @@ class Timeline {
     std::vector<std::vector<ani_motion_segment>> segments_;
     std::vector<ani_collision_event> events_;
     std::vector<std::vector<RotationSegment>> rotations_; // per model, in time order
+    std::vector<std::vector<ani_carried_segment>> carried_; // per model, in time order
     std::vector<ani_overlap> overlaps_;
     double baked_until_ = 0.0;
     bool baked_any_ = false;

@@ -439,9 +439,9 @@ TEST_CASE("animator render --bake refuses a bake that does not fit, saying why, 
     refused(drop, bake, " --param broad_phase=2", "was baked with physics.custom's parameter 'broad_phase' = 0, not 2");
     // Another version of the format, truncated, corrupt, not a bake, missing.
     std::string later = bytes;
-    later[8] = 2;
+    later[8] = 9;
     test::write_file(dir / "later.bake", later);
-    refused(drop, (dir / "later.bake").string(), "", "format version 2, and this animator reads version 1");
+    refused(drop, (dir / "later.bake").string(), "", "format version 9, and this animator reads version 2");
     test::write_file(dir / "short.bake", bytes.substr(0, bytes.size() / 2));
     refused(drop, (dir / "short.bake").string(), "", "is truncated");
     std::string flipped = bytes;

@@ -182,8 +182,9 @@ TEST_CASE("a bake file is refused, leaving the timeline as it was, when it does 
     flipped[bytes.size() / 2] = static_cast<char>(flipped[bytes.size() / 2] ^ 0x10);
     refused(flipped, "is corrupt: its checksum does not match");
     std::string later = bytes;
-    later[8] = 2; // the format version, little-endian after the 8 bytes of magic
-    refused(later, "format version 2, and this animator reads version 1");
+    later[8] = static_cast<char>(kBakeFormatVersion + 1); // little-endian after the 8 bytes of magic
+    refused(later, "format version " + std::to_string(kBakeFormatVersion + 1) + ", and this animator reads version " +
+                       std::to_string(kBakeFormatVersion));
 
     // Another backend, a parameter, an edit that moves something, another mesh.
     Document doc = original->document();

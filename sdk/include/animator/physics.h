@@ -43,7 +43,11 @@ typedef struct ani_time_span {
 typedef enum ani_motion_kind {
     ANI_MOTION_KEYED = 1, /* driven by its keyframes (the host's interpolation) */
     ANI_MOTION_FREE = 2,  /* free flight: the closed form of the segment */
-    ANI_MOTION_REST = 3   /* not moving (a = v0 = 0) */
+    ANI_MOTION_REST = 3,  /* not moving (a = v0 = 0) */
+    /* Since ABI 1.8: carried by another model (ani_carried_segment says by which and where);
+     * the motion segment's p0, v0 and a are 0 and unused. A host gives a backend a model carried
+     * at t_begin as ANI_MOTION_FREE, with its velocity then and start_turning set. */
+    ANI_MOTION_CARRIED = 4
 } ani_motion_kind;
 
 typedef struct ani_body_state {
@@ -172,6 +176,23 @@ typedef struct ani_hinge_segment {
     ani_vec3 pivot; /* the point of the line it turns about, in the model's own frame as scaled */
 } ani_hinge_segment;
 
+/* Since ABI 1.8: a model carried by another over [t0, t1] (a box that stands on a platform whose
+ * keys accelerate it, turn it or lift it, and sticks to it): it moves rigidly with model
+ * `carrier`. With c(t) where the carrier's origin is and Q(t) its world orientation (without its
+ * scale; from its keys, or from the backend's segments where they turn or move it), the model's
+ * origin is c(t) + Q(t) offset and its orientation Q(t) relative; its velocity is the carrier's
+ * at that point, v_c(t) + w_c(t) x Q(t) offset, and its angular velocity the carrier's. Its scale
+ * is its keys'. The model's motion segments over the span say ANI_MOTION_CARRIED, and no rotation
+ * segment of it covers the span. Both models have no parent (they are not parts of a jointed
+ * model) and the carrier is not the model; the carrier may itself be carried, but not by a chain
+ * that comes back to the model. */
+typedef struct ani_carried_segment {
+    uint32_t model, carrier;
+    double t0, t1;     /* seconds */
+    ani_vec3 offset;   /* metres: the model's origin in the carrier's frame (turned, not scaled) */
+    ani_quat relative; /* unit: the model's orientation in the carrier's frame */
+} ani_carried_segment;
+
 /* Since ABI 1.2: two models found overlapping when they start to interact (at the start of a
  * bake, when a model becomes free inside another, or when its keys take it back inside one).
  * The backend treats them as touching (docs/physics.md, "Models that start overlapping") and
@@ -216,6 +237,12 @@ typedef struct ani_bake_sink {
      * time order with their other rotation segments. The host refuses one that is not finite,
      * whose axis is not unit or whose omega2 is not positive (ani::Pendulum::refusal). */
     void (*hinge)(void *context, const ani_hinge_segment *segment);
+    /* Since ABI 1.8 (a backend built for 1.8 runs only in a host of 1.8 or newer, which always
+     * sets this field, possibly to NULL): the carried segments, each model's in time order, each
+     * reported with the ANI_MOTION_CARRIED motion segment of the same span. The host refuses the
+     * bake when one is not finite, its relative orientation is zero, or a model or carrier is
+     * not one it can carry (see ani_carried_segment). */
+    void (*carried)(void *context, const ani_carried_segment *segment);
 } ani_bake_sink;
 
 typedef struct ani_physics_api {
