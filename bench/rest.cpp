@@ -1,11 +1,13 @@
 // Run time against error on the scenes of contacts that last (docs/physics.md, "Sliding,
-// skidding and rolling", "Tipping", "Resting on other models" and "Riding a keyed platform"):
+// skidding and rolling", "Tipping", "Resting on other models", "Riding a keyed platform" and
+// "Sticking to a platform that accelerates"):
 // each shipped scene baked by physics.custom once and by physics.bullet at steps from 1/60 to
 // 1/4000 s, its errors against the closed forms (for the tip, the pendulum equation integrated
 // finely) that tests/physics/sliding_test.cpp and carrier_test.cpp check physics.custom with.
 #include "bench.hpp"
 
 #include "bullet_support.hpp"
+#include "physics/platform_lift.hpp"
 #include "physics/platform_ride.hpp"
 #include "physics/tipping_pendulum.hpp"
 
@@ -229,6 +231,20 @@ std::vector<RestScene> scenes() {
              return std::vector<double>{worst(7.0, [&](double s) {
                  const glm::dvec3 c = t.evaluate(s).models[static_cast<size_t>(m)].center;
                  return glm::length(c - glm::dvec3(platform_ride::box_x(s, G), 1.35, 0.0));
+             })};
+         }},
+        {"lift",
+         "animations/platform_lift.ani",
+         "box stuck to a platform eased across and lifted 2 m, mu 0.5 (to 7 s)",
+         7.0,
+         {"box's position (m)"},
+         [](const Timeline &t, const Document &doc) {
+             // The closed form (physics/platform_lift.hpp): the platform's eased keys, which the
+             // box follows 0.35 m above its centre.
+             const int m = model_named(doc, "box");
+             return std::vector<double>{worst(7.0, [&](double s) {
+                 const glm::dvec3 c = t.evaluate(s).models[static_cast<size_t>(m)].center;
+                 return glm::length(c - glm::dvec3(platform_lift::box_x(s), platform_lift::box_y(s), 0.0));
              })};
          }},
     };

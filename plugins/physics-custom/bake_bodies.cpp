@@ -332,6 +332,12 @@ Path EventBake::from_now(const Body &b, double now) const {
 // A body's pose at t: its keys', or its free path's center with its keys' rotation and
 // scale (which always come from the keys).
 Pose EventBake::pose(const Body &b, double t) const {
+    if (b.carried()) { // where its carrier takes it (it does not turn meanwhile)
+        Pose p = pose(bodies_[static_cast<size_t>(b.carried_by)], t);
+        p.center += b.carried_offset;
+        p.linear = b.carried_linear;
+        return p;
+    }
     glm::dvec3 v;
     const ani_model_state s = keyed_state(*scene_, b.model, t, &v);
     Pose p;
@@ -393,7 +399,7 @@ double EventBake::mesh_reach(const ani_mesh_view &mesh) {
 
 // The acceleration a body has now: its path's, or none under its keys.
 glm::dvec3 EventBake::acceleration(const Body &b) {
-    return b.keyed() ? glm::dvec3(0.0) : b.path.a;
+    return b.driven() ? glm::dvec3(0.0) : b.path.a;
 }
 
 double EventBake::body_size(const Body &b) const {

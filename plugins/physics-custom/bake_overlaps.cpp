@@ -98,7 +98,7 @@ void EventBake::meet_overlap(int i, int other, const Seen &seen, double t) {
     record.since = t;
     // A model its keys drive (at the start, or put back inside another at its next key) is
     // where its keys say: the pair is left alone until apart.
-    const bool keyed = b.keyed() || (o && o->keyed());
+    const bool keyed = b.driven() || (o && o->driven());
     if (keyed) {
         report_overlap(i, other, t, seen.depth, seen.contact.normal);
         memory_.add(record);

@@ -57,7 +57,7 @@ double EventBake::point_speed(const Body &b, double t, double dt) const {
     const double turning = frobenius(q.linear - p.linear) / h * reach;
     const double speed = std::max(glm::length(p.velocity), glm::length(q.velocity)) + turning;
     // Keyed motion is known only by evaluation: a margin for its changes within the step.
-    return b.keyed() ? 1.5 * speed + 1e-12 : speed + glm::length(b.path.a) * dt;
+    return b.driven() ? 1.5 * speed + 1e-12 : speed + glm::length(b.path.a) * dt;
 }
 
 // The velocity of the material point of body b at `point` at time t (a keyed model turning
@@ -65,7 +65,7 @@ double EventBake::point_speed(const Body &b, double t, double dt) const {
 glm::dvec3 EventBake::point_velocity(const Body &b, const glm::dvec3 &point, double t) const {
     if (b.turning())
         return b.path.velocity(t - b.t0) + glm::cross(b.spin.rate(t), point - b.path.at(t - b.t0));
-    if (!b.keyed()) return b.path.velocity(t - b.t0); // free: it translates
+    if (!b.driven()) return b.path.velocity(t - b.t0); // free: it translates
     const Pose p = pose(b, t);
     if (b.sphere) return p.velocity;
     const glm::dvec3 local = glm::inverse(p.linear) * (point - p.center);
@@ -235,6 +235,8 @@ void EventBake::predict(int i, double now) {
     if (b.settles_at < next.t) next = predicted(b.settles_at, EventKind::kSettle);
     if (b.carrier >= 0 && b.carrier_until < next.t) // its carrier's next key (bake_carrier.cpp)
         next = predicted(b.carrier_until, EventKind::kCarrier);
+    if (b.carried() && b.carried_until < next.t) // the end of the span it sticks to its carrier
+        next = predicted(b.carried_until, EventKind::kCarrier);
     if (!b.active) {
         set_prediction(i, next);
         return;

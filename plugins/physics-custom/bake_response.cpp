@@ -310,7 +310,7 @@ double EventBake::collision_mass(const Body &b) const {
 
 ImpulseBody EventBake::impulse_body(const Body &b, const glm::dvec3 &point, double t) const {
     ImpulseBody x;
-    if (b.keyed() || !b.dynamics) {
+    if (b.driven() || !b.dynamics) {
         x.v = point_velocity(b, point, t);
         return x;
     }

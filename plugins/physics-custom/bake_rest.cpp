@@ -93,7 +93,7 @@ bool EventBake::settle_on_face(int i, const Obstacle &ob, const Holder &holder, 
     Body &b = bodies_[static_cast<size_t>(i)];
     // (A turning model settles only while it does not turn.)
     if (!(b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))) || b.supported() ||
-        b.motion == ANI_MOTION_REST || !(glm::dot(b.free_a, n) < 0.0))
+        b.driven() || b.motion == ANI_MOTION_REST || !(glm::dot(b.free_a, n) < 0.0))
         return false;
     const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
     // Where its tests against the obstacle place it: moved out by its depth while it
@@ -315,7 +315,7 @@ std::optional<glm::dvec3> EventBake::standing_point(const std::vector<glm::dvec3
 // turning, rests or slides there from the start: settle_on, as if it had landed there.
 bool EventBake::try_settle_mesh(int i, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
-    if (b.sphere || !b.active || b.keyed() || b.supported() || b.motion == ANI_MOTION_REST ||
+    if (b.sphere || !b.active || b.driven() || b.supported() || b.motion == ANI_MOTION_REST ||
         !(b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))))
         return false;
     const glm::dvec3 c = b.path.at(t - b.t0);
@@ -503,7 +503,7 @@ bool EventBake::sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec
                               double t) {
     Body &b = bodies_[static_cast<size_t>(x)];
     const Body &under = bodies_[static_cast<size_t>(y)];
-    if (!(b.turning() || b.free_sphere()) || b.keyed() || !b.dynamics || b.supported() ||
+    if (!(b.turning() || b.free_sphere()) || b.driven() || !b.dynamics || b.supported() ||
         b.on_body >= 0 || !resting(under))
         return false;
     const double g_n = -glm::dot(b.free_a, n);
@@ -563,7 +563,7 @@ void EventBake::settle_stacks(double t) {
         changed = false;
         for (size_t x = 0; x < bodies_.size(); ++x) {
             const Body &b = bodies_[x];
-            if (!b.active || !b.turning() || b.keyed() || resting(b) ||
+            if (!b.active || !b.turning() || b.driven() || resting(b) ||
                 b.path.velocity(t - b.t0) != glm::dvec3(0.0) || b.spin.rate(t) != glm::dvec3(0.0))
                 continue;
             const double slack = 1e-9 * std::max(1.0, 2.0 * body_size(b));

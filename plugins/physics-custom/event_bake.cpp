@@ -87,6 +87,8 @@ void EventBake::advance_to_end() {
     for (Body &b : bodies_) {
         if (b.keyed())
             emit_keyed(b.model, b.keyed_from, t_end_);
+        else if (b.carried())
+            emit_carried(b, t_end_);
         else if (b.active)
             close_segment(b, t_end_);
         if (b.spin.on) emit_spin(b, t_end_);
@@ -119,6 +121,7 @@ void EventBake::handle(int i, const Predicted &event, double now) {
         if (!try_settle(i, now)) try_settle_mesh(i, now);
         break;
     case EventKind::kResume: // released at a contact, its next key takes it back
+        drop(i, now);
         close_segment(b, now);
         unfile(i);
         b.mode = Body::Mode::kKeyed;
@@ -157,6 +160,9 @@ void EventBake::handle(int i, const Predicted &event, double now) {
             ignore(i, event.other, now);
             break;
         }
+        // One stuck to a platform is knocked off it: free where it is, it takes the blow.
+        drop(i, now);
+        drop(event.other, now);
         collide_bodies(i, event.other, event.contact, event.points, now);
         predict(event.other, now);
         break;
@@ -171,6 +177,7 @@ void EventBake::handle(int i, const Predicted &event, double now) {
                 ignore(i, -1 - event.other, now);
             break;
         }
+        drop(i, now);
         collide_obstacle(i, obstacles_[static_cast<size_t>(event.other)], event.contact,
                          event.points, now);
         break;
@@ -189,7 +196,10 @@ void EventBake::handle(int i, const Predicted &event, double now) {
     case EventKind::kHinge: // unhinged above
         break;
     case EventKind::kCarrier: // its carrier's next key
-        recarry(i, now);
+        if (b.carried())
+            carry_again(i, now);
+        else
+            recarry(i, now);
         break;
     case EventKind::kSettle: // the Zeno bounces' accumulation time: resting from here
         rebase(b, now);

@@ -81,7 +81,7 @@ struct Hinge {
 // model with a mesh while its keys drive it (a moving wall). Over the bake a body is keyed (its
 // keys move it), free (a closed-form segment), or waiting (keyed, but with nothing to collide).
 struct Body {
-    enum class Mode { kKeyed, kFree };
+    enum class Mode { kKeyed, kFree, kCarried };
     uint32_t model = 0;
     bool sphere = false; // the seed's sphere special case; otherwise the model's triangles
     double radius = 0.0; // for a sphere: its radius when free
@@ -131,6 +131,16 @@ struct Body {
     glm::dvec3 support_v{0.0};
     double support_t = 0.0;
     std::vector<std::array<glm::dvec3, 3>> support_edges;
+    // Mode::kCarried: sticking to a keyed body whose keys accelerate it (bake_carrier.cpp,
+    // "sticking"): that body (its version then in carrier_version), from when, until when (its
+    // next key), its origin's offset from the carrier's (world axes: the carrier does not turn
+    // meanwhile) and its placement then (rotation and scale). Whether it turned before (its spin
+    // starts again when it is dropped).
+    int carried_by = -1;
+    double carried_from = 0.0, carried_until = kNever;
+    glm::dvec3 carried_offset{0.0};
+    glm::dmat3 carried_linear{1.0};
+    bool carried_spin = false;
     // Where it touches the support, relative to its center: a sphere's lowest point, or the
     // vertices of a mesh in the support's plane. It leaves the support when all have left it.
     std::vector<glm::dvec3> support_feet;
@@ -158,6 +168,9 @@ struct Body {
     std::shared_ptr<const Hinge> hinge;
 
     bool keyed() const { return mode == Mode::kKeyed; }
+    bool carried() const { return mode == Mode::kCarried; }
+    // Moved by keys, its own or its carrier's, not by a closed form of its own.
+    bool driven() const { return mode != Mode::kFree; }
     // Held up by a face: of a static model, or of a carrier.
     bool supported() const { return support >= 0 || carrier >= 0; }
     bool free_sphere() const { return sphere && mode == Mode::kFree; }
@@ -207,7 +220,8 @@ enum class EventKind {
     kSettle,
     kFriction, // sliding on its support: it stops, or its friction is aimed again
     kHinge,    // tipping over an edge, the contact forces it needs fail: it turns freely
-    kCarrier   // the body it rides changes its velocity (its next key): friction against that
+    kCarrier   // the body it rides changes its velocity (its next key): friction against that;
+               // or the span it is carried over ends
 };
 struct Predicted {
     double t = kNever;
@@ -509,9 +523,15 @@ class EventBake {
     void recarry(int i, double t);
     void carry_on(int j, double t);
     bool carries(int i, int j) const {
-        return bodies_[static_cast<size_t>(i)].carrier == j ||
-               bodies_[static_cast<size_t>(j)].carrier == i;
+        const Body &a = bodies_[static_cast<size_t>(i)], &b = bodies_[static_cast<size_t>(j)];
+        return a.carrier == j || b.carrier == i || a.carried_by == j || b.carried_by == i;
     }
+    // Sticking to a keyed platform that accelerates (bake_carrier.cpp).
+    bool stick(int i, int j, const glm::dvec3 &n, double t);
+    bool sticks(const Body &b, int j, const glm::dvec3 &n, double t, double end) const;
+    void emit_carried(const Body &b, double t);
+    void drop(int i, double t);
+    void carry_again(int i, double t);
 
     // The data, shared by every stage.
     const ani_physics_scene *scene_; // this call's (the host builds it anew for each)
@@ -540,7 +560,7 @@ class EventBake {
     } count_;
     std::size_t reports_ = 0;
     std::size_t sleepers_ = 0;         // bodies asleep on others
-    std::size_t riders_ = 0;           // bodies on carriers
+    std::size_t riders_ = 0;           // bodies on carriers, or carried
     std::array<double, 10> counted_{}; // the counts reported by the earlier slices
     std::vector<bool> is_body_;        // per model: a body (the others are reported each slice)
     double horizon_ = 0.0;             // how far predictions look

@@ -77,3 +77,37 @@ def case_platform_ride(c):
     check(abs(shots[7000][1] - x0) < 2, 'the box is not back where it started: x %.1f, %.1f at the start' %
           (shots[7000][1], x0))
     e.quit()
+
+
+def case_platform_lift(c):
+    """assets/animations/platform_lift.ani opened as a user would: the editor bakes the box stuck to
+    the platform that eases right and then lifts it, and says so. At 2 s the box has been carried
+    right, still at the platform's height; at 2.5 s (the platform waits) it is where it was, to the
+    pixel; at 5 s it has been lifted (higher on screen) without moving sideways; at 7 s it is still
+    there, on the platform."""
+    with open(os.path.join(c.source, 'assets/animations/platform_lift.ani')) as f:
+        c.write('platform_lift.ani', f.read())
+    e = c.start('platform_lift.ani')
+    e.wait_baked()
+    check(re.search(r'^animator: physics\.custom: baked, 7 s$', e.stdout(), re.M),
+          'no "baked, 7 s" line in the log:\n' + e.stdout())
+    check('let go' not in e.stdout() and 'cannot carry' not in e.stdout(),
+          'the platform was let go from its keys:\n' + e.stdout())
+    shots = {}
+    for ms in (0, 2000, 2500, 5000, 7000):
+        e.set_time(ms)
+        e.mouse_away()
+        n, x, y, _ = red_die(e.screenshot('t%d' % ms))
+        c.log('box at %d ms: %d px at (%.1f, %.1f)' % (ms, n, x or -1, y or -1))
+        check(n > 50, 'the box is not on screen at %d ms (%d red pixels)' % (ms, n))
+        shots[ms] = (n, x, y)
+    n0, x0, y0 = shots[0]
+    check(shots[2000][1] > x0 + 60, 'the box was not carried right in the first 2 s')
+    check(abs(shots[2000][2] - y0) < 3, 'the box left the platform\'s height while carried right')
+    check(shots[2500] == shots[2000], 'the box moves while the platform waits: %s, then %s' %
+          (shots[2000], shots[2500]))
+    check(shots[5000][2] < shots[2000][2] - 30, 'the box was not lifted: y %.1f at 2 s, %.1f at 5 s' %
+          (shots[2000][2], shots[5000][2]))
+    check(abs(shots[5000][1] - shots[2000][1]) < 3, 'the box moved sideways while lifted')
+    check(shots[7000] == shots[5000], 'the box moves after the lift: %s, then %s' % (shots[5000], shots[7000]))
+    e.quit()

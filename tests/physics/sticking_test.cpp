@@ -1,0 +1,187 @@
+// physics.custom and Bullet: a model stuck to a keyed platform that accelerates (issue 19;
+// docs/physics.md, "Sticking to a platform that accelerates"), through the real timeline and the
+// shipped animation, against the closed form of the platform's eased keys (platform_lift.hpp).
+#include "io/document_io.hpp"
+#include "timeline/timeline.hpp"
+
+#include "platform_lift.hpp"
+#include "scene_support.hpp"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+using namespace animator;
+using namespace physics_test;
+
+namespace {
+
+Document lift_document() {
+    return open_document(env().plugins, test::source_dir() / "assets/animations/platform_lift.ani")
+        .document;
+}
+
+int model_named(const Document &doc, const std::string &name) {
+    for (size_t i = 0; i < doc.models().size(); ++i)
+        if (doc.models()[i].name == name) return static_cast<int>(i);
+    FAIL("no model " << name);
+    return -1;
+}
+
+// The platform's key at `ms` moved to `center`.
+Document with_platform_key(Document doc, std::int64_t ms, const glm::dvec3 &center) {
+    const int platform = model_named(doc, "platform");
+    ModelState s = *doc.keyframe_at(ms).states[static_cast<size_t>(platform)];
+    s.center = center;
+    doc.set_state(ms, platform, s);
+    return doc;
+}
+
+} // namespace
+
+TEST_CASE("platform_lift.ani: a box stuck to a platform that accelerates across and up moves "
+          "exactly as the platform does, as carried segments, and rests on it at the top") {
+    for (const bool rotates : {false, true}) {
+        CAPTURE(rotates);
+        Document doc = lift_document();
+        const int box = model_named(doc, "box"), platform = model_named(doc, "platform");
+        Model m = doc.models()[static_cast<size_t>(box)];
+        m.rotates = rotates; // one that turns from its contacts sticks as well (and does not tip)
+        doc.set_model(box, m);
+        auto timeline = timeline_of(doc);
+        timeline->bake(7.0);
+        for (double t : {0.0, 0.1, 0.5, 1.0, 1.77, 2.0, 2.5, 3.0, 3.2, 4.0, 4.9, 5.0, 6.0, 7.0}) {
+            CAPTURE(t);
+            const Frame f = timeline->evaluate(t);
+            const ModelPose &p = f.models[static_cast<size_t>(box)];
+            CHECK(std::abs(p.center.x - platform_lift::box_x(t)) < 1e-9);
+            CHECK(std::abs(p.center.y - platform_lift::box_y(t)) < 1e-9);
+            CHECK(p.center.z == 0.0);
+            CHECK(std::abs(p.velocity.x - platform_lift::box_vx(t)) < 1e-9);
+            CHECK(std::abs(p.velocity.y - platform_lift::box_vy(t)) < 1e-9);
+            CHECK(glm::length(p.angles) < 1e-9); // never turned
+            // The platform keeps to its keys: nothing released it.
+            CHECK(std::abs(f.models[static_cast<size_t>(platform)].center.y + 0.35 -
+                           platform_lift::box_y(t)) < 1e-12);
+        }
+        // Carried over the two spans the platform accelerates, resting on it between and after.
+        const auto &carried = timeline->carried(box);
+        REQUIRE(carried.size() == 2);
+        CHECK(carried[0].t0 == 0.0);
+        CHECK(carried[0].t1 == 2.0);
+        CHECK(carried[1].t0 == 3.0);
+        CHECK(carried[1].t1 == 5.0);
+        CHECK(carried[0].carrier == static_cast<uint32_t>(platform));
+        CHECK(glm::length(glm::dvec3(carried[0].offset.x, carried[0].offset.y, carried[0].offset.z) -
+                          glm::dvec3(0.0, 0.35, 0.0)) < 1e-12);
+        for (double t : {2.5, 6.0, 7.0}) {
+            const Frame f = timeline->evaluate(t);
+            CHECK(f.motion[static_cast<size_t>(box)] != ANI_MOTION_CARRIED);
+            CHECK(f.models[static_cast<size_t>(box)].velocity == glm::dvec3(0.0));
+        }
+        CHECK(timeline->events().empty());
+        CHECK(timeline->stats().backend_counts.at("releases from keys") == 0.0);
+        CHECK(timeline->stats().backend_counts.at("predictions") < 40);
+    }
+}
+
+TEST_CASE("platform_lift.ani: Bullet's kinematic platform carries the box too, converging on the "
+          "closed form as its step shrinks") {
+    // Measured (animator compare): 3.1e-4, 1.9e-5 and 1.3e-6 m at steps of 1/250, 1/1000 and
+    // 1/4000 s: second order, the friction of each step dragging the box along.
+    const Document doc = lift_document();
+    const int box = model_named(doc, "box");
+    double previous = 1e300;
+    for (double step : {1.0 / 250.0, 1.0 / 1000.0}) {
+        CAPTURE(step);
+        Document stepped = doc;
+        Settings s = stepped.settings();
+        s.params["physics.bullet"]["step"] = {step, 0.0, 0.0, 0.0};
+        stepped.set_settings(s);
+        auto timeline = timeline_of(stepped, "physics.bullet");
+        timeline->bake(7.0);
+        CHECK(timeline->stats().backend_counts.at("releases from keys") == 0.0);
+        double worst = 0.0;
+        for (int k = 0; k <= 700; ++k) {
+            const double t = 7.0 * k / 700.0;
+            const glm::dvec3 c = timeline->evaluate(t).models[static_cast<size_t>(box)].center;
+            worst = std::max(worst, glm::length(c - glm::dvec3(platform_lift::box_x(t),
+                                                               platform_lift::box_y(t), 0.0)));
+        }
+        CAPTURE(worst);
+        CHECK(worst < 0.1 * step);
+        CHECK(worst < previous / 4.0);
+        previous = worst;
+    }
+}
+
+TEST_CASE("a platform that accelerates more than friction or gravity can follow does not carry "
+          "the box: its keys let it go, as before, and the bake finishes") {
+    // 3 m in 1 s eased: 18 m/s^2 across at the start, more than mu g = 4.9 (the box would slip);
+    // 2 m down in 0.5 s eased: 48 m/s^2 down, more than g (the box would lift off). Neither is a
+    // closed form yet (physics.md): the platform is released from its keys, as a collision would
+    // release it, and stands still with the box on it until its next key.
+    Document fast = with_platform_key(lift_document(), 2000, glm::dvec3(0.0, 1.0, 0.0));
+    {
+        Keyframe k;
+        k.time_ms = 1000;
+        k.states.assign(fast.models().size(), std::nullopt);
+        fast.insert_keyframe(k);
+        const int platform = model_named(fast, "platform");
+        ModelState s = *fast.keyframe_at(2000).states[static_cast<size_t>(platform)];
+        fast.set_state(1000, platform, s);
+    }
+    Document drop = with_platform_key(lift_document(), 5000, glm::dvec3(0.0, 1.0, 0.0));
+    drop = with_platform_key(std::move(drop), 3000, glm::dvec3(0.0, 3.0, 0.0));
+    // (The platform rises to 3 m at 2 s, waits, and falls back over [3, 5]; the box rides up
+    // with it first.)
+    drop = with_platform_key(std::move(drop), 2000, glm::dvec3(0.0, 3.0, 0.0));
+    for (const Document *doc : {&fast, &drop}) {
+        auto timeline = timeline_of(*doc);
+        timeline->bake(7.0);
+        CHECK(timeline->stats().backend_counts.at("releases from keys") >= 1.0);
+        CHECK(timeline->stats().backend_counts.at("predictions") < 1000);
+    }
+    // The fast one: released at t = 0, the platform and the box stand still where they were.
+    auto timeline = timeline_of(fast);
+    timeline->bake(0.9);
+    const int box = model_named(fast, "box");
+    CHECK(timeline->evaluate(0.9).models[static_cast<size_t>(box)].center ==
+          glm::dvec3(-3.0, 1.35, 0.0));
+    CHECK(timeline->carried(box).empty());
+}
+
+TEST_CASE("a ball that falls on the box while the platform lifts it knocks it off its carrier: "
+          "it meets it where both closed forms say, and the bake goes on") {
+    // A light ball (0.1 kg) held by its keys 4 m up over the lift until 3 s, then falling.
+    Document doc = lift_document();
+    const int box = model_named(doc, "box");
+    Model light = model("ball", "sphere", true, true);
+    light.mass = 0.1;
+    doc.add_model(light, placed({0.0, 4.0, 0.0}, glm::dvec3(0.2)));
+    const int ball = static_cast<int>(doc.models().size()) - 1;
+    doc.set_state(3000, ball, placed({0.0, 4.0, 0.0}, glm::dvec3(0.2)));
+    const double r = 0.2 * unit_radius();
+    // The ball's bottom, 4 - r - g (t - 3)^2 / 2, meets the box's top, box_y(t) + 0.25, during
+    // the lift: found by bisection on [3, 3.7], where the gap changes sign.
+    auto gap = [&](double t) {
+        return 4.0 - r - 0.5 * G * (t - 3.0) * (t - 3.0) - (platform_lift::box_y(t) + 0.25);
+    };
+    double lo = 3.0, hi = 3.7;
+    REQUIRE(gap(lo) > 0.0);
+    REQUIRE(gap(hi) < 0.0);
+    for (int k = 0; k < 200; ++k) (gap(0.5 * (lo + hi)) > 0.0 ? lo : hi) = 0.5 * (lo + hi);
+    auto timeline = timeline_of(doc);
+    timeline->bake(7.0);
+    REQUIRE_FALSE(timeline->events().empty());
+    const ani_collision_event &hit = timeline->events().front();
+    CHECK(std::abs(hit.t - lo) < 1e-9);
+    CHECK(((hit.a == static_cast<uint32_t>(ball) && hit.b == static_cast<uint32_t>(box)) ||
+           (hit.b == static_cast<uint32_t>(ball) && hit.a == static_cast<uint32_t>(box))));
+    // Carried up to the hit, on its own after it.
+    REQUIRE_FALSE(timeline->carried(box).empty());
+    CHECK(std::abs(timeline->carried(box).back().t1 - lo) < 1e-9);
+    CHECK(timeline->evaluate(lo + 1e-3).motion[static_cast<size_t>(box)] != ANI_MOTION_CARRIED);
+    CHECK(timeline->stats().backend_counts.at("predictions") < 1000);
+}
