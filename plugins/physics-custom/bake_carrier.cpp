@@ -5,7 +5,8 @@
 // frame is inertial while u holds, so every closed form of the rest manager holds in it
 // (bake_rest.cpp works with the velocity relative to the support), and in the world the rider's
 // path is that plus u t: still a free motion segment. Where u changes (the carrier's next key), the
-// rider's velocity relative to it jumps, and friction is aimed again against the new one.
+// rider's velocity relative to it jumps, and friction is aimed again against the new one. A keyed
+// platform that accelerates carries a model stuck to it instead (the last section: "sticking").
 #include "event_bake_detail.hpp"
 
 namespace physics_custom::bake {
@@ -105,9 +106,10 @@ bool EventBake::carries_along(const glm::dvec3 &u, const glm::dvec3 &n) {
     return std::abs(glm::dot(u, n)) <= 1e-12 * std::max(1.0, glm::length(u));
 }
 
-// Keyed body j cannot carry body i on its face (its keys accelerate it, turn it, or move it across
-// that face: not yet, physics.md), which would sink into it: j is released from its keys, as at a
-// collision, and said so. Without Dynamics it then stands still, and carries i.
+// Keyed body j cannot carry body i on its face (its keys turn it, or accelerate it more than i
+// can follow, or i slides on it while they accelerate it: not yet, physics.md), and i would sink
+// into it: j is released from its keys, as at a collision, and said so. Without Dynamics it then
+// stands still, and carries i.
 bool EventBake::let_go(int j, int i, double t) {
     if (!bodies_[static_cast<size_t>(j)].keyed()) return false;
     log_warning("model '" +
@@ -116,8 +118,9 @@ bool EventBake::let_go(int j, int i, double t) {
                 name_of(scene_->models[bodies_[static_cast<size_t>(j)].model]) +
                 "' at t = " + short_number(t) +
                 " s, whose keys cannot carry it (physics.custom carries a model only on a "
-                "platform that its keys translate at a constant velocity along the face, as "
-                "linear keys do): the platform is released from its keys, as at a collision");
+                "platform that its keys translate without turning it, at a constant velocity "
+                "along the face, or with an acceleration that friction and gravity let the model "
+                "follow from rest): the platform is released from its keys, as at a collision");
     release(j, t);
     predict(j, t);
     return true;
@@ -249,8 +252,7 @@ namespace physics_custom::bake {
 // cone convex, so the ends alone decide: the times between are a margin for other interpolators.
 bool EventBake::sticks(const Body &b, int j, const glm::dvec3 &n, double t, double end) const {
     const Body &c = bodies_[static_cast<size_t>(j)];
-    const double mu = combined_friction(b.material.friction,
-                                        material_of(*scene_->models[c.model].desc).friction);
+    const double mu = combined_friction(b.material.friction, c.material.friction);
     const double span = end - t, h = 1e-6 * span;
     // Its feet, relative to its centre, when it turns: the vertices within kTipSlack of its size
     // of the lowest along n.
@@ -319,6 +321,7 @@ bool EventBake::stick(int i, int j, const glm::dvec3 &n, double t) {
     b.carried_until = std::min(end, b.resume_at);
     b.carried_offset = pb.center - pc.center;
     b.carried_linear = pb.linear;
+    b.support_n = n; // the face it stands on (held_by_support)
     b.settles_at = kNever;
     ++riders_;
     ++b.version;

@@ -100,7 +100,13 @@ void EventBake::collide_bodies(int i, int j, const Contact &contact,
     // meets: that one reflects off it with the relative velocity (physics.md).
     const glm::dvec3 v = point_velocity(b, contact.point, t),
                      vo = point_velocity(o, contact.point, t);
-    const bool b_wall = b.keyed() && !o.keyed(), o_wall = o.keyed() && !b.keyed();
+    // A body still on a carrier, or stuck to one, that the blow presses into it within its
+    // friction cone takes the blow through it (bake_rest.cpp, held_by_support): it stays, and the
+    // other meets it as a wall moving with the carrier.
+    const bool b_held = (b.carrier >= 0 || b.carried()) && !o.keyed() && held_by_support(b, n),
+               o_held = (o.carrier >= 0 || o.carried()) && !b.keyed() && held_by_support(o, -n);
+    const bool b_wall = (b.keyed() && !o.keyed()) || (b_held && !o_held),
+               o_wall = (o.keyed() && !b.keyed()) || (o_held && !b_held);
     if (b.keyed()) release(i, t);
     if (o.keyed()) release(j, t);
     const ani_collision_event e = collision_event(b.model, o.model, contact, t, v - vo);

@@ -538,14 +538,20 @@ bool EventBake::sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec
 // slanting more than the friction cone allows (a ball striking a frictionless stack's edge),
 // moves b, which then meets its support as any other body does.
 bool EventBake::held_by_support(const Body &b, const glm::dvec3 &push) const {
-    if (!resting(b)) return false;
+    // Still on a static model or a resting body, still on a carrier (moving with it), or stuck to
+    // a platform that accelerates: what holds it up is of infinite mass, or rests on one.
+    const bool on_carrier = b.carrier >= 0 && b.mode == Body::Mode::kFree &&
+                            b.path.a == glm::dvec3(0.0) && b.path.v == b.support_v &&
+                            (!b.turning() || b.spin.w == glm::dvec3(0.0));
+    if (!resting(b) && !on_carrier && !b.carried()) return false;
     const double into = -glm::dot(push, b.support_n);
     if (!(into > 0.0)) return false;
     const double across = glm::length(push + into * b.support_n);
+    const int holder = b.on_body >= 0 ? b.on_body : b.carried() ? b.carried_by : b.carrier;
     const double mu =
-        b.on_body >= 0
+        holder >= 0
             ? combined_friction(b.material.friction,
-                                bodies_[static_cast<size_t>(b.on_body)].material.friction)
+                                bodies_[static_cast<size_t>(holder)].material.friction)
             : combined_friction(
                   b.material.friction,
                   material_of(

@@ -160,9 +160,10 @@ void EventBake::handle(int i, const Predicted &event, double now) {
             ignore(i, event.other, now);
             break;
         }
-        // One stuck to a platform is knocked off it: free where it is, it takes the blow.
-        drop(i, now);
-        drop(event.other, now);
+        // One stuck to a platform is knocked off it (free where it is, it takes the blow), unless
+        // the blow presses it into the platform, which takes it (held_by_support).
+        if (b.carried() && !held_by_support(b, event.contact.normal)) drop(i, now);
+        if (o.carried() && !held_by_support(o, -event.contact.normal)) drop(event.other, now);
         collide_bodies(i, event.other, event.contact, event.points, now);
         predict(event.other, now);
         break;
