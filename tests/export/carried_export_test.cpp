@@ -4,9 +4,8 @@
 // the export's bounds.
 #include "export/export_motion.hpp"
 
-#include "io/environment.hpp"
-
 #include "../timeline/fake/carried_scene.hpp"
+#include "../timeline/fake/fake_env.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
@@ -15,10 +14,7 @@
 using namespace animator;
 
 TEST_CASE("a carried model's keys follow its carrier's motion and turn within the export's bounds") {
-    static Environment env({test::bin_dir().parent_path() / "assets"},
-                           {test::bin_dir(), ANIMATOR_FAKE_PLUGIN_DIR},
-                           [](ani_log_level, const std::string &, const std::string &) {});
-    Timeline timeline(carried_test::carried_document(0), env.plugins, "physics.test_carrier");
+    Timeline timeline(carried_test::carried_document(0), fake_backends::env().plugins, "physics.test_carrier");
     timeline.bake(2.0);
     MotionKeyOptions options;
     options.until = 2.0;

@@ -23,13 +23,6 @@ Document ride_document() {
         .document;
 }
 
-int model_named(const Document &doc, const std::string &name) {
-    for (size_t i = 0; i < doc.models().size(); ++i)
-        if (doc.models()[i].name == name) return static_cast<int>(i);
-    FAIL("no model " << name);
-    return -1;
-}
-
 double box_x(double t) {
     return platform_ride::box_x(t, G);
 }

@@ -96,4 +96,11 @@ inline std::pair<double, double> bounce_errors(const std::vector<ani_collision_e
     return {worst_t, worst_v};
 }
 
+// The index of the document's model of that name (the test fails without one).
+inline int model_named(const Document &doc, const std::string &name) {
+    const int i = doc.find_model(name);
+    if (i < 0) FAIL("no model " << name);
+    return i;
+}
+
 } // namespace physics_test

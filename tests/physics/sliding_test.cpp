@@ -25,13 +25,6 @@ const ModelState &start_of(const Document &doc, int model) {
     return *doc.keyframes().front().states[static_cast<size_t>(model)];
 }
 
-int model_named(const Document &doc, const std::string &name) {
-    for (size_t i = 0; i < doc.models().size(); ++i)
-        if (doc.models()[i].name == name) return static_cast<int>(i);
-    FAIL("no model " << name);
-    return -1;
-}
-
 } // namespace
 
 TEST_CASE("a box placed on a floor rests exactly for 1000 s, with no contact to follow") {

@@ -22,13 +22,6 @@ Document lift_document() {
         .document;
 }
 
-int model_named(const Document &doc, const std::string &name) {
-    for (size_t i = 0; i < doc.models().size(); ++i)
-        if (doc.models()[i].name == name) return static_cast<int>(i);
-    FAIL("no model " << name);
-    return -1;
-}
-
 // The platform's key at `ms` moved to `center`.
 Document with_platform_key(Document doc, std::int64_t ms, const glm::dvec3 &center) {
     const int platform = model_named(doc, "platform");

@@ -9,6 +9,7 @@
 #include "timeline/world_turning.hpp"
 
 #include "fake/carried_scene.hpp"
+#include "fake/fake_env.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
@@ -17,17 +18,11 @@
 #include <cmath>
 
 using namespace animator;
+using fake_backends::env;
 using carried_test::carried_document;
 using carried_test::expected_box;
 
 namespace {
-
-Environment &env() {
-    static Environment e({test::bin_dir().parent_path() / "assets"},
-                         {test::bin_dir(), ANIMATOR_FAKE_PLUGIN_DIR},
-                         [](ani_log_level, const std::string &, const std::string &) {});
-    return e;
-}
 
 // The angle between two orientations (q and -q are one).
 double apart(const glm::dquat &a, const glm::dquat &b) {

@@ -7,6 +7,7 @@
 #include "timeline/timeline.hpp"
 #include "timeline/world_turning.hpp"
 
+#include "fake/fake_env.hpp"
 #include "support.hpp"
 
 #include <catch2/catch.hpp>
@@ -15,15 +16,9 @@
 #include <cmath>
 
 using namespace animator;
+using fake_backends::env;
 
 namespace {
-
-Environment &env() {
-    static Environment e({test::bin_dir().parent_path() / "assets"},
-                         {test::bin_dir(), ANIMATOR_FAKE_PLUGIN_DIR},
-                         [](ani_log_level, const std::string &, const std::string &) {});
-    return e;
-}
 
 Document one_model(bool bad, bool hinge = false) {
     Document doc;
