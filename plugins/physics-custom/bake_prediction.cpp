@@ -268,7 +268,7 @@ void EventBake::predict(int i, double now) {
                 double rb = b.radius, ro = o.radius;
                 radii_against(i, j, rb, ro);
                 c = sphere_sphere(from_now(b, now), rb, from_now(o, now), ro, limit);
-            } else if (b.shape && o.shape) {
+            } else if (b.shape && o.shape && !b.carried() && !o.carried()) { // both translate
                 if (!(b.still() && o.still()))
                     c = mesh_pair(*b.shape, from_now(b, now), *o.shape, from_now(o, now), limit);
             } else if (b.turning() && o.turning() && !b.hinge && !o.hinge) {
@@ -286,10 +286,10 @@ void EventBake::predict(int i, double now) {
     count_.done += tested;
     count_.skipped += (bodies_.size() - 1) - tested;
     if (b.supported()) predict_leave(i, now, limit, next);
-    if (b.shape)
-        predict_mesh_obstacles(i, now, limit, next); // exact: it translates
+    if (b.shape && !b.carried())
+        predict_mesh_obstacles(i, now, limit, next); // exact: it translates on its path
     else
-        predict_obstacles(i, now, limit, next); // spheres exact; keyed models by advancement
+        predict_obstacles(i, now, limit, next); // spheres exact; keyed or carried: advancement
     if (b.ignored_obstacles > 0 || b.overlapped_obstacles > 0) recheck_obstacles(i, now, next);
     // Nothing within the window: it looks again at its end.
     if (next.t > horizon_) next = predicted(horizon_, EventKind::kRecheck);

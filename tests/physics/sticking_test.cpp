@@ -211,3 +211,24 @@ TEST_CASE("a ball that hits the box from the side while the platform lifts it kn
     CHECK(timeline->evaluate(4.01).models[static_cast<size_t>(box)].velocity.x > 1.0);
     CHECK(timeline->stats().backend_counts.at("predictions") < 2000);
 }
+
+TEST_CASE("a box stuck to a platform that its keys lower goes down with it, and meets nothing "
+          "on the way") {
+    // platform_lift.ani with the lift turned round: from the wait, the platform eases down 0.4 m
+    // over [3, 5] s (0.6 m/s^2 at most, well below g). The box rides the still platform over
+    // [2, 3], then sticks to it. (Its path from before, with gravity, was once taken for where it
+    // goes, and it met the floor 0.47 s later, through the platform.)
+    const Document doc = with_platform_key(lift_document(), 5000, glm::dvec3(0.0, 0.6, 0.0));
+    const int box = model_named(doc, "box"), platform = model_named(doc, "platform");
+    auto timeline = timeline_of(doc);
+    timeline->bake(7.0);
+    CHECK(timeline->events().empty());
+    REQUIRE(timeline->carried(box).size() == 2);
+    for (double t : {3.0, 3.47, 4.0, 4.6, 5.0, 6.5}) {
+        CAPTURE(t);
+        const double y = 1.35 - 0.4 * platform_lift::ease((t - 3.0) / 2.0);
+        const Frame f = timeline->evaluate(t);
+        CHECK(std::abs(f.models[static_cast<size_t>(box)].center.y - y) < 1e-9);
+        CHECK(std::abs(f.models[static_cast<size_t>(platform)].center.y + 0.35 - y) < 1e-12);
+    }
+}
