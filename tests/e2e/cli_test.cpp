@@ -170,7 +170,7 @@ TEST_CASE("animator bake --save writes the bake through a partial file, and a ru
     REQUIRE(r.exit_code == 0);
     CHECK_THAT(r.out, Catch::Contains("wrote " + bake.string() + " (the bake of 0 to 2 s)"));
     const std::string earlier = test::read_file(bake);
-    CHECK(earlier.rfind(std::string("ANIBAKE\0\1\0\0\0", 12), 0) == 0); // the magic, then version 1
+    CHECK(earlier.rfind(std::string("ANIBAKE\0\2\0\0\0", 12), 0) == 0); // the magic, then version 2
     // A far larger bake, killed by the file size limit (SIGXFSZ) while it writes.
     r = test::run_animator("bake " + gas + " --until 2 --save " + bake.string(), "ulimit -f 16;");
     CHECK(r.exit_code != 0);
