@@ -230,10 +230,6 @@ void EventBake::carry_again(int i, double t) {
     try_settle_mesh(i, t);
 }
 
-} // namespace physics_custom::bake
-
-namespace physics_custom::bake {
-
 // ---- sticking to a platform that accelerates ------------------------------------------------
 //
 // A keyed platform whose keys accelerate it (smooth keys, an elevator easing in and out) carries

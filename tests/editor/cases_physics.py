@@ -46,6 +46,20 @@ def case_stairs_tumble(c):
     e.quit()
 
 
+def box_shots(c, e, times):
+    """The red box at each time (ms): moved there, a screenshot, and its (pixels, x, y) on it; it
+    must be on screen at each."""
+    shots = {}
+    for ms in times:
+        e.set_time(ms)
+        e.mouse_away()
+        n, x, y, _ = red_die(e.screenshot('t%d' % ms))
+        c.log('box at %d ms: %d px at (%.1f, %.1f)' % (ms, n, x or -1, y or -1))
+        check(n > 50, 'the box is not on screen at %d ms (%d red pixels)' % (ms, n))
+        shots[ms] = (n, x, y)
+    return shots
+
+
 def case_platform_ride(c):
     """assets/animations/platform_ride.ani opened as a user would: the editor bakes the box's ride
     on the keyed platform and says so. The box stays at the platform's height throughout (it
@@ -58,14 +72,7 @@ def case_platform_ride(c):
     e.wait_baked()
     check(re.search(r'^animator: physics\.custom: baked, 7 s$', e.stdout(), re.M),
           'no "baked, 7 s" line in the log:\n' + e.stdout())
-    shots = {}
-    for ms in (0, 1000, 3000, 3500, 7000):
-        e.set_time(ms)
-        e.mouse_away()
-        n, x, y, _ = red_die(e.screenshot('t%d' % ms))
-        c.log('box at %d ms: %d px at (%.1f, %.1f)' % (ms, n, x or -1, y or -1))
-        check(n > 50, 'the box is not on screen at %d ms (%d red pixels)' % (ms, n))
-        shots[ms] = (n, x, y)
+    shots = box_shots(c, e, (0, 1000, 3000, 3500, 7000))
     n0, x0, y0 = shots[0]
     for ms in (1000, 3000, 7000):
         check(abs(shots[ms][2] - y0) < 3,
@@ -93,14 +100,7 @@ def case_platform_lift(c):
           'no "baked, 7 s" line in the log:\n' + e.stdout())
     check('let go' not in e.stdout() and 'cannot carry' not in e.stdout(),
           'the platform was let go from its keys:\n' + e.stdout())
-    shots = {}
-    for ms in (0, 2000, 2500, 5000, 7000):
-        e.set_time(ms)
-        e.mouse_away()
-        n, x, y, _ = red_die(e.screenshot('t%d' % ms))
-        c.log('box at %d ms: %d px at (%.1f, %.1f)' % (ms, n, x or -1, y or -1))
-        check(n > 50, 'the box is not on screen at %d ms (%d red pixels)' % (ms, n))
-        shots[ms] = (n, x, y)
+    shots = box_shots(c, e, (0, 2000, 2500, 5000, 7000))
     n0, x0, y0 = shots[0]
     check(shots[2000][1] > x0 + 60, 'the box was not carried right in the first 2 s')
     check(abs(shots[2000][2] - y0) < 3, 'the box left the platform\'s height while carried right')
