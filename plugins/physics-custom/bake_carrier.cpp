@@ -20,7 +20,7 @@ namespace physics_custom::bake {
 //    Where its keys end now: it stands still from here, without Dynamics or gravity.
 //  - Free, without Dynamics or gravity: it stands still (its velocity 0; released from its keys
 //    by a contact, until it resumes them).
-std::optional<EventBake::Carried> EventBake::carried_motion(int j, double t) {
+std::optional<EventBake::Carried> EventBake::carried_motion(int j, double t) const {
     const Body &c = bodies_[static_cast<size_t>(j)];
     if (c.sphere || !c.active || c.carried()) return std::nullopt;
     // (A model with Dynamics or gravity is moved by what it carries, once free of its keys.)
@@ -291,12 +291,7 @@ bool EventBake::stick(int i, int j, const glm::dvec3 &n, double t) {
         return false;
     const double end = std::min(next_key(c.model, t), c.keys_end);
     if (!(end > t)) return false;
-    const ani_model_state first = keyed_state(*scene_, c.model, t, nullptr);
-    for (int k = 1; k <= 4; ++k) {
-        const ani_model_state s = keyed_state(*scene_, c.model, t + 0.2 * k * (end - t), nullptr);
-        if (!(vec(s.angles) == vec(first.angles)) || !(vec(s.scale) == vec(first.scale)))
-            return false;
-    }
+    if (!keys_hold_pose(c.model, t, end)) return false;
     const Pose pc = pose(c, t), pb = pose(b, t);
     const glm::dvec3 v = b.path.velocity(t - b.t0);
     if (glm::length(v - pc.velocity) > 1e-9 * std::max(1.0, glm::length(pc.velocity))) return false;
@@ -339,10 +334,10 @@ void EventBake::emit_carried(const Body &b, double t) {
     const Body &c = bodies_[static_cast<size_t>(b.carried_by)];
     const glm::dquat carrier =
         orientation_of_angles(vec(keyed_state(*scene_, c.model, from, nullptr).angles));
-    const glm::dquat own = b.carried_spin
-                               ? b.spin.at(from)
-                               : orientation_of_angles(
-                                     vec(keyed_state(*scene_, b.model, from, nullptr).angles));
+    const glm::dquat own =
+        b.carried_spin
+            ? b.spin.at(from)
+            : orientation_of_angles(vec(keyed_state(*scene_, b.model, from, nullptr).angles));
     const glm::dvec3 offset = glm::conjugate(carrier) * b.carried_offset;
     const glm::dquat relative = glm::normalize(glm::conjugate(carrier) * own);
     ani_carried_segment seg{};

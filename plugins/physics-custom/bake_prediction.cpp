@@ -263,7 +263,8 @@ void EventBake::predict(int i, double now) {
         if (!is_ignored(i, j)) {
             ++tested;
             std::optional<Contact> c;
-            std::vector<glm::dvec3> points; // every point touching, for two turning bodies
+            std::vector<glm::dvec3> points; // every point touching, for a turning body
+            bool moving_in = false;
             if (b.free_sphere() && o.free_sphere()) {
                 double rb = b.radius, ro = o.radius;
                 radii_against(i, j, rb, ro);
@@ -271,13 +272,19 @@ void EventBake::predict(int i, double now) {
             } else if (b.shape && o.shape && !b.carried() && !o.carried()) { // both translate
                 if (!(b.still() && o.still()))
                     c = mesh_pair(*b.shape, from_now(b, now), *o.shape, from_now(o, now), limit);
-            } else if (b.turning() && o.turning() && !b.hinge && !o.hinge) {
-                if (!(b.still() && o.still())) c = predict_turning_pair(i, j, now, limit, points);
+            } else if (TurningView vb, vo; (b.turning() || o.turning()) &&
+                                           turning_view(b, now, vb) && turning_view(o, now, vo)) {
+                // Both turn, or one turns and the other translates without turning (a box with
+                // Rotates off, a platform released from its keys): certified advancement.
+                if (!(b.still() && o.still()))
+                    c = predict_turning_pair(i, j, vb, vo, now, limit, points);
+                moving_in = true;
             } else if (!(b.still() && o.still()))
                 c = advance(i, j, -1, now, limit); // may find them overlapping, and ignore them
             if (c) {
                 next = predicted(now + c->t, EventKind::kBody, j, o.version, *c);
                 next.points = points;
+                next.moving_in = moving_in;
                 limit = c->t;
             }
         }
@@ -643,20 +650,83 @@ EventBake::contact_moving_in(const Body &b, const TurningMesh &mb, const Turning
     }
 }
 
-// Two turning bodies (a box knocked across the one it slept on, two tumbling dice): their first
-// contact within [now, now + limit] at which they move into each other, by the certified
-// advancement of turning_contact.hpp, as a turning body meets a static model
-// (predict_turning_obstacle).
-std::optional<Contact> EventBake::predict_turning_pair(int i, int j, double now, double limit,
+// Body b seen as turning_contact.hpp sees a turning body. One that turns (not tipping over an
+// edge: bake_hinge.cpp) as it turns. A free one that does not turn (a box with Rotates off, a
+// platform released from its keys) as a mesh that turns by nothing, its triangles turned and
+// scaled as its keys hold them: for as long as they hold them (to its next key, or for ever once
+// its keys have ended). False for a sphere, a keyed or carried body, a body on a hinge, and a free
+// one whose keys turn or scale it now.
+bool EventBake::turning_view(const Body &b, double now, TurningView &view) const {
+    if (b.sphere || b.hinge || b.carried()) return false;
+    if (b.turning()) {
+        view.mesh = turning_mesh(b);
+        view.path = turning_path(b, now);
+        view.reach = b.turning_reach_now();
+        return true;
+    }
+    const Pose p = pose(b, now);
+    view.path.v = p.velocity;
+    view.path.a = b.path.a;
+    if (b.keyed()) { // its keys translate it at a constant velocity until its next key
+        const std::optional<Carried> m = carried_motion(static_cast<int>(&b - bodies_.data()), now);
+        if (!m) return false;
+        view.path.v = m->velocity;
+        view.path.a = glm::dvec3(0.0);
+        view.holds = m->until - now;
+    } else if (now < b.keys_end) { // released from its keys, until its next key
+        const double end = std::min(next_key(b.model, now), b.keys_end);
+        if (!(end > now) || !keys_hold_pose(b.model, now, end)) return false;
+        view.holds = end - now;
+    }
+    const ani_mesh_view &mesh = mesh_of(b);
+    view.vertices.resize(mesh.vertex_count);
+    for (uint32_t k = 0; k < mesh.vertex_count; ++k) view.vertices[k] = p.linear * vertex(mesh, k);
+    view.mesh = {view.vertices.data(), view.vertices.size(), mesh.triangles,
+                 mesh.triangle_count,  b.edges.data(),       b.edges.size()};
+    view.path.c0 = p.center;
+    view.reach = b.reach * frobenius(p.linear);
+    return true;
+}
+
+// Whether a model's keys hold its angles and scale from t to end, both within one span between
+// two keys: equal at t and at four times up to end (for an interpolation at most cubic, equal
+// throughout).
+bool EventBake::keys_hold_pose(uint32_t model, double t, double end) const {
+    const ani_model_state first = keyed_state(*scene_, model, t, nullptr);
+    for (int k = 1; k <= 4; ++k) {
+        const ani_model_state s = keyed_state(*scene_, model, t + 0.25 * k * (end - t), nullptr);
+        if (!(vec(s.angles) == vec(first.angles)) || !(vec(s.scale) == vec(first.scale)))
+            return false;
+    }
+    return true;
+}
+
+// Two bodies of which one turns and the other turns or translates (a box knocked across the one
+// it slept on, two tumbling dice, a die against a released platform): their first contact within
+// [now, now + limit] at which they move into each other, by the certified advancement of
+// turning_contact.hpp, as a turning body meets a static model (predict_turning_obstacle). Where
+// a view holds for less than that, it is looked at again then (an undecided contact).
+std::optional<Contact> EventBake::predict_turning_pair(int i, int j, const TurningView &vb,
+                                                       const TurningView &vo, double now,
+                                                       double limit,
                                                        std::vector<glm::dvec3> &points) {
     const Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
-    const TurningPath pb = turning_path(b, now), po = turning_path(o, now);
+    const double holds = std::min(vb.holds, vo.holds);
+    const bool cut = holds < limit;
+    if (cut) limit = holds;
+    auto look_again = [&]() -> std::optional<Contact> {
+        if (!cut) return std::nullopt;
+        Contact contact;
+        contact.t = limit;
+        contact.normal = glm::dvec3(0.0);
+        return contact;
+    };
+    const TurningPath &pb = vb.path, &po = vo.path;
+    const TurningMesh &mb = vb.mesh, &mo = vo.mesh;
     // Broad phase: the centres cannot come nearer than they are by more than they travel.
     const double travel =
         (glm::length(pb.v - po.v) + 0.5 * glm::length(pb.a - po.a) * limit) * limit;
-    if (glm::length(pb.c0 - po.c0) - b.turning_reach_now() - o.turning_reach_now() > travel)
-        return std::nullopt;
-    const TurningMesh mb = turning_mesh(b), mo = turning_mesh(o);
+    if (glm::length(pb.c0 - po.c0) - vb.reach - vo.reach > travel) return look_again();
     const std::optional<TurningContact> moving_in =
         contact_moving_in(b, mb, pb, &o, mo, po, now, limit, [&](TurningContact &c) {
             if (!c.found()) return;
@@ -666,14 +736,14 @@ std::optional<Contact> EventBake::predict_turning_pair(int i, int j, double now,
                 glm::dot(c.normal, po.center(c.t) - c.point))
                 c.normal = -c.normal;
         });
-    if (!moving_in) return std::nullopt;
+    if (!moving_in) return look_again();
     const TurningContact &c = *moving_in;
     if (c.kind == TurningContact::kInvalid)
         throw ani::Failure(ANI_ERR_FAILED, std::string("models '") +
                                                name_of(scene_->models[b.model]) + "' and '" +
                                                name_of(scene_->models[o.model]) +
                                                "' would turn to a value that is not finite");
-    if (!c.found() && c.kind != TurningContact::kUndecided) return std::nullopt;
+    if (!c.found() && c.kind != TurningContact::kUndecided) return look_again();
     Contact contact;
     contact.t = c.t;
     contact.point = c.point;

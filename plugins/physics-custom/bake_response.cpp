@@ -70,11 +70,14 @@ void EventBake::collide_bodies(int i, int j, const Contact &contact,
         }
         // A resting body that the blow presses into its support takes it through that support
         // (bake_rest.cpp, "resting on other models"): it stays, as a static model would.
+        // So does one without Dynamics that stands (a platform released from its keys).
         const bool b_held = held_by_support(b, n), o_held = held_by_support(o, -n);
-        if (b_held != o_held && b.turning() && o.turning() && !b.keyed() && !o.keyed()) {
-            const int mover = b_held ? j : i, still = b_held ? i : j;
+        const bool b_still = b_held || (!b.dynamics && immovable(b)),
+                   o_still = o_held || (!o.dynamics && immovable(o));
+        if (b_still != o_still && (b_still ? o : b).turning() && !b.keyed() && !o.keyed()) {
+            const int mover = b_still ? j : i, still = b_still ? i : j;
             Contact towards = contact;
-            if (b_held) towards.normal = -n; // from the still one towards the mover
+            if (b_still) towards.normal = -n; // from the still one towards the mover
             const ani_collision_event e = collision_event(b.model, o.model, contact, t,
                                                           point_velocity(b, contact.point, t) -
                                                               point_velocity(o, contact.point, t));

@@ -92,8 +92,8 @@ bool EventBake::settle_on_face(int i, const Obstacle &ob, const Holder &holder, 
                                double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
     // (A turning model settles only while it does not turn.)
-    if (!(b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))) || b.supported() ||
-        b.driven() || b.motion == ANI_MOTION_REST || !(glm::dot(b.free_a, n) < 0.0))
+    if (!(b.shape || (b.turning() && b.spin.w == glm::dvec3(0.0))) || b.supported() || b.driven() ||
+        b.motion == ANI_MOTION_REST || !(glm::dot(b.free_a, n) < 0.0))
         return false;
     const glm::dvec3 c = b.path.at(t - b.t0), v = b.path.velocity(t - b.t0);
     // Where its tests against the obstacle place it: moved out by its depth while it
@@ -494,17 +494,18 @@ void EventBake::friction_changes(Body &b, double now, bool stops) {
 // ---- resting on other models ----------------------------------------------------------
 
 // Body x, turning, meets body y, which rests (still on a static model or on another resting
-// body), at `point` with normal n from y towards x, while its acceleration presses it into y:
-// when it comes so slowly that the bounces left are too small to follow (the Zeno rule's
-// threshold, whatever its restitution) and it turns no faster, and friction can hold it there,
-// it goes to sleep on y: still, at no cost, until y moves (wake_riders). y takes nothing from
-// it: the bodies under it rest on their own supports, which carry it.
+// body) or stands without Dynamics (immovable), at `point` with normal n from y towards x, while
+// its acceleration presses it into y: when it comes so slowly that the bounces left are too small
+// to follow (the Zeno rule's threshold, whatever its restitution) and it turns no faster, and
+// friction can hold it there, it goes to sleep on y: still, at no cost, until y moves
+// (wake_riders). y takes nothing from it: the bodies under it rest on their own supports, which
+// carry it.
 bool EventBake::sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec3 &point,
                               double t) {
     Body &b = bodies_[static_cast<size_t>(x)];
     const Body &under = bodies_[static_cast<size_t>(y)];
     if (!(b.turning() || b.free_sphere()) || b.driven() || !b.dynamics || b.supported() ||
-        b.on_body >= 0 || !resting(under))
+        b.on_body >= 0 || !immovable(under))
         return false;
     const double g_n = -glm::dot(b.free_a, n);
     if (!(g_n > 0.0)) return false;
@@ -520,6 +521,7 @@ bool EventBake::sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec
         return false;
     const double mu = combined_friction(b.material.friction, under.material.friction);
     if (glm::length(b.free_a + g_n * n) > mu * g_n) return false; // it would slide
+    if (!b.sphere && !balanced_on(b, under, n, point, t)) return false; // it tips over y's edge
     close_segment(b, t);
     b.path = Path{c, glm::dvec3(0.0), glm::dvec3(0.0)};
     b.t0 = t;
@@ -530,6 +532,25 @@ bool EventBake::sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec
     ++b.version;
     ++sleepers_;
     return true;
+}
+
+// Whether body b, touching body y at `point` with normal n (from y towards b), stands balanced
+// on it: its centre of mass over the part of the plane where its vertices and y's meet (each
+// set's vertices within kTipSlack of its size of that plane; support_polygon.hpp), seen along
+// its acceleration. Both convex, the line meets their intersection when it meets each. A box
+// left overhanging a platform's edge tips over it (by microcollisions) instead of sleeping.
+bool EventBake::balanced_on(const Body &b, const Body &y, const glm::dvec3 &n,
+                            const glm::dvec3 &point, double t) const {
+    const double size = std::max(1.0, 2.0 * body_size(b)), d = glm::dot(n, point);
+    const glm::dvec3 c = b.path.at(t - b.t0); // a turning body's path is its centre of mass's
+    auto feet = [&](const Body &x) {
+        std::vector<glm::dvec3> in_plane;
+        for (const glm::dvec3 &p : placed(x, pose(x, t)).vertices)
+            if (std::abs(glm::dot(n, p) - d) <= kTipSlack * size) in_plane.push_back(p - c);
+        return in_plane;
+    };
+    return over_feet(glm::dvec3(0.0), feet(b), b.free_a, 1e-9 * size) &&
+           over_feet(glm::dvec3(0.0), feet(y), b.free_a, 1e-9 * size);
 }
 
 // A blow along `push` on resting body b is taken by what holds it up when it presses b into its
@@ -576,7 +597,7 @@ void EventBake::settle_stacks(double t) {
             const std::vector<glm::dvec3> corners = placed(b, pose(b, t)).vertices;
             for (size_t y = 0; y < bodies_.size() && !changed; ++y) {
                 const Body &under = bodies_[y];
-                if (y == x || !under.active || under.sphere || !resting(under)) continue;
+                if (y == x || !under.active || under.sphere || !immovable(under)) continue;
                 // The faces of y facing up against x's acceleration whose plane x's lowest
                 // vertex lies in, over the face: x stands on that face (the normal a touching
                 // pair's closest features would leave undecided).
@@ -604,7 +625,7 @@ void EventBake::settle_stacks(double t) {
 // Body j has moved: the bodies asleep on it wake, at rest where they are, under their own
 // acceleration, and so do the ones asleep on them.
 void EventBake::wake_riders(int j, double t) {
-    if (sleepers_ == 0 || resting(bodies_[static_cast<size_t>(j)])) return;
+    if (sleepers_ == 0 || immovable(bodies_[static_cast<size_t>(j)])) return;
     for (size_t k = 0; k < bodies_.size(); ++k) {
         Body &r = bodies_[k];
         if (r.on_body != j) continue;

@@ -151,12 +151,12 @@ void EventBake::handle(int i, const Predicted &event, double now) {
         }
         if (event.contact.normal == glm::dvec3(0.0)) break; // undecided: look again
         unhinge(o, now);
-        // (Two turning models always respond, as one against a static model: they part at
-        // least at the microcollision speed, so neither is left inside the other.)
-        if (!(b.turning() && o.turning()) &&
-            grazing(point_velocity(b, event.contact.point, now) -
-                        point_velocity(o, event.contact.point, now),
-                    event.contact.normal)) {
+        // (A turning model always responds to a contact found moving in, as one against a static
+        // model: they part at least at the microcollision speed, so neither is left inside the
+        // other.)
+        if (!event.moving_in && grazing(point_velocity(b, event.contact.point, now) -
+                                            point_velocity(o, event.contact.point, now),
+                                        event.contact.normal)) {
             ignore(i, event.other, now);
             break;
         }

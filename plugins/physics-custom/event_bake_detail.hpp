@@ -230,7 +230,8 @@ struct Predicted {
     uint64_t other_version = 0; // the other body's version when predicted
     Contact contact;
     std::vector<glm::dvec3> points; // a turning model's: every point touching with the contact
-    Exit exit;                      // for kCell
+    bool moving_in = false; // kBody: found moving into each other (a turning model's), it responds
+    Exit exit;              // for kCell
 };
 
 inline Predicted predicted(double t, EventKind kind, int other = -1, uint64_t other_version = 0,
@@ -405,7 +406,20 @@ class EventBake {
     contact_moving_in(const Body &b, const TurningMesh &mb, const TurningPath &pb, const Body *o,
                       const TurningMesh &mo, const TurningPath &po, double now, double window,
                       const std::function<void(TurningContact &)> &orient);
-    std::optional<Contact> predict_turning_pair(int i, int j, double now, double limit,
+    // A body as turning_contact.hpp sees it from `now`: its mesh about the point its path
+    // follows, that path and its turn, the farthest its points are from that point, and for how
+    // long (from now) this holds (kNever: until its path changes).
+    struct TurningView {
+        std::vector<glm::dvec3> vertices; // one that does not turn: its points as its keys hold it
+        TurningMesh mesh;
+        TurningPath path;
+        double reach = 0.0;
+        double holds = kNever;
+    };
+    bool turning_view(const Body &b, double now, TurningView &view) const;
+    bool keys_hold_pose(uint32_t model, double t, double end) const;
+    std::optional<Contact> predict_turning_pair(int i, int j, const TurningView &vb,
+                                                const TurningView &vo, double now, double limit,
                                                 std::vector<glm::dvec3> &points);
     static void outward(TurningContact &c, const TurningPath &path);
     bool approaching(const Body &b, const TurningContact &c, double now,
@@ -501,10 +515,18 @@ class EventBake {
     void predict_friction(int i, double now, double &limit, Predicted &next) const;
     void friction_changes(Body &b, double now, bool stops);
     static bool resting(const Body &b) { return b.still() && (b.support >= 0 || b.on_body >= 0); }
+    // Nothing moves it while it stays still: it rests, or it has no Dynamics and stands (a
+    // platform a contact released from its keys, until they take it back). A turning body can
+    // sleep on it.
+    static bool immovable(const Body &b) {
+        return resting(b) || (!b.dynamics && b.still() && !b.turning());
+    }
     // A resting body that an impulse along `push` (unit) presses into what it rests on, within
     // the friction cone of that support: its support takes the blow (bake_rest.cpp).
     bool held_by_support(const Body &b, const glm::dvec3 &push) const;
     bool sleep_on_body(int x, int y, const glm::dvec3 &n, const glm::dvec3 &point, double t);
+    bool balanced_on(const Body &b, const Body &y, const glm::dvec3 &n, const glm::dvec3 &point,
+                     double t) const;
     void wake_riders(int j, double t);
     void settle_stacks(double t);
 
@@ -513,7 +535,7 @@ class EventBake {
         glm::dvec3 velocity{0.0};
         double until = kNever;
     };
-    std::optional<Carried> carried_motion(int j, double t);
+    std::optional<Carried> carried_motion(int j, double t) const;
     Obstacle face_of(const Body &b, double t) const;
     bool try_ride(int i, double t);
     bool ride_on(int i, const Obstacle &ob, const Holder &holder, double t);
