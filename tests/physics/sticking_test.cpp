@@ -232,3 +232,67 @@ TEST_CASE("a box stuck to a platform that its keys lower goes down with it, and 
         CHECK(std::abs(f.models[static_cast<size_t>(platform)].center.y + 0.35 - y) < 1e-12);
     }
 }
+
+namespace {
+
+// platform_lift.ani with a box that turns (Rotates on, mu 1) and a platform whose keys jump it
+// away under the box: at 0.5 s to x = platform_x, where they hold it. Its smooth keys cannot
+// carry the box over [0, 0.5] (they accelerate it at up to 6 d / T^2, over 30 m/s^2), so the
+// platform is let go at t = 0 and stands with the box on it until 0.5 s, when its keys take it
+// back: it jumps, and the box is left standing on its edge region, its centre of mass 0.25 m
+// above the top.
+Document jumped_platform(double platform_x) {
+    Document doc = lift_document();
+    const int box = model_named(doc, "box");
+    Model m = doc.models()[static_cast<size_t>(box)];
+    m.rotates = true;
+    m.friction = 1.0;
+    doc.set_model(box, m);
+    for (std::int64_t ms : {2000, 3000, 5000})
+        doc = with_platform_key(doc, ms, glm::dvec3(platform_x, 1.0, 0.0));
+    Keyframe jump = doc.keyframe_at(2000);
+    jump.time_ms = 500;
+    doc.insert_keyframe(jump);
+    return doc;
+}
+
+} // namespace
+
+TEST_CASE("a box left on a platform's edge by the platform's jump stays there when its centre of "
+          "mass is over the platform, and tips off when it is not") {
+    // The platform's top is 3 m wide (x +- 1.5 about its centre); the box (0.5 m) stands at
+    // x = -3, over [-3.25, -2.75]. Statics: it stays when its centre of mass is over the part of
+    // its base on the platform, and turns about the platform's edge otherwise.
+    SECTION("over the platform: the edge at x = -2.9, 0.1 m past its centre") {
+        const Document doc = jumped_platform(-4.4);
+        const int box = model_named(doc, "box");
+        auto timeline = timeline_of(doc);
+        timeline->bake(1.5);
+        for (double t : {0.6, 1.0, 1.5}) {
+            CAPTURE(t);
+            const ModelPose p = timeline->evaluate(t).models[static_cast<size_t>(box)];
+            CHECK(p.velocity == glm::dvec3(0.0));
+            CHECK(std::abs(p.center.y - 1.35) < 1e-6);
+            CHECK(std::abs(p.center.x + 3.0) < 1e-6);
+            CHECK(glm::length(p.angles) < 1e-4); // degrees
+        }
+    }
+    SECTION("beyond the platform: the edge at x = -3.031, 0.031 m short of its centre") {
+        // It used to fall asleep on the platform there, overhanging (still from 0.5 s on). It
+        // turns about the edge instead, from rest: its centre of mass, r = |(0.031, 0.25)| from
+        // the edge, starts at the pendulum's angular acceleration alpha = m g d / I_edge
+        // (d = 0.031, I_edge = m s^2 / 6 + m r^2, s = 0.5), so 0.01 s later it moves at
+        // alpha r 0.01 = 7.29 mm/s (the angle is still below 2e-4 rad). The microcollisions
+        // it turns by (387 events) keep that to 1 %.
+        const Document doc = jumped_platform(-4.531);
+        const int box = model_named(doc, "box");
+        auto timeline = timeline_of(doc);
+        timeline->bake(0.51);
+        const double d = 0.031, r2 = d * d + 0.25 * 0.25, alpha = G * d / (0.25 / 6.0 + r2);
+        const ModelPose p = timeline->evaluate(0.51).models[static_cast<size_t>(box)];
+        CHECK(std::abs(glm::length(p.velocity) - alpha * std::sqrt(r2) * 0.01) <
+              0.01 * alpha * std::sqrt(r2) * 0.01);
+        CHECK(p.velocity.x > 0.0); // away from the platform
+        CHECK(p.velocity.y < 0.0);
+    }
+}
