@@ -86,6 +86,30 @@ def case_platform_ride(c):
     e.quit()
 
 
+def case_platform_drop(c):
+    """platform_ride.ani with the box turned into a die (Rotates on) held 0.25 m over the moving
+    platform: the editor bakes it to the end and says so (the bake used to crawl without end). The
+    die lands on the platform, which stops, and sleeps on it: at 1 s and 1.9 s it is in the same
+    place, to the pixel. The platform's next key (2 s) takes the platform away, and at 7 s the die
+    lies on the floor, lower on screen."""
+    with open(os.path.join(c.source, 'assets/animations/platform_ride.ani')) as f:
+        text = f.read()
+    text = text.replace('  friction 0.5\nend', '  friction 0.5\n  rotates true\nend', 1)
+    text, placed = re.subn(r'state "box" center \S+ \S+ \S+', 'state "box" center -2 1.6 0', text, 1)
+    check(placed == 1 and 'rotates true' in text, 'platform_ride.ani no longer has the box to edit')
+    c.write('platform_drop.ani', text)
+    e = c.start('platform_drop.ani')
+    e.wait_baked()
+    check(re.search(r'^animator: physics\.custom: baked, 7 s$', e.stdout(), re.M),
+          'no "baked, 7 s" line in the log:\n' + e.stdout())
+    shots = box_shots(c, e, (1000, 1900, 7000))
+    check(shots[1900] == shots[1000], 'the die moves on the stopped platform: %s, then %s' %
+          (shots[1000], shots[1900]))
+    check(shots[7000][2] > shots[1000][2] + 20, 'the die is not lower on screen at 7 s: y %.1f, %.1f at 1 s' %
+          (shots[7000][2], shots[1000][2]))
+    e.quit()
+
+
 def case_platform_lift(c):
     """assets/animations/platform_lift.ani opened as a user would: the editor bakes the box stuck to
     the platform that eases right and then lifts it, and says so. At 2 s the box has been carried
