@@ -273,7 +273,7 @@ void EventBake::predict(int i, double now) {
                 if (!(b.still() && o.still()))
                     c = mesh_pair(*b.shape, from_now(b, now), *o.shape, from_now(o, now), limit);
             } else if (TurningView vb, vo; (b.turning() || o.turning()) &&
-                                           turning_view(b, now, vb) && turning_view(o, now, vo)) {
+                                           turning_view(i, now, vb) && turning_view(j, now, vo)) {
                 // Both turn, or one turns and the other translates without turning (a box with
                 // Rotates off, a platform released from its keys): certified advancement.
                 if (!(b.still() && o.still()))
@@ -650,13 +650,14 @@ EventBake::contact_moving_in(const Body &b, const TurningMesh &mb, const Turning
     }
 }
 
-// Body b seen as turning_contact.hpp sees a turning body. One that turns (not tipping over an
+// Body i seen as turning_contact.hpp sees a turning body. One that turns (not tipping over an
 // edge: bake_hinge.cpp) as it turns. A free one that does not turn (a box with Rotates off, a
 // platform released from its keys) as a mesh that turns by nothing, its triangles turned and
 // scaled as its keys hold them: for as long as they hold them (to its next key, or for ever once
 // its keys have ended). False for a sphere, a keyed or carried body, a body on a hinge, and a free
 // one whose keys turn or scale it now.
-bool EventBake::turning_view(const Body &b, double now, TurningView &view) const {
+bool EventBake::turning_view(int i, double now, TurningView &view) const {
+    const Body &b = bodies_[static_cast<size_t>(i)];
     if (b.sphere || b.hinge || b.carried()) return false;
     if (b.turning()) {
         view.mesh = turning_mesh(b);
@@ -665,18 +666,19 @@ bool EventBake::turning_view(const Body &b, double now, TurningView &view) const
         return true;
     }
     const Pose p = pose(b, now);
-    view.path.v = p.velocity;
-    view.path.a = b.path.a;
     if (b.keyed()) { // its keys translate it at a constant velocity until its next key
-        const std::optional<Carried> m = carried_motion(static_cast<int>(&b - bodies_.data()), now);
+        const std::optional<Carried> m = carried_motion(i, now);
         if (!m) return false;
         view.path.v = m->velocity;
-        view.path.a = glm::dvec3(0.0);
         view.holds = m->until - now;
-    } else if (now < b.keys_end) { // released from its keys, until its next key
-        const double end = std::min(next_key(b.model, now), b.keys_end);
-        if (!(end > now) || !keys_hold_pose(b.model, now, end)) return false;
-        view.holds = end - now;
+    } else {
+        if (now < b.keys_end) { // released from its keys, until its next key
+            const double end = std::min(next_key(b.model, now), b.keys_end);
+            if (!(end > now) || !keys_hold_pose(b.model, now, end)) return false;
+            view.holds = end - now;
+        }
+        view.path.v = p.velocity;
+        view.path.a = b.path.a;
     }
     const ani_mesh_view &mesh = mesh_of(b);
     view.vertices.resize(mesh.vertex_count);

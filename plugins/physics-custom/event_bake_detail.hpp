@@ -416,7 +416,7 @@ class EventBake {
         double reach = 0.0;
         double holds = kNever;
     };
-    bool turning_view(const Body &b, double now, TurningView &view) const;
+    bool turning_view(int i, double now, TurningView &view) const;
     bool keys_hold_pose(uint32_t model, double t, double end) const;
     std::optional<Contact> predict_turning_pair(int i, int j, const TurningView &vb,
                                                 const TurningView &vo, double now, double limit,
