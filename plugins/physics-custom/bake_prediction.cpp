@@ -277,7 +277,7 @@ void EventBake::predict(int i, double now) {
                 // Both turn, or one turns and the other translates without turning (a box with
                 // Rotates off, a platform released from its keys): certified advancement.
                 if (!(b.still() && o.still()))
-                    c = predict_turning_pair(i, j, vb, vo, now, limit, points);
+                    c = turning_pair_once(i, j, vb, vo, now, limit, points);
                 moving_in = true;
             } else if (!(b.still() && o.still()))
                 c = advance(i, j, -1, now, limit); // may find them overlapping, and ignore them
@@ -636,7 +636,7 @@ EventBake::contact_moving_in(const Body &b, const TurningMesh &mb, const Turning
     TurningContact c;
     for (int tries = 0;; ++tries) {
         c = turning_mesh_contact(mb, pb, mo, po, from, window);
-        count_.mesh_tests += static_cast<std::size_t>(c.steps) + 1;
+        count_.mesh_tests += c.pair_tests;
         orient(c);
         if (!(c.found() && tries < 1000 && !approaching(b, c, now + c.t, o))) return c;
         const double speed =
@@ -752,6 +752,69 @@ std::optional<Contact> EventBake::predict_turning_pair(int i, int j, const Turni
     contact.normal = c.found() ? c.normal : glm::dvec3(0.0); // undecided: looked at again
     points = c.found() ? c.points : std::vector<glm::dvec3>{};
     return contact;
+}
+
+// The pair's first contact within [now, now + limit], as predict_turning_pair finds it, or as it
+// found it for the other body of the pair at this same time, when both bodies are seen as they
+// were then (their paths, turns, vertices and how long their views hold, to the bit). A contact
+// found within the earlier window is the first within this one too if it is within it; none found
+// within the earlier window means none within this one if it is no longer.
+std::optional<Contact> EventBake::turning_pair_once(int i, int j, const TurningView &vb,
+                                                    const TurningView &vo, double now, double limit,
+                                                    std::vector<glm::dvec3> &points) {
+    if (!pair_memos_.empty() && pair_memos_.begin()->second.now != now) pair_memos_.clear();
+    const std::pair<int, int> key(std::min(i, j), std::max(i, j));
+    if (auto found = pair_memos_.find(key); found != pair_memos_.end()) {
+        const PairMemo &m = found->second;
+        const bool swapped = m.i != i;
+        const TurningView &ours = swapped ? vo : vb, &theirs = swapped ? vb : vo;
+        if (same_view(ours, m.view_i, m.vertices_i) && same_view(theirs, m.view_j, m.vertices_j) &&
+            (m.contact || limit <= m.limit)) {
+            ++count_.reused;
+            if (m.contact && m.contact->t > limit) return std::nullopt;
+            points = m.contact ? m.points : std::vector<glm::dvec3>{};
+            std::optional<Contact> c = m.contact;
+            if (c && swapped) c->normal = -c->normal;
+            return c;
+        }
+    }
+    std::optional<Contact> c = predict_turning_pair(i, j, vb, vo, now, limit, points);
+    // Views whose turn changes (a top that is not spherical) turn by a function: not kept.
+    if (vb.path.turn || vo.path.turn) return c;
+    PairMemo m;
+    m.i = i;
+    m.j = j;
+    m.now = now;
+    m.limit = limit;
+    m.vertices_i.assign(vb.mesh.vertices, vb.mesh.vertices + vb.mesh.vertex_count);
+    m.vertices_j.assign(vo.mesh.vertices, vo.mesh.vertices + vo.mesh.vertex_count);
+    m.view_i.mesh = vb.mesh;
+    m.view_i.path = vb.path;
+    m.view_i.reach = vb.reach;
+    m.view_i.holds = vb.holds;
+    m.view_j.mesh = vo.mesh;
+    m.view_j.path = vo.path;
+    m.view_j.reach = vo.reach;
+    m.view_j.holds = vo.holds;
+    m.view_i.mesh.vertices = m.view_j.mesh.vertices = nullptr;
+    m.contact = c;
+    if (c) m.points = points;
+    pair_memos_[key] = std::move(m);
+    return c;
+}
+
+// Whether a view is the one kept (its mesh's vertices compared with the copy kept of them).
+bool EventBake::same_view(const TurningView &view, const TurningView &kept,
+                          const std::vector<glm::dvec3> &kept_vertices) {
+    const TurningPath &p = view.path, &q = kept.path;
+    if (p.turn || q.turn || !(p.c0 == q.c0) || !(p.v == q.v) || !(p.a == q.a) || !(p.w == q.w) ||
+        !(p.q0 == q.q0) || view.reach != kept.reach || view.holds != kept.holds)
+        return false;
+    const TurningMesh &m = view.mesh, &k = kept.mesh;
+    return m.triangles == k.triangles && m.triangle_count == k.triangle_count &&
+           m.edges == k.edges && m.edge_count == k.edge_count &&
+           std::equal(m.vertices, m.vertices + m.vertex_count, kept_vertices.begin(),
+                      kept_vertices.end());
 }
 
 // The normal of a contact with a static model points from it towards the body's centre (for a

@@ -244,6 +244,7 @@ void EventBake::report_counts() {
         {"releases from keys", count_.releases},
         {"mesh feature tests", count_.mesh_tests},
         {"tips about an edge", count_.hinges},
+        {"pair predictions reused", count_.reused},
     };
     // Each slice reports its own work: the host adds them up.
     for (size_t k = 0; k < std::size(counts); ++k) {

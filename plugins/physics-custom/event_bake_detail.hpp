@@ -421,6 +421,21 @@ class EventBake {
     std::optional<Contact> predict_turning_pair(int i, int j, const TurningView &vb,
                                                 const TurningView &vo, double now, double limit,
                                                 std::vector<glm::dvec3> &points);
+    // predict_turning_pair, or its answer for the same pair from the other side at the same time
+    // (handle() predicts both bodies of a contact), when neither view has changed since.
+    struct PairMemo {
+        int i = -1, j = -1;
+        double now = 0.0, limit = 0.0;
+        std::vector<glm::dvec3> vertices_i, vertices_j; // the views' vertices, as they were
+        TurningView view_i, view_j;                     // their meshes point at nothing kept
+        std::optional<Contact> contact;                 // the normal from j towards i
+        std::vector<glm::dvec3> points;
+    };
+    std::optional<Contact> turning_pair_once(int i, int j, const TurningView &vb,
+                                             const TurningView &vo, double now, double limit,
+                                             std::vector<glm::dvec3> &points);
+    static bool same_view(const TurningView &view, const TurningView &kept,
+                          const std::vector<glm::dvec3> &kept_vertices);
     static void outward(TurningContact &c, const TurningPath &path);
     bool approaching(const Body &b, const TurningContact &c, double now,
                      const Body *other = nullptr) const;
@@ -578,12 +593,15 @@ class EventBake {
     OverlapMemory &memory_;                  // overlaps found by the earlier slices of the bake
     struct {
         std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0,
-                    collisions = 0, advancements = 0, releases = 0, mesh_tests = 0, hinges = 0;
+                    collisions = 0, advancements = 0, releases = 0, mesh_tests = 0, hinges = 0,
+                    reused = 0;
     } count_;
+    // The turning pairs predicted at the latest time, by (lower index, higher index).
+    std::map<std::pair<int, int>, PairMemo> pair_memos_;
     std::size_t reports_ = 0;
     std::size_t sleepers_ = 0;         // bodies asleep on others
     std::size_t riders_ = 0;           // bodies on carriers, or carried
-    std::array<double, 10> counted_{}; // the counts reported by the earlier slices
+    std::array<double, 11> counted_{}; // the counts reported by the earlier slices
     std::vector<bool> is_body_;        // per model: a body (the others are reported each slice)
     double horizon_ = 0.0;             // how far predictions look
     ScenePrint fingerprint_;           // the scene the bake goes on with

@@ -459,32 +459,50 @@ TurningContact turning_mesh_contact(const TurningMesh &a, const TurningPath &pat
         out.kind = TurningContact::kInvalid;
         return out;
     }
+    // Each pair of triangles is known apart until `due` (its last safe step's end): a step
+    // measures again only the pairs due by then, the rest keep their bounds (each holds from the
+    // time it was taken: the paths are the same), so a pair that stays far is not measured at
+    // every step of one that closes. Within the time tolerance of due counts as due, so that a
+    // step shorter than the tolerance is always a fresh one: a contact, whose direction is that
+    // of the nearest pair measured then (the pair that closed, not one leaving a contact).
+    const std::size_t pairs = a.triangle_count * b.triangle_count;
+    std::vector<double> due(pairs, t0);
     Moving ma, mb;
     glm::dvec3 pair_normal(0.0);
     double t = t0;
     for (;;) {
         place_moving(a, path_a, t, ma);
         place_moving(b, path_b, t, mb);
-        double g = kInf, s = kInf;
+        double g = kInf, s = kInf, fresh = kInf;
         for (std::size_t i = 0; i < a.triangle_count; ++i)
             for (std::size_t j = 0; j < b.triangle_count; ++j) {
+                double &until = due[i * b.triangle_count + j];
+                if (!settings.measure_every_pair && until - t > settings.time_tolerance) {
+                    s = std::min(s, until - t);
+                    continue;
+                }
                 double d = kInf;
                 glm::dvec3 n(0.0);
-                s = std::min(s, pair_step(ma, a.triangles + 3 * i, path_a, mb, b.triangles + 3 * j,
-                                          path_b, t, d, &n));
+                const double step = pair_step(ma, a.triangles + 3 * i, path_a, mb,
+                                              b.triangles + 3 * j, path_b, t, d, &n);
+                ++out.pair_tests;
+                until = t + step;
+                fresh = std::min(fresh, step);
                 if (d < g) {
                     g = d;
                     pair_normal = n;
                 }
             }
+        s = std::min(s, fresh);
         out.gap = g;
         if (!(g > 0.0)) break;
-        if (s < settings.time_tolerance || t + s == t) break;
+        if (fresh < settings.time_tolerance || t + fresh == t) break;
         if (t + s > t1) {
             out.t = t1;
             return out; // kNone
         }
-        if (out.steps >= settings.max_steps) {
+        // At most the work of max_steps plain steps (each step measures at least one pair).
+        if (out.pair_tests >= static_cast<std::size_t>(settings.max_steps) * pairs) {
             out.kind = TurningContact::kUndecided;
             out.t = t;
             return out;

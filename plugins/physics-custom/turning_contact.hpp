@@ -72,6 +72,10 @@ struct TurningContactSettings {
     // much at most; the tests measure it at rounding.
     double time_tolerance = 1e-13;
     int max_steps = 10000;
+    // turning_mesh_contact measures again, at each step, only the pairs of triangles whose last
+    // bound has run out; with this set, every pair at every step (the plain advancement, kept
+    // to compare the work against).
+    bool measure_every_pair = false;
 };
 
 struct TurningContact {
@@ -79,7 +83,8 @@ struct TurningContact {
         kNone,       // no contact within [t0, t1]
         kVertexFace, // a vertex of one on a face of the other (or on the plane)
         kEdgeEdge,   // two edges cross
-        kUndecided,  // max_steps reached before the gap closed: t is a lower bound still
+        kUndecided,  // max_steps reached before the gap closed (for turning_mesh_contact,
+                     // max_steps times its pairs of triangles measured): t is a lower bound still
         kInvalid     // an input is not finite (the window, a path, a vertex, the plane): the
                      // caller refuses it, naming the model
     } kind = kNone;
@@ -88,7 +93,8 @@ struct TurningContact {
     glm::dvec3 normal{0.0};         // unit, from the second body (or the plane) towards the first
     std::vector<glm::dvec3> points; // every vertex-face pair within `contact_slack` of touching
     double gap = 0.0;               // the gap left at t (>= 0)
-    int steps = 0;                  // advancement steps taken: the work done
+    int steps = 0;                  // advancement steps taken
+    std::size_t pair_tests = 0;     // pairs of triangles measured: the work done
     bool found() const { return kind == kVertexFace || kind == kEdgeEdge; }
 };
 
@@ -103,8 +109,11 @@ TurningContact turning_plane_contact(const TurningMesh &mesh, const TurningPath 
 // The earliest t in [t0, t1] at which the surfaces of mesh a (moving on path_a) and mesh b (on
 // path_b; a default TurningPath, still, for a world-space triangle soup) touch. They must be
 // apart at t0. Each may be convex or not: the bounds are taken on every pair of triangles (each
-// convex), so they hold for any shape. The normal points from b towards a. The pairs are tested
-// by brute force: meant for the few small turning models of a scene.
+// convex), so they hold for any shape. The normal points from b towards a. Every pair is
+// measured at t0; after that, a pair is measured again only when the safe step it gave has run
+// out (each pair's bound holds from when it was taken), so a pair far apart is not measured at
+// every step of one that closes (the steps are more, the work less: `pair_tests`). No broad
+// phase: meant for the few small turning models of a scene.
 TurningContact turning_mesh_contact(const TurningMesh &a, const TurningPath &path_a,
                                     const TurningMesh &b, const TurningPath &path_b, double t0,
                                     double t1, const TurningContactSettings &settings = {},

