@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -13,7 +14,10 @@ fs::path bin_dir() { return ANIMATOR_BIN_DIR; }
 fs::path source_dir() { return ANIMATOR_SOURCE_DIR; }
 
 fs::path fresh_dir(const std::string &name) {
-    const fs::path dir = fs::path(ANIMATOR_TEST_TMP_DIR) / name;
+    // One per process: ctest runs the cases of one file as parallel processes, and two of them
+    // wiping and filling the same folder broke each other (motion_paths_test, under ctest -j2).
+    const fs::path dir =
+        fs::path(ANIMATOR_TEST_TMP_DIR) / (name + "." + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;

@@ -12,7 +12,8 @@ namespace animator::test {
 
 std::filesystem::path bin_dir();
 std::filesystem::path source_dir();
-// A fresh, empty folder for one test, under the build tree.
+// A fresh, empty folder for one test, under the build tree (its name and the process id: the
+// cases ctest runs in parallel each have their own).
 std::filesystem::path fresh_dir(const std::string &name);
 
 struct CommandResult {

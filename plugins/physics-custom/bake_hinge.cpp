@@ -87,25 +87,10 @@ bool EventBake::try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v
     const glm::dvec3 P = a + s * u, r0 = c - P;
     const double rho = glm::length(r0);
     if (!(rho > 1e-9 * size)) return false;
-    // About the edge: the moment of inertia, the edge a principal direction (no wobble that would
-    // need a torque across it), and the angular momentum it keeps.
     const double m = collision_mass(b);
-    const glm::dmat3 I = b.spin.moments.x > 0.0 ? glm::inverse(b.spin.inverse_inertia(t))
-                                                : glm::dmat3(1.0 / b.inv_inertia);
-    const double Iu = glm::dot(u, I * u);
-    if (glm::length(I * u - Iu * u) > 1e-9 * Iu) return false;
-    const double Ih = Iu + m * rho * rho;
-    const double rate0 = glm::dot(u, I * w + m * glm::cross(r0, v)) / Ih;
-    // The impulse that makes the edge still: within the friction cone, and pushing.
-    const Material mo = material_of(*scene_->models[ob.model].desc);
-    const double mu = combined_friction(b.material.friction, mo.friction);
-    const glm::dvec3 J = m * (rate0 * glm::cross(u, r0) - v);
-    const double Jn = glm::dot(J, n), tiny = 1e-12 * m * std::max(1.0, glm::length(v));
-    if (Jn < -tiny || glm::length(J - Jn * n) > mu * Jn + tiny) return false;
-    // The pendulum: psi from straight down (g) about u, psi'' = -w^2 sin psi, w^2 = m g rho / Ih.
-    const glm::dvec3 down = g / gl, side = glm::cross(u, down);
-    const double psi0 = std::atan2(glm::dot(r0, side), glm::dot(r0, down));
-    auto pendulum = std::make_shared<const ani::Pendulum>(m * gl * rho / Ih, psi0, rate0, t);
+    double psi0 = 0.0, mu = 0.0;
+    auto pendulum = hinge_pendulum(b, ob, u, r0, n, v, w, t, psi0, mu);
+    if (!pendulum) return false;
     auto h = std::make_shared<Hinge>();
     h->support = o;
     h->point = P;
@@ -147,9 +132,7 @@ bool EventBake::try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v
     std::sort(h->landing_points.begin(), h->landing_points.end(),
               [&](const glm::dvec3 &x1, const glm::dvec3 &x2) { return off_edge(x1) > off_edge(x2); });
     // The contact force the motion needs, R = m (a - g) with a = psi'' u x r - psi'^2 r: pushing
-    // (n . R >= 0) and within the friction cone. Checked at 256 times of the tip and, where it
-    // fails, its first failure found by bisection (the force is a trigonometric polynomial of
-    // degree 2 in psi: at most four sign changes over a turn).
+    // (n . R >= 0) and within the friction cone, to the landing.
     auto holds = [&](double time) {
         double psi, rate;
         pendulum->evaluate(time, psi, rate);
@@ -160,10 +143,192 @@ bool EventBake::try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v
         return N >= -slack && glm::length(F - N * n) <= mu * N + slack;
     };
     if (!holds(t)) return false;
+    h->ends = first_failure(holds, t, h->landing);
+    if (!(h->ends > t)) return false;
+    begin_hinge(b, t, q, u, std::move(pendulum), std::move(h));
+    return true;
+}
+
+// Body i, a turning model lying with a face across an edge of static model o (a box left
+// overhanging a table), touching it at `points` along that edge alone, with velocity v and angular
+// velocity w before the contact's impulse: when the edge is level and the model's centre of mass
+// lies beyond it, over the span it touches, and is not turning back, it turns about the edge from
+// here, its angular momentum about the edge kept (a plastic contact), as the upside-down pendulum
+// of try_hinge. The edge stays on its face's material line; the contact force its motion needs is
+// taken along that face's normal, which turns with it. Nothing of the obstacle within its reach
+// lies above the table's face or beyond the edge, so its face, turning down about the edge, meets
+// nothing of the obstacle before a quarter turn: the hinge ends when the force fails (it slips or
+// lifts off the edge) or at 80 degrees, and it turns freely from there. True when it does.
+bool EventBake::try_hinge_over_edge(int i, int o, const std::vector<glm::dvec3> &points,
+                                    const glm::dvec3 &v, const glm::dvec3 &w, double t) {
+    Body &b = bodies_[static_cast<size_t>(i)];
+    if (!b.turning() || b.hinge || !b.dynamics || b.supported() || points.size() < 2) return false;
+    const glm::dvec3 g = b.free_a;
+    const double gl = glm::length(g);
+    if (!(gl > 0.0)) return false;
+    const Obstacle &ob = obstacles_[static_cast<size_t>(o)];
+    const glm::dvec3 c = b.path.at(t - b.t0);
+    const glm::dquat q = b.spin.at(t);
+    const glm::dmat3 R = glm::mat3_cast(q);
+    const double size = std::max(1.0, 2.0 * b.turning_reach), slack = 1e-9 * size;
+    // The touching points on one line, at least 1e-6 of its size long.
+    const glm::dvec3 a = points.front();
+    glm::dvec3 e = a;
+    for (const glm::dvec3 &p : points)
+        if (glm::length(p - a) > glm::length(e - a)) e = p;
+    const double length = glm::length(e - a);
+    if (!(length > kTipSlack * size)) return false;
+    glm::dvec3 u = (e - a) / length;
+    for (const glm::dvec3 &p : points)
+        if (glm::length((p - a) - glm::dot(p - a, u) * u) > slack) return false;
+    // That line on an edge of the obstacle, with a face of the obstacle on it facing the model
+    // (the table's top), and the side the obstacle is on.
+    const MeshShape &shape = *ob.shape;
+    auto on_segment = [&](const glm::dvec3 &x, const glm::dvec3 &p0, const glm::dvec3 &p1) {
+        const glm::dvec3 d = p1 - p0;
+        const double s = std::clamp(glm::dot(x - p0, d) / glm::dot(d, d), 0.0, 1.0);
+        return glm::length(x - (p0 + s * d)) <= slack;
+    };
+    glm::dvec3 E0(0.0), top(0.0), out(0.0);
+    bool found = false;
+    for (const auto &edge : shape.edges) {
+        const glm::dvec3 &p0 = shape.vertices[edge[0]], &p1 = shape.vertices[edge[1]];
+        if (!(glm::length(p1 - p0) > 0.0) || !on_segment(a, p0, p1) || !on_segment(e, p0, p1))
+            continue;
+        for (size_t k = 0; k < shape.triangles.size(); ++k) {
+            const auto &tri = shape.triangles[k];
+            int shared = 0, third = -1;
+            for (uint32_t x : tri) {
+                if (x == edge[0] || x == edge[1])
+                    ++shared;
+                else
+                    third = static_cast<int>(x);
+            }
+            const glm::dvec3 nk = shape.normals[k];
+            if (shared != 2 || third < 0 || !(glm::dot(nk, c - p0) > 0.0) || !(glm::dot(nk, g) < 0.0))
+                continue;
+            if (found && glm::dot(nk, g) >= glm::dot(top, g)) continue; // the one facing up most
+            found = true;
+            E0 = p0;
+            u = glm::normalize(p1 - p0);
+            top = nk;
+            out = glm::normalize(glm::cross(u, nk));
+            if (glm::dot(out, shape.vertices[static_cast<size_t>(third)] - p0) > 0.0) out = -out;
+        }
+    }
+    if (!found) return false;
+    // Level, so that gravity turns it about the edge alone; its centre of mass over the span it
+    // touches and beyond the edge.
+    if (std::abs(glm::dot(u, g)) > 1e-9 * gl) return false;
+    const double s0 = glm::dot(a - E0, u), s1 = glm::dot(e - E0, u), sc = glm::dot(c - E0, u);
+    if (!(sc > std::min(s0, s1) + slack && sc < std::max(s0, s1) - slack)) return false;
+    const glm::dvec3 P = E0 + sc * u, r0 = c - P;
+    const double rho = glm::length(r0);
+    if (!(rho > slack) || !(glm::dot(r0, out) > slack)) return false;
+    // Its face on the edge: the plane through the line that has all its vertices on the side of
+    // its centre and touches another of them, the one nearest the table's top.
+    std::vector<glm::dvec3> x;
+    double reach = 0.0;
+    for (const glm::dvec3 &tv : b.turning_vertices) {
+        x.push_back(c + R * tv);
+        reach = std::max(reach, glm::length(x.back() - P));
+    }
+    glm::dvec3 face(0.0);
+    for (const glm::dvec3 &y : x) {
+        glm::dvec3 m = glm::cross(u, y - P);
+        if (!(glm::length(m) > slack)) continue; // on the line
+        m = glm::normalize(m);
+        if (glm::dot(m, r0) < 0.0) m = -m;
+        bool all = true;
+        for (const glm::dvec3 &z : x) all = all && glm::dot(m, z - P) >= -slack;
+        if (all && glm::dot(m, top) > glm::dot(face, top)) face = m;
+    }
+    if (!(glm::dot(face, top) > 0.0)) return false;
+    // Nothing of the obstacle within its reach above the table's face or beyond the edge.
+    for (size_t k = 0; k + 2 < ob.corners.size(); k += 3) {
+        const glm::dvec3 near = closest_point_on_triangle(P, ob.corners[k], ob.corners[k + 1],
+                                                          ob.corners[k + 2]);
+        if (glm::length(near - P) > reach * (1.0 + 1e-9) + slack) continue;
+        for (size_t j = k; j < k + 3; ++j)
+            if (glm::dot(top, ob.corners[j] - P) > slack || glm::dot(out, ob.corners[j] - P) > slack)
+                return false;
+    }
+    // The pendulum about the edge, as try_hinge's.
+    const double m = collision_mass(b);
+    double psi0 = 0.0, mu = 0.0;
+    auto pendulum = hinge_pendulum(b, ob, u, r0, face, v, w, t, psi0, mu);
+    if (!pendulum) return false;
+    // Away from the table: the turn that carries the centre of mass outwards, which gravity
+    // speeds; not turning back.
+    double psi_now = 0.0, rate0 = 0.0;
+    pendulum->evaluate(t, psi_now, rate0);
+    const double away = glm::dot(glm::cross(u, r0), out) > 0.0 ? 1.0 : -1.0;
+    if (!(-std::sin(psi0) * away > 0.0) || rate0 * away < 0.0) return false;
+    const double quarter = pendulum->first_time_at(psi0 + away * 80.0 * M_PI / 180.0, t);
+    if (!(quarter > t && quarter < kNever)) return false;
+    auto holds = [&](double time) {
+        double psi, rate;
+        pendulum->evaluate(time, psi, rate);
+        const glm::dvec3 r = turned(r0, u, psi - psi0), n = turned(face, u, psi - psi0);
+        const glm::dvec3 accel =
+            -pendulum->omega2() * std::sin(psi) * glm::cross(u, r) - rate * rate * r;
+        const glm::dvec3 F = m * (accel - g);
+        const double N = glm::dot(F, n), small = 1e-12 * m * gl;
+        return N >= -small && glm::length(F - N * n) <= mu * N + small;
+    };
+    if (!holds(t)) return false;
+    auto h = std::make_shared<Hinge>();
+    h->support = o;
+    h->point = P;
+    h->normal = face;
+    h->pivot = b.pivot + glm::transpose(R) * (P - c);
+    for (const glm::dvec3 &tv : b.turning_vertices) {
+        h->vertices.push_back(tv - (h->pivot - b.pivot));
+        h->reach = std::max(h->reach, glm::length(h->vertices.back()));
+    }
+    h->ends = std::min(quarter, first_failure(holds, t, quarter));
+    if (!(h->ends > t)) return false;
+    begin_hinge(b, t, q, u, std::move(pendulum), std::move(h));
+    return true;
+}
+
+// Body b turning about the line along u through its point at -r0 from its centre of mass, from t,
+// with velocity v and angular velocity w before the contact (normal n) with static model ob that
+// holds the line: the upside-down pendulum, psi'' = -w^2 sin psi with psi from straight down (b's
+// acceleration) about u and w^2 = m g rho / I_line, starting at psi0 with the angular momentum
+// about the line it has (a plastic contact). Null unless the line is a principal direction of its
+// inertia (no wobble that would need a torque across it) and the impulse that makes the line
+// still pushes, within the friction cone (mu, the pair's friction).
+std::shared_ptr<const ani::Pendulum>
+EventBake::hinge_pendulum(const Body &b, const Obstacle &ob, const glm::dvec3 &u,
+                          const glm::dvec3 &r0, const glm::dvec3 &n, const glm::dvec3 &v,
+                          const glm::dvec3 &w, double t, double &psi0, double &mu) const {
+    const double m = collision_mass(b), rho = glm::length(r0), gl = glm::length(b.free_a);
+    const glm::dmat3 I = b.spin.moments.x > 0.0 ? glm::inverse(b.spin.inverse_inertia(t))
+                                                : glm::dmat3(1.0 / b.inv_inertia);
+    const double Iu = glm::dot(u, I * u);
+    if (glm::length(I * u - Iu * u) > 1e-9 * Iu) return nullptr;
+    const double Ih = Iu + m * rho * rho;
+    const double rate0 = glm::dot(u, I * w + m * glm::cross(r0, v)) / Ih;
+    const Material mo = material_of(*scene_->models[ob.model].desc);
+    mu = combined_friction(b.material.friction, mo.friction);
+    const glm::dvec3 J = m * (rate0 * glm::cross(u, r0) - v);
+    const double Jn = glm::dot(J, n), tiny = 1e-12 * m * std::max(1.0, glm::length(v));
+    if (Jn < -tiny || glm::length(J - Jn * n) > mu * Jn + tiny) return nullptr;
+    const glm::dvec3 down = b.free_a / gl, side = glm::cross(u, down);
+    psi0 = std::atan2(glm::dot(r0, side), glm::dot(r0, down));
+    return std::make_shared<const ani::Pendulum>(m * gl * rho / Ih, psi0, rate0, t);
+}
+
+// The last time before the first one in (t, until] at which `holds` fails (kNever if it holds
+// throughout): checked at 256 times and, where it fails, its first failure found by bisection
+// (the contact force is a trigonometric polynomial of degree 2 in the angle: at most four sign
+// changes over a turn).
+double EventBake::first_failure(const std::function<bool(double)> &holds, double t, double until) {
     constexpr int kSamples = 256;
     double before = t;
     for (int k = 1; k <= kSamples; ++k) {
-        const double at = t + (h->landing - t) * k / kSamples;
+        const double at = t + (until - t) * k / kSamples;
         if (holds(at)) {
             before = at;
             continue;
@@ -174,22 +339,26 @@ bool EventBake::try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v
             if (mid <= lo || mid >= hi) break;
             (holds(mid) ? lo : hi) = mid;
         }
-        h->ends = lo;
-        break;
+        return lo;
     }
-    if (!(h->ends > t)) return false;
-    // From here it turns about the edge: its path is the still point P's.
+    return kNever;
+}
+
+// From t body b turns about the line through h's point along u as the pendulum says: its path is
+// that still point's, its turn the pendulum's from orientation q.
+void EventBake::begin_hinge(Body &b, double t, const glm::dquat &q, const glm::dvec3 &u,
+                            std::shared_ptr<const ani::Pendulum> pendulum,
+                            std::shared_ptr<Hinge> h) {
     close_segment(b, t);
     emit_spin(b, t);
     b.t0 = t;
-    b.path = Path{P, glm::dvec3(0.0), glm::dvec3(0.0)};
+    b.path = Path{h->point, glm::dvec3(0.0), glm::dvec3(0.0)};
     b.motion = ANI_MOTION_FREE;
     b.settles_at = kNever;
     b.spin.hinge_on(t, q, u, std::move(pendulum));
     b.hinge = std::move(h);
     ++b.version;
     ++count_.hinges;
-    return true;
 }
 
 // A tipping body turns freely from t on, where the hinge has put it: its centre of mass back on a

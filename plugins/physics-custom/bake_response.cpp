@@ -418,7 +418,9 @@ bool EventBake::respond_turning_to_obstacle(int i, const Obstacle &o, const Cont
     if (glm::dot(point_velocity_of(after), n) < v_min) {
         // Standing on an edge, it tips over about it in closed form (bake_hinge.cpp) where it
         // can; otherwise by microcollisions.
-        if (try_hinge(i, static_cast<int>(&o - obstacles_.data()), n, a.v, a.w, t)) return false;
+        const int index = static_cast<int>(&o - obstacles_.data());
+        if (try_hinge(i, index, n, a.v, a.w, t) || try_hinge_over_edge(i, index, points, a.v, a.w, t))
+            return false;
         r = leave_at(after, n, v_min, mu);
     }
     restart(b, t, r.va, false);

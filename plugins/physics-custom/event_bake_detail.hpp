@@ -353,6 +353,15 @@ class EventBake {
     // Tipping over an edge (bake_hinge.cpp).
     bool try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v, const glm::dvec3 &w,
                    double t);
+    bool try_hinge_over_edge(int i, int o, const std::vector<glm::dvec3> &points,
+                             const glm::dvec3 &v, const glm::dvec3 &w, double t);
+    std::shared_ptr<const ani::Pendulum>
+    hinge_pendulum(const Body &b, const Obstacle &ob, const glm::dvec3 &u, const glm::dvec3 &r0,
+                   const glm::dvec3 &n, const glm::dvec3 &v, const glm::dvec3 &w, double t,
+                   double &psi0, double &mu) const;
+    static double first_failure(const std::function<bool(double)> &holds, double t, double until);
+    void begin_hinge(Body &b, double t, const glm::dquat &q, const glm::dvec3 &u,
+                     std::shared_ptr<const ani::Pendulum> pendulum, std::shared_ptr<Hinge> h);
     void unhinge(Body &b, double t);
     void predict_hinge(const Body &b, double now, Predicted &next) const;
     bool on_flat_region(const Obstacle &o, const glm::dvec3 &n, double d,
