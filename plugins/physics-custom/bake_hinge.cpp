@@ -2,8 +2,10 @@
 // of a face of a static model, its centre of mass not over that edge, turns about it as an
 // upside-down pendulum, in closed form (animator/pendulum.hpp), until a vertex lands on the face,
 // or until the contact forces that motion needs would pull the edge down or exceed friction
-// (then it turns freely, and microcollisions take it on). Relies on bake_response.cpp, which calls
-// try_hinge where it would otherwise start microcollisions at an edge.
+// (then it turns freely, and microcollisions take it on); one lying with a face across an edge
+// of a static model, its centre of mass beyond it, turns about that edge the same way
+// (try_hinge_over_edge). Relies on bake_response.cpp, which calls them where it would otherwise
+// start microcollisions at an edge.
 #include "event_bake_detail.hpp"
 
 namespace physics_custom::bake {
@@ -320,7 +322,7 @@ EventBake::hinge_pendulum(const Body &b, const Obstacle &ob, const glm::dvec3 &u
     return std::make_shared<const ani::Pendulum>(m * gl * rho / Ih, psi0, rate0, t);
 }
 
-// The last time before the first one in (t, until] at which `holds` fails (kNever if it holds
+// The end of the span from t in which `holds` holds, within (t, until] (kNever if it holds
 // throughout): checked at 256 times and, where it fails, its first failure found by bisection
 // (the contact force is a trigonometric polynomial of degree 2 in the angle: at most four sign
 // changes over a turn).

@@ -61,15 +61,16 @@ inline const char *name_of(const ani_physics_model &m) {
     return m.desc && m.desc->name ? m.desc->name : "?";
 }
 
-// A turning model tipping over an edge it stands on, on a face of a static model (bake_hinge.cpp):
-// it turns about the fixed line through `point` along its spin's axis as the pendulum says, held
-// there by the contact forces its motion needs, until a vertex lands on the face (`landing`) or
-// those forces fail first (`ends`: the edge would lift off or slip).
+// A turning model tipping over an edge it stands on, on a face of a static model, or over an edge
+// of a static model its face lies across (bake_hinge.cpp): it turns about the fixed line through
+// `point` along its spin's axis as the pendulum says, held there by the contact forces its motion
+// needs, until a vertex lands on the face (`landing`; never over a static model's edge) or those
+// forces fail first (`ends`: the edge would lift off or slip).
 struct Hinge {
     int support = -1;       // the static model (its obstacle's index)
     glm::dvec3 point{0.0};  // the foot of its centre of mass on the line, world: still
     glm::dvec3 pivot{0.0};  // that point in the model's own frame as scaled (its segments')
-    glm::dvec3 normal{0.0}; // the face's unit normal
+    glm::dvec3 normal{0.0}; // the face's unit normal (over an edge: its own face's, at the start)
     std::vector<glm::dvec3> vertices; // its turning_vertices relative to `point`, not its centre
     double reach = 0.0;               // the farthest of them from `point`
     double landing = kNever;
