@@ -93,15 +93,7 @@ bool EventBake::try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v
     double psi0 = 0.0, mu = 0.0;
     auto pendulum = hinge_pendulum(b, ob, u, r0, n, v, w, t, psi0, mu);
     if (!pendulum) return false;
-    auto h = std::make_shared<Hinge>();
-    h->support = o;
-    h->point = P;
-    h->normal = n;
-    h->pivot = b.pivot + glm::transpose(R) * (P - c);
-    for (const glm::dvec3 &tv : b.turning_vertices) {
-        h->vertices.push_back(tv - (h->pivot - b.pivot));
-        h->reach = std::max(h->reach, glm::length(h->vertices.back()));
-    }
+    auto h = new_hinge(b, o, P, n, R, c);
     // Nothing of the obstacle above the face's plane within its reach: the landing on the face is
     // then its first contact with the obstacle.
     for (const glm::dvec3 &corner : ob.shape->vertices)
@@ -133,16 +125,9 @@ bool EventBake::try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v
     auto off_edge = [&](const glm::dvec3 &p) { return glm::length(glm::cross(p - P, u)); };
     std::sort(h->landing_points.begin(), h->landing_points.end(),
               [&](const glm::dvec3 &x1, const glm::dvec3 &x2) { return off_edge(x1) > off_edge(x2); });
-    // The contact force the motion needs, R = m (a - g) with a = psi'' u x r - psi'^2 r: pushing
-    // (n . R >= 0) and within the friction cone, to the landing.
+    // The contact force the motion needs, to the landing, along the face's normal.
     auto holds = [&](double time) {
-        double psi, rate;
-        pendulum->evaluate(time, psi, rate);
-        const glm::dvec3 r = turned(r0, u, psi - psi0);
-        const glm::dvec3 accel = -pendulum->omega2() * std::sin(psi) * glm::cross(u, r) - rate * rate * r;
-        const glm::dvec3 F = m * (accel - g);
-        const double N = glm::dot(F, n), slack = 1e-12 * m * gl;
-        return N >= -slack && glm::length(F - N * n) <= mu * N + slack;
+        return edge_holds(*pendulum, time, u, r0, psi0, n, false, m, g, mu);
     };
     if (!holds(t)) return false;
     h->ends = first_failure(holds, t, h->landing);
@@ -268,26 +253,12 @@ bool EventBake::try_hinge_over_edge(int i, int o, const std::vector<glm::dvec3> 
     if (!(-std::sin(psi0) * away > 0.0) || rate0 * away < 0.0) return false;
     const double quarter = pendulum->first_time_at(psi0 + away * 80.0 * M_PI / 180.0, t);
     if (!(quarter > t && quarter < kNever)) return false;
+    // The contact force the motion needs, along its face's normal, which turns with it.
     auto holds = [&](double time) {
-        double psi, rate;
-        pendulum->evaluate(time, psi, rate);
-        const glm::dvec3 r = turned(r0, u, psi - psi0), n = turned(face, u, psi - psi0);
-        const glm::dvec3 accel =
-            -pendulum->omega2() * std::sin(psi) * glm::cross(u, r) - rate * rate * r;
-        const glm::dvec3 F = m * (accel - g);
-        const double N = glm::dot(F, n), small = 1e-12 * m * gl;
-        return N >= -small && glm::length(F - N * n) <= mu * N + small;
+        return edge_holds(*pendulum, time, u, r0, psi0, face, true, m, g, mu);
     };
     if (!holds(t)) return false;
-    auto h = std::make_shared<Hinge>();
-    h->support = o;
-    h->point = P;
-    h->normal = face;
-    h->pivot = b.pivot + glm::transpose(R) * (P - c);
-    for (const glm::dvec3 &tv : b.turning_vertices) {
-        h->vertices.push_back(tv - (h->pivot - b.pivot));
-        h->reach = std::max(h->reach, glm::length(h->vertices.back()));
-    }
+    auto h = new_hinge(b, o, P, face, R, c);
     h->ends = std::min(quarter, first_failure(holds, t, quarter));
     if (!(h->ends > t)) return false;
     begin_hinge(b, t, q, u, std::move(pendulum), std::move(h));
@@ -320,6 +291,40 @@ EventBake::hinge_pendulum(const Body &b, const Obstacle &ob, const glm::dvec3 &u
     const glm::dvec3 down = b.free_a / gl, side = glm::cross(u, down);
     psi0 = std::atan2(glm::dot(r0, side), glm::dot(r0, down));
     return std::make_shared<const ani::Pendulum>(m * gl * rho / Ih, psi0, rate0, t);
+}
+
+// A hinge of body b (at centre c, turned by R) about the line through P on static model o, n the
+// contact's normal: its vertices and reach about P.
+std::shared_ptr<Hinge> EventBake::new_hinge(const Body &b, int o, const glm::dvec3 &P,
+                                            const glm::dvec3 &n, const glm::dmat3 &R,
+                                            const glm::dvec3 &c) {
+    auto h = std::make_shared<Hinge>();
+    h->support = o;
+    h->point = P;
+    h->normal = n;
+    h->pivot = b.pivot + glm::transpose(R) * (P - c);
+    for (const glm::dvec3 &tv : b.turning_vertices) {
+        h->vertices.push_back(tv - (h->pivot - b.pivot));
+        h->reach = std::max(h->reach, glm::length(h->vertices.back()));
+    }
+    return h;
+}
+
+// Whether the contact at a hinge holds at `time`: the force the pendulum's motion needs,
+// R = m (a - g) with a = psi'' u x r - psi'^2 r (r0 the centre of mass from the line at psi0),
+// pushes along the contact's normal (n . R >= 0) and stays within the friction cone. n as at psi0,
+// turned with the model when `normal_turns` (its own face on another's edge).
+bool EventBake::edge_holds(const ani::Pendulum &pendulum, double time, const glm::dvec3 &u,
+                           const glm::dvec3 &r0, double psi0, const glm::dvec3 &n0,
+                           bool normal_turns, double m, const glm::dvec3 &g, double mu) {
+    double psi, rate;
+    pendulum.evaluate(time, psi, rate);
+    const glm::dvec3 r = turned(r0, u, psi - psi0);
+    const glm::dvec3 n = normal_turns ? turned(n0, u, psi - psi0) : n0;
+    const glm::dvec3 accel = -pendulum.omega2() * std::sin(psi) * glm::cross(u, r) - rate * rate * r;
+    const glm::dvec3 F = m * (accel - g);
+    const double N = glm::dot(F, n), slack = 1e-12 * m * glm::length(g);
+    return N >= -slack && glm::length(F - N * n) <= mu * N + slack;
 }
 
 // The end of the span from t in which `holds` holds, within (t, until] (kNever if it holds

@@ -361,6 +361,12 @@ class EventBake {
                    const glm::dvec3 &n, const glm::dvec3 &v, const glm::dvec3 &w, double t,
                    double &psi0, double &mu) const;
     static double first_failure(const std::function<bool(double)> &holds, double t, double until);
+    static std::shared_ptr<Hinge> new_hinge(const Body &b, int o, const glm::dvec3 &P,
+                                            const glm::dvec3 &n, const glm::dmat3 &R,
+                                            const glm::dvec3 &c);
+    static bool edge_holds(const ani::Pendulum &pendulum, double time, const glm::dvec3 &u,
+                           const glm::dvec3 &r0, double psi0, const glm::dvec3 &n0,
+                           bool normal_turns, double m, const glm::dvec3 &g, double mu);
     void begin_hinge(Body &b, double t, const glm::dquat &q, const glm::dvec3 &u,
                      std::shared_ptr<const ani::Pendulum> pendulum, std::shared_ptr<Hinge> h);
     void unhinge(Body &b, double t);
