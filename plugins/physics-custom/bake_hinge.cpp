@@ -39,14 +39,14 @@ bool EventBake::on_flat_region(const Obstacle &o, const glm::dvec3 &n, double d,
 // over the edge's span, and the edge can hold it (the impulse that makes the edge's points still
 // within the friction cone), it turns about that edge from here, its angular momentum about the
 // edge kept (a plastic contact). True when it does.
-bool EventBake::try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v,
+bool EventBake::try_hinge(int i, const HingeSupport &on, const glm::dvec3 &n, const glm::dvec3 &v,
                           const glm::dvec3 &w, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
     if (!b.turning() || b.hinge || !b.dynamics || b.supported()) return false;
     const glm::dvec3 g = b.free_a;
     const double gl = glm::length(g);
     if (!(gl > 0.0) || !(glm::dot(g, n) < 0.0)) return false;
-    const Obstacle &ob = obstacles_[static_cast<size_t>(o)];
+    const Obstacle &ob = *on.triangles;
     const glm::dvec3 c = b.path.at(t - b.t0);
     const glm::dquat q = b.spin.at(t);
     const glm::dmat3 R = glm::mat3_cast(q);
@@ -93,7 +93,7 @@ bool EventBake::try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v
     double psi0 = 0.0, mu = 0.0;
     auto pendulum = hinge_pendulum(b, ob, u, r0, n, v, w, t, psi0, mu);
     if (!pendulum) return false;
-    auto h = new_hinge(b, o, P, n, R, c);
+    auto h = new_hinge(b, on, P, n, R, c);
     // Nothing of the obstacle above the face's plane within its reach: the landing on the face is
     // then its first contact with the obstacle.
     for (const glm::dvec3 &corner : ob.shape->vertices)
@@ -146,41 +146,36 @@ bool EventBake::try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v
 // lies above the table's face or beyond the edge, so its face, turning down about the edge, meets
 // nothing of the obstacle before a quarter turn: the hinge ends when the force fails (it slips or
 // lifts off the edge) or at 80 degrees, and it turns freely from there. True when it does.
-bool EventBake::try_hinge_over_edge(int i, int o, const std::vector<glm::dvec3> &points,
-                                    const glm::dvec3 &v, const glm::dvec3 &w, double t) {
+bool EventBake::try_hinge_over_edge(int i, const HingeSupport &on,
+                                    const std::vector<glm::dvec3> &points, const glm::dvec3 &v,
+                                    const glm::dvec3 &w, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
-    if (!b.turning() || b.hinge || !b.dynamics || b.supported() || points.size() < 2) return false;
+    if (!b.turning() || b.hinge || !b.dynamics || b.supported() || points.empty()) return false;
     const glm::dvec3 g = b.free_a;
     const double gl = glm::length(g);
     if (!(gl > 0.0)) return false;
-    const Obstacle &ob = obstacles_[static_cast<size_t>(o)];
+    const Obstacle &ob = *on.triangles;
     const glm::dvec3 c = b.path.at(t - b.t0);
     const glm::dquat q = b.spin.at(t);
     const glm::dmat3 R = glm::mat3_cast(q);
     const double size = std::max(1.0, 2.0 * b.turning_reach), slack = 1e-9 * size;
-    // The touching points on one line, at least 1e-6 of its size long.
-    const glm::dvec3 a = points.front();
-    glm::dvec3 e = a;
-    for (const glm::dvec3 &p : points)
-        if (glm::length(p - a) > glm::length(e - a)) e = p;
-    const double length = glm::length(e - a);
-    if (!(length > kTipSlack * size)) return false;
-    glm::dvec3 u = (e - a) / length;
-    for (const glm::dvec3 &p : points)
-        if (glm::length((p - a) - glm::dot(p - a, u) * u) > slack) return false;
-    // That line on an edge of the obstacle, with a face of the obstacle on it facing the model
-    // (the table's top), and the side the obstacle is on.
+    // An edge of the obstacle with a face of the obstacle on it facing the model (the table's top),
+    // and the side the obstacle is on: the touching points on that edge, or on that face's plane
+    // on its side (a box still lying flat on the table, overhanging), at least one on the edge.
     const MeshShape &shape = *ob.shape;
     auto on_segment = [&](const glm::dvec3 &x, const glm::dvec3 &p0, const glm::dvec3 &p1) {
         const glm::dvec3 d = p1 - p0;
         const double s = std::clamp(glm::dot(x - p0, d) / glm::dot(d, d), 0.0, 1.0);
         return glm::length(x - (p0 + s * d)) <= slack;
     };
-    glm::dvec3 E0(0.0), top(0.0), out(0.0);
+    glm::dvec3 E0(0.0), top(0.0), out(0.0), u(0.0);
+    double edge_length = 0.0;
     bool found = false;
     for (const auto &edge : shape.edges) {
         const glm::dvec3 &p0 = shape.vertices[edge[0]], &p1 = shape.vertices[edge[1]];
-        if (!(glm::length(p1 - p0) > 0.0) || !on_segment(a, p0, p1) || !on_segment(e, p0, p1))
+        if (!(glm::length(p1 - p0) > 0.0) ||
+            !std::any_of(points.begin(), points.end(),
+                         [&](const glm::dvec3 &p) { return on_segment(p, p0, p1); }))
             continue;
         for (size_t k = 0; k < shape.triangles.size(); ++k) {
             const auto &tri = shape.triangles[k];
@@ -195,20 +190,26 @@ bool EventBake::try_hinge_over_edge(int i, int o, const std::vector<glm::dvec3> 
             if (shared != 2 || third < 0 || !(glm::dot(nk, c - p0) > 0.0) || !(glm::dot(nk, g) < 0.0))
                 continue;
             if (found && glm::dot(nk, g) >= glm::dot(top, g)) continue; // the one facing up most
+            const glm::dvec3 along = glm::normalize(p1 - p0);
+            glm::dvec3 away = glm::normalize(glm::cross(along, nk));
+            if (glm::dot(away, shape.vertices[static_cast<size_t>(third)] - p0) > 0.0) away = -away;
+            if (!std::all_of(points.begin(), points.end(), [&](const glm::dvec3 &p) {
+                    return on_segment(p, p0, p1) || (std::abs(glm::dot(nk, p - p0)) <= slack &&
+                                                     glm::dot(away, p - p0) <= slack);
+                }))
+                continue;
             found = true;
             E0 = p0;
-            u = glm::normalize(p1 - p0);
+            edge_length = glm::length(p1 - p0);
+            u = along;
             top = nk;
-            out = glm::normalize(glm::cross(u, nk));
-            if (glm::dot(out, shape.vertices[static_cast<size_t>(third)] - p0) > 0.0) out = -out;
+            out = away;
         }
     }
     if (!found) return false;
-    // Level, so that gravity turns it about the edge alone; its centre of mass over the span it
-    // touches and beyond the edge.
+    // Level, so that gravity turns it about the edge alone; its centre of mass beyond the edge.
     if (std::abs(glm::dot(u, g)) > 1e-9 * gl) return false;
-    const double s0 = glm::dot(a - E0, u), s1 = glm::dot(e - E0, u), sc = glm::dot(c - E0, u);
-    if (!(sc > std::min(s0, s1) + slack && sc < std::max(s0, s1) - slack)) return false;
+    const double sc = glm::dot(c - E0, u);
     const glm::dvec3 P = E0 + sc * u, r0 = c - P;
     const double rho = glm::length(r0);
     if (!(rho > slack) || !(glm::dot(r0, out) > slack)) return false;
@@ -231,6 +232,28 @@ bool EventBake::try_hinge_over_edge(int i, int o, const std::vector<glm::dvec3> 
         if (all && glm::dot(m, top) > glm::dot(face, top)) face = m;
     }
     if (!(glm::dot(face, top) > 0.0)) return false;
+    // Its centre of mass over the span of the edge its face lies on: where the line crosses the
+    // face, its vertices within 1e-6 of its size of that plane (a tilt of rounding size across
+    // the edge lifts one end of the line of contact, not the face off it), within the edge.
+    std::vector<glm::dvec3> on_face;
+    for (const glm::dvec3 &y : x)
+        if (glm::dot(face, y - P) <= kTipSlack * size) on_face.push_back(y);
+    const glm::dvec3 across = glm::cross(face, u);
+    double from = kNever, to = -kNever;
+    auto covers = [&](const glm::dvec3 &y) {
+        from = std::min(from, glm::dot(y - E0, u));
+        to = std::max(to, glm::dot(y - E0, u));
+    };
+    for (size_t j = 0; j < on_face.size(); ++j) {
+        const double dj = glm::dot(across, on_face[j] - P);
+        if (std::abs(dj) <= slack) covers(on_face[j]);
+        for (size_t k = j + 1; k < on_face.size(); ++k) {
+            const double dk = glm::dot(across, on_face[k] - P);
+            if ((dj < -slack && dk > slack) || (dj > slack && dk < -slack))
+                covers(on_face[j] + (on_face[k] - on_face[j]) * (dj / (dj - dk)));
+        }
+    }
+    if (!(sc > std::max(from, 0.0) + slack && sc < std::min(to, edge_length) - slack)) return false;
     // Nothing of the obstacle within its reach above the table's face or beyond the edge.
     for (size_t k = 0; k + 2 < ob.corners.size(); k += 3) {
         const glm::dvec3 near = closest_point_on_triangle(P, ob.corners[k], ob.corners[k + 1],
@@ -258,11 +281,31 @@ bool EventBake::try_hinge_over_edge(int i, int o, const std::vector<glm::dvec3> 
         return edge_holds(*pendulum, time, u, r0, psi0, face, true, m, g, mu);
     };
     if (!holds(t)) return false;
-    auto h = new_hinge(b, o, P, face, R, c);
+    auto h = new_hinge(b, on, P, face, R, c);
     h->ends = std::min(quarter, first_failure(holds, t, quarter));
     if (!(h->ends > t)) return false;
     begin_hinge(b, t, q, u, std::move(pendulum), std::move(h));
     return true;
+}
+
+// Body i, a turning model, meets body j, which stands without Dynamics (a platform released from
+// its keys: immovable), at `points` with normal n from j towards i, too slowly to follow its
+// bounces: as against a static model (try_hinge, try_hinge_over_edge), it tips over an edge it
+// stands on, on j's face, or over j's edge its face lies across, j's triangles placed as they
+// stand. Until j's next key at most: its keys may move it from then. True when it does.
+bool EventBake::try_hinge_on_body(int i, int j, const glm::dvec3 &n,
+                                  const std::vector<glm::dvec3> &points, const glm::dvec3 &v,
+                                  const glm::dvec3 &w, double t) {
+    const Body &o = bodies_[static_cast<size_t>(j)];
+    if (o.dynamics || o.sphere || o.keyed() || !immovable(o) || !(o.resume_at > t)) return false;
+    Obstacle face = face_of(o, t);
+    const Pose p = pose(o, t);
+    face.shape = build_shape(o.model, ani(p.center), p.linear, glm::dvec3(0.0));
+    HingeSupport on;
+    on.triangles = &face;
+    on.body = j;
+    on.until = o.resume_at;
+    return try_hinge(i, on, n, v, w, t) || try_hinge_over_edge(i, on, points, v, w, t);
 }
 
 // Body b turning about the line along u through its point at -r0 from its centre of mass, from t,
@@ -293,13 +336,15 @@ EventBake::hinge_pendulum(const Body &b, const Obstacle &ob, const glm::dvec3 &u
     return std::make_shared<const ani::Pendulum>(m * gl * rho / Ih, psi0, rate0, t);
 }
 
-// A hinge of body b (at centre c, turned by R) about the line through P on static model o, n the
-// contact's normal: its vertices and reach about P.
-std::shared_ptr<Hinge> EventBake::new_hinge(const Body &b, int o, const glm::dvec3 &P,
-                                            const glm::dvec3 &n, const glm::dmat3 &R,
-                                            const glm::dvec3 &c) {
+// A hinge of body b (at centre c, turned by R) about the line through P on `on`, n the contact's
+// normal: its vertices and reach about P.
+std::shared_ptr<Hinge> EventBake::new_hinge(const Body &b, const HingeSupport &on,
+                                            const glm::dvec3 &P, const glm::dvec3 &n,
+                                            const glm::dmat3 &R, const glm::dvec3 &c) {
     auto h = std::make_shared<Hinge>();
-    h->support = o;
+    h->support = on.obstacle;
+    h->support_body = on.body;
+    h->support_until = on.until;
     h->point = P;
     h->normal = n;
     h->pivot = b.pivot + glm::transpose(R) * (P - c);
@@ -363,6 +408,7 @@ void EventBake::begin_hinge(Body &b, double t, const glm::dquat &q, const glm::d
     b.motion = ANI_MOTION_FREE;
     b.settles_at = kNever;
     b.spin.hinge_on(t, q, u, std::move(pendulum));
+    h->ends = std::min(h->ends, h->support_until); // a body under it may move from then
     b.hinge = std::move(h);
     ++b.version;
     ++count_.hinges;
@@ -384,7 +430,8 @@ void EventBake::unhinge(Body &b, double t) {
     ++b.version;
 }
 
-// A tipping body's own next event: its landing on the face, or the end of the hinge.
+// A tipping body's own next event: its landing on the face (of the static model, or of the body
+// it stands on), or the end of the hinge.
 void EventBake::predict_hinge(const Body &b, double now, Predicted &next) const {
     const Hinge &h = *b.hinge;
     if (h.landing <= h.ends) {
@@ -393,7 +440,13 @@ void EventBake::predict_hinge(const Body &b, double now, Predicted &next) const 
         contact.t = h.landing - now;
         contact.normal = h.normal;
         contact.point = h.landing_points.front();
-        next = predicted(h.landing, EventKind::kObstacle, h.support, 0, contact);
+        if (h.support_body >= 0) {
+            const Body &o = bodies_[static_cast<size_t>(h.support_body)];
+            next = predicted(h.landing, EventKind::kBody, h.support_body, o.version, contact);
+            next.moving_in = true;
+        } else {
+            next = predicted(h.landing, EventKind::kObstacle, h.support, 0, contact);
+        }
         next.points = h.landing_points;
     } else if (h.ends < next.t) {
         next = predicted(h.ends, EventKind::kHinge);

@@ -260,6 +260,14 @@ void EventBake::predict(int i, double now) {
         const Body &o = bodies_[static_cast<size_t>(j)];
         if (!o.active) return;
         if (riders_ > 0 && carries(i, j)) return; // held on its face: they move together
+        // Tipping over an edge of a body that stands (bake_hinge.cpp): its landing there, or the
+        // hinge's end, is the tipping one's own event.
+        if (b.hinge && b.hinge->support_body == j) {
+            predict_hinge(b, now, next);
+            if (next.t - now < limit) limit = next.t - now;
+            return;
+        }
+        if (o.hinge && o.hinge->support_body == i) return;
         if (!is_ignored(i, j)) {
             ++tested;
             std::optional<Contact> c;

@@ -62,6 +62,17 @@ void EventBake::collide_bodies(int i, int j, const Contact &contact,
     Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
     const glm::dvec3 n = contact.normal;
     if (b.turning() || o.turning()) { // the turning models' section below
+        // A keyed body without Dynamics or gravity whose keys hold it still here (a platform
+        // between two equal keys) is released from them, as at any contact, and stands: the other
+        // meets it as a still one (below), which it may sleep on or tip over.
+        for (const int x : {i, j}) {
+            const Body &k = bodies_[static_cast<size_t>(x)];
+            if (!k.keyed() || k.dynamics || !bodies_[static_cast<size_t>(x == i ? j : i)].turning())
+                continue;
+            const std::optional<Carried> motion = carried_motion(x, t);
+            if (motion && glm::length(motion->velocity) <= 1e-12 && next_key(k.model, t) > t)
+                release(x, t);
+        }
         if (sleep_on_body(i, j, n, contact.point, t) || sleep_on_body(j, i, -n, contact.point, t)) {
             report(collision_event(b.model, o.model, contact, t,
                                    point_velocity(b, contact.point, t) -
@@ -418,8 +429,10 @@ bool EventBake::respond_turning_to_obstacle(int i, const Obstacle &o, const Cont
     if (glm::dot(point_velocity_of(after), n) < v_min) {
         // Standing on an edge, it tips over about it in closed form (bake_hinge.cpp) where it
         // can; otherwise by microcollisions.
-        const int index = static_cast<int>(&o - obstacles_.data());
-        if (try_hinge(i, index, n, a.v, a.w, t) || try_hinge_over_edge(i, index, points, a.v, a.w, t))
+        HingeSupport on;
+        on.triangles = &o;
+        on.obstacle = static_cast<int>(&o - obstacles_.data());
+        if (try_hinge(i, on, n, a.v, a.w, t) || try_hinge_over_edge(i, on, points, a.v, a.w, t))
             return false;
         r = leave_at(after, n, v_min, mu);
     }
@@ -429,10 +442,11 @@ bool EventBake::respond_turning_to_obstacle(int i, const Obstacle &o, const Cont
 }
 
 // A turning body b meets body o, which its support holds still (bake_rest.cpp, "resting on other
-// models"), at `points` with normal n from o towards b: as against a static model, every
-// touching point shares the impulse, and b leaves at least at the microcollision speed (a box
-// knocked across the one it slept on slides over it by microcollisions, its face's corners
-// taking them together). o takes nothing. It goes to sleep on o when it comes to rest there.
+// models") or which stands without Dynamics, at `points` with normal n from o towards b: as
+// against a static model, every touching point shares the impulse, and b leaves at least at the
+// microcollision speed (a box knocked across the one it slept on slides over it by
+// microcollisions, its face's corners taking them together), or tips over an edge of o that
+// stands (bake_hinge.cpp). o takes nothing. It goes to sleep on o when it comes to rest there.
 void EventBake::respond_turning_to_held(int i, int j, const Contact &contact,
                                         const std::vector<glm::dvec3> &points, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
@@ -446,7 +460,10 @@ void EventBake::respond_turning_to_held(int i, int j, const Contact &contact,
     ImpulseBody after = a;
     after.v = r.va;
     after.w = r.wa;
-    if (glm::dot(point_velocity_of(after), n) < v_min) r = leave_at(after, n, v_min, mu);
+    if (glm::dot(point_velocity_of(after), n) < v_min) {
+        if (try_hinge_on_body(i, j, n, points, a.v, a.w, t)) return;
+        r = leave_at(after, n, v_min, mu);
+    }
     restart(b, t, r.va, false);
     turn(b, t, r.wa);
 }

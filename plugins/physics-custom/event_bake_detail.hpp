@@ -65,9 +65,12 @@ inline const char *name_of(const ani_physics_model &m) {
 // of a static model its face lies across (bake_hinge.cpp): it turns about the fixed line through
 // `point` along its spin's axis as the pendulum says, held there by the contact forces its motion
 // needs, until a vertex lands on the face (`landing`; never over a static model's edge) or those
-// forces fail first (`ends`: the edge would lift off or slip).
+// forces fail first (`ends`: the edge would lift off or slip). The same on a body that stands
+// without Dynamics (a platform released from its keys), until its keys take it back.
 struct Hinge {
-    int support = -1;       // the static model (its obstacle's index)
+    int support = -1;       // the static model (its obstacle's index), or -1
+    int support_body = -1;  // or the body that stands (its index), or -1
+    double support_until = kNever; // when that body may move (its keys take it back)
     glm::dvec3 point{0.0};  // the foot of its centre of mass on the line, world: still
     glm::dvec3 pivot{0.0};  // that point in the model's own frame as scaled (its segments')
     glm::dvec3 normal{0.0}; // the face's unit normal (over an edge: its own face's, at the start)
@@ -351,17 +354,26 @@ class EventBake {
     void rebase(Body &b, double t);
     void restart_spin(Body &b, double t);
     std::optional<TurningShape> check_turning(uint32_t i, bool sphere, double t);
-    // Tipping over an edge (bake_hinge.cpp).
-    bool try_hinge(int i, int o, const glm::dvec3 &n, const glm::dvec3 &v, const glm::dvec3 &w,
-                   double t);
-    bool try_hinge_over_edge(int i, int o, const std::vector<glm::dvec3> &points,
+    // Tipping over an edge (bake_hinge.cpp). What a hinge turns on: the triangles of a static model
+    // (its obstacle's index in `obstacle`), or of a body that stands without Dynamics placed as
+    // an obstacle's (its index in `body`; it stands until `until`).
+    struct HingeSupport {
+        const Obstacle *triangles = nullptr;
+        int obstacle = -1, body = -1;
+        double until = kNever;
+    };
+    bool try_hinge(int i, const HingeSupport &on, const glm::dvec3 &n, const glm::dvec3 &v,
+                   const glm::dvec3 &w, double t);
+    bool try_hinge_over_edge(int i, const HingeSupport &on, const std::vector<glm::dvec3> &points,
                              const glm::dvec3 &v, const glm::dvec3 &w, double t);
+    bool try_hinge_on_body(int i, int j, const glm::dvec3 &n, const std::vector<glm::dvec3> &points,
+                           const glm::dvec3 &v, const glm::dvec3 &w, double t);
     std::shared_ptr<const ani::Pendulum>
     hinge_pendulum(const Body &b, const Obstacle &ob, const glm::dvec3 &u, const glm::dvec3 &r0,
                    const glm::dvec3 &n, const glm::dvec3 &v, const glm::dvec3 &w, double t,
                    double &psi0, double &mu) const;
     static double first_failure(const std::function<bool(double)> &holds, double t, double until);
-    static std::shared_ptr<Hinge> new_hinge(const Body &b, int o, const glm::dvec3 &P,
+    static std::shared_ptr<Hinge> new_hinge(const Body &b, const HingeSupport &on, const glm::dvec3 &P,
                                             const glm::dvec3 &n, const glm::dmat3 &R,
                                             const glm::dvec3 &c);
     static bool edge_holds(const ani::Pendulum &pendulum, double time, const glm::dvec3 &u,

@@ -226,29 +226,6 @@ TEST_CASE("a stack of three boxes stands exactly still for 1000 s, and a ball dr
 
 namespace {
 
-// The tipping cube's pendulum (tipping_pendulum.hpp) from phi0 at rest, by Runge-Kutta in steps of
-// 1e-6 s, to the first time `stop(phi)` holds, that last step refined by bisection on its length.
-template <class Stop> double tip_until(double w2, double phi0, Stop stop) {
-    double phi = phi0, rate = 0.0, t = 0.0;
-    const double h = 1e-6;
-    for (;;) {
-        double p = phi, r = rate;
-        tipping::step(w2, h, p, r);
-        if (stop(p)) break;
-        phi = p;
-        rate = r;
-        t += h;
-    }
-    double lo = 0.0, hi = h;
-    for (int k = 0; k < 60; ++k) {
-        const double mid = 0.5 * (lo + hi);
-        double p = phi, r = rate;
-        tipping::step(w2, mid, p, r);
-        (stop(p) ? hi : lo) = mid;
-    }
-    return t + lo;
-}
-
 // The contact force that holds a cube of side s turning about its edge from phi0 at rest, over its
 // weight, at phi: its centre, rho = s / sqrt(2) from the edge, at (rho sin phi, rho cos phi) moves
 // with phi'' = w2 sin phi and phi'^2 = 2 w2 (cos phi0 - cos phi); F = m a_x, N = m (g + a_y).
@@ -299,7 +276,7 @@ TEST_CASE("a cube leaning on its edge tips over as the pendulum equation says, a
     }
     // The face lands when phi reaches 45 degrees: the first contact after the start, at the
     // speed of its far edge, s phi'.
-    const double landing = tip_until(w2, 15.0 * deg, [&](double p) { return p >= 45.0 * deg; });
+    const double landing = tipping::until(w2, 15.0 * deg, [&](double p) { return p >= 45.0 * deg; });
     const ani_collision_event *landed = nullptr;
     for (const ani_collision_event &e : timeline->events())
         if (e.t > 1e-3) {
@@ -333,7 +310,7 @@ TEST_CASE("a cube tipping on a floor too slippery to hold its edge turns about i
     auto timeline = timeline_of(doc);
     timeline->bake(5.0);
     const double w2 = tipping::pendulum_rate(G, 1.0), deg = M_PI / 180.0;
-    const double slips = tip_until(w2, 15.0 * deg, [&](double p) {
+    const double slips = tipping::until(w2, 15.0 * deg, [&](double p) {
         double F, N;
         edge_force(w2, 15.0 * deg, p, F, N);
         return F > 0.3 * N;
@@ -366,17 +343,9 @@ TEST_CASE("a box left overhanging a table's edge turns about that edge as the pe
     timeline->bake(1.5);
     const double d = 0.06, rho = std::hypot(d, 0.5), w2 = G * rho / (1.0 / 6.0 + rho * rho);
     const double phi0 = std::atan2(d, 0.5), mu = 0.5;
-    // The force of the edge on the box (per kg), along and across its bottom face, at phi.
-    auto slips = [&](double phi) {
-        const double acc = w2 * std::sin(phi), rate2 = 2.0 * w2 * (std::cos(phi0) - std::cos(phi));
-        const double fx = rho * (acc * std::cos(phi) - rate2 * std::sin(phi));
-        const double fy = G + rho * (-acc * std::sin(phi) - rate2 * std::cos(phi));
-        const double delta = phi - phi0;
-        const double N = fx * std::sin(delta) + fy * std::cos(delta);
-        const double T = fx * std::cos(delta) - fy * std::sin(delta);
-        return N < 0.0 || std::abs(T) > mu * N;
-    };
-    const double slip = tip_until(w2, phi0, slips);
+    const double slip = tipping::until(w2, phi0, [&](double phi) {
+        return tipping::over_edge_slips(G, w2, rho, phi0, mu, phi);
+    });
     const RotationSegment *hinge = nullptr;
     for (const RotationSegment &r : timeline->rotations(box))
         if (r.hinge && !hinge) hinge = &r;
