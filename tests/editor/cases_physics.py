@@ -135,3 +135,39 @@ def case_platform_lift(c):
     check(abs(shots[5000][1] - shots[2000][1]) < 3, 'the box moved sideways while lifted')
     check(shots[7000] == shots[5000], 'the box moves after the lift: %s, then %s' % (shots[5000], shots[7000]))
     e.quit()
+
+
+def case_platform_tip(c):
+    """platform_lift.ani with the box turned into a die (Rotates on, friction 1) and the platform's
+    keys jumping it left at 0.5 s, out from under all but 22 cm of the box's 50 cm base (its
+    centre of mass 3.1 cm past the platform's edge): the editor bakes it to the end and says so
+    (it used to take 31 s of microcollisions for 1.5 s of it). The die tips off the platform's
+    edge about that edge (physics.md, "A hinge on a body that stands"): at 0.5 s it lies where it
+    started; at 1 s it has turned about the edge (about 40 degrees), right of and below where it
+    lay; at 1.5 s it has slid off and fallen, well below; at 7 s it lies still on the floor (the same
+    at 6 s, to the pixel)."""
+    with open(os.path.join(c.source, 'assets/animations/platform_lift.ani')) as f:
+        text = f.read()
+    text = text.replace('  friction 0.5\nend', '  friction 1\n  rotates true\nend', 1)
+    text, moved = re.subn(r'(keyframe (?:2000|3000|5000)\n  state "platform" center) \S+ \S+ \S+',
+                          r'\1 -4.531 1 0', text)
+    jump = ('keyframe 500\n  state "platform" center -4.531 1 0 angles 0 0 0 scale 1.5 0.1 1 '
+            'turn 0 0 0\nend\n\nkeyframe 2000\n')
+    text = text.replace('keyframe 2000\n', jump, 1)
+    check(moved == 3 and 'rotates true' in text and 'keyframe 500' in text,
+          'platform_lift.ani no longer has the platform and box to edit')
+    c.write('platform_tip.ani', text)
+    e = c.start('platform_tip.ani')
+    e.wait_baked()
+    check(re.search(r'^animator: physics\.custom: baked, 7 s$', e.stdout(), re.M),
+          'no "baked, 7 s" line in the log:\n' + e.stdout())
+    shots = box_shots(c, e, (500, 1000, 1500, 6000, 7000))
+    x0, y0 = shots[500][1], shots[500][2]
+    check(shots[1000][1] > x0 + 3 and shots[1000][2] > y0 + 2,
+          'the die did not turn off the edge by 1 s: (%.1f, %.1f), (%.1f, %.1f) at 0.5 s' %
+          (shots[1000][1], shots[1000][2], x0, y0))
+    check(shots[1500][2] > y0 + 20, 'the die has not fallen by 1.5 s: y %.1f, %.1f at 0.5 s' %
+          (shots[1500][2], y0))
+    check(shots[7000] == shots[6000], 'the die still moves on the floor: %s, then %s' %
+          (shots[6000], shots[7000]))
+    e.quit()
