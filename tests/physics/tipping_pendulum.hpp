@@ -47,6 +47,21 @@ template <class Stop> double until(double w2, double phi0, Stop stop) {
     return t + lo;
 }
 
+// The pendulum phi'' = w2 sin(phi) from phi0 at rest, in Runge-Kutta steps of 1e-6 s, to `until`:
+// at(t, phi, rate) every `every` seconds of it.
+template <class At> void follow(double w2, double phi0, double until, double every, At at) {
+    double phi = phi0, rate = 0.0, t = 0.0, next = every;
+    const double h = 1e-6;
+    while (t < until) {
+        step(w2, h, phi, rate);
+        t += h;
+        if (t >= next - 0.5 * h) {
+            at(t, phi, rate);
+            next += every;
+        }
+    }
+}
+
 // A box lying with its face across an edge, turning about it from phi0 at rest (phi: the angle of
 // its centre of mass, rho from the edge, from the vertical through it, away from the support;
 // w2 = g rho / (I_edge / m)): whether the edge's force on it at phi (per kg: g up plus its
