@@ -4,8 +4,9 @@
 // or until the contact forces that motion needs would pull the edge down or exceed friction
 // (then it turns freely, and microcollisions take it on); one lying with a face across an edge
 // of a static model, its centre of mass beyond it, turns about that edge the same way
-// (try_hinge_over_edge). Relies on bake_response.cpp, which calls them where it would otherwise
-// start microcollisions at an edge.
+// (try_hinge_over_edge); and either on a body without Dynamics that stands (try_hinge_on_body).
+// Relies on bake_response.cpp, which calls them where it would otherwise start microcollisions at
+// an edge.
 #include "event_bake_detail.hpp"
 
 namespace physics_custom::bake {
@@ -136,16 +137,18 @@ bool EventBake::try_hinge(int i, const HingeSupport &on, const glm::dvec3 &n, co
     return true;
 }
 
-// Body i, a turning model lying with a face across an edge of static model o (a box left
-// overhanging a table), touching it at `points` along that edge alone, with velocity v and angular
-// velocity w before the contact's impulse: when the edge is level and the model's centre of mass
-// lies beyond it, over the span it touches, and is not turning back, it turns about the edge from
-// here, its angular momentum about the edge kept (a plastic contact), as the upside-down pendulum
-// of try_hinge. The edge stays on its face's material line; the contact force its motion needs is
-// taken along that face's normal, which turns with it. Nothing of the obstacle within its reach
-// lies above the table's face or beyond the edge, so its face, turning down about the edge, meets
-// nothing of the obstacle before a quarter turn: the hinge ends when the force fails (it slips or
-// lifts off the edge) or at 80 degrees, and it turns freely from there. True when it does.
+// Body i, a turning model lying with a face across an edge of `on` (a box left overhanging a
+// table), touching it at `points` on that edge (or on the table's face on its side), with velocity
+// v and angular velocity w before the contact's impulse: when the edge is level and the model's
+// centre of mass lies beyond it, over the span its face covers, and is not turning back, it turns
+// about the edge from here, its angular momentum about the edge kept (a plastic contact), as the
+// upside-down pendulum of try_hinge. The edge stays on its face's material line; the contact
+// force its motion needs is taken along that face's normal, which turns with it. The rest of the
+// table within its reach, below its top and behind the edge, cannot meet its face turning down
+// about the edge before a quarter turn; a static model's triangles above the top or beyond the
+// edge (the lower steps) are met as any turning model's contacts (Hinge::beyond). The hinge ends
+// at such a contact, when the force fails (it slips or lifts off the edge) or at 80 degrees, and
+// it turns freely from there. True when it does.
 bool EventBake::try_hinge_over_edge(int i, const HingeSupport &on,
                                     const std::vector<glm::dvec3> &points, const glm::dvec3 &v,
                                     const glm::dvec3 &w, double t) {
@@ -254,14 +257,24 @@ bool EventBake::try_hinge_over_edge(int i, const HingeSupport &on,
         }
     }
     if (!(sc > std::max(from, 0.0) + slack && sc < std::min(to, edge_length) - slack)) return false;
-    // Nothing of the obstacle within its reach above the table's face or beyond the edge.
+    // The obstacle's triangles within its reach above the table's face or beyond the edge (the
+    // lower steps beyond a step's nose): a static model's are its landing's, found as any turning
+    // model's contacts (predict_obstacles); none may touch it at the edge. Nothing else of the
+    // obstacle can meet its face turning down about the edge before a quarter turn.
+    std::vector<uint32_t> beyond;
     for (size_t k = 0; k + 2 < ob.corners.size(); k += 3) {
         const glm::dvec3 near = closest_point_on_triangle(P, ob.corners[k], ob.corners[k + 1],
                                                           ob.corners[k + 2]);
         if (glm::length(near - P) > reach * (1.0 + 1e-9) + slack) continue;
+        bool outside = false;
         for (size_t j = k; j < k + 3; ++j)
-            if (glm::dot(top, ob.corners[j] - P) > slack || glm::dot(out, ob.corners[j] - P) > slack)
-                return false;
+            outside = outside || glm::dot(top, ob.corners[j] - P) > slack ||
+                      glm::dot(out, ob.corners[j] - P) > slack;
+        if (!outside) continue;
+        if (on.obstacle < 0 || glm::length(glm::cross(near - P, u)) <= kTipSlack * size)
+            return false;
+        const auto &corners = shape.triangles[k / 3];
+        beyond.insert(beyond.end(), corners.begin(), corners.end());
     }
     // The pendulum about the edge, as try_hinge's.
     const double m = collision_mass(b);
@@ -282,6 +295,7 @@ bool EventBake::try_hinge_over_edge(int i, const HingeSupport &on,
     };
     if (!holds(t)) return false;
     auto h = new_hinge(b, on, P, face, R, c);
+    h->beyond = std::move(beyond);
     h->ends = std::min(quarter, first_failure(holds, t, quarter));
     if (!(h->ends > t)) return false;
     begin_hinge(b, t, q, u, std::move(pendulum), std::move(h));

@@ -404,6 +404,12 @@ void EventBake::predict_obstacles(int i, double now, double limit, Predicted &ne
             if (b.hinge && b.hinge->support == static_cast<int>(o)) { // tipping over its edge
                 predict_hinge(b, now, next);
                 if (next.kind == EventKind::kObstacle && next.t - now < limit) limit = next.t - now;
+                if (!b.hinge->beyond.empty()) { // the rest of it within reach
+                    ++tested;
+                    predict_turning_obstacle(i, o, now, limit, next, &b.hinge->beyond);
+                    if (next.kind == EventKind::kObstacle && next.t - now < limit)
+                        limit = next.t - now;
+                }
                 continue;
             }
             ++tested;
@@ -565,7 +571,7 @@ TurningMesh EventBake::turning_mesh(const Body &b) const {
 // A turning body against a static model: the first contact within [now, now + limit] at which
 // it moves into the obstacle (contact_moving_in).
 void EventBake::predict_turning_obstacle(int i, size_t o, double now, double limit,
-                                         Predicted &next) {
+                                         Predicted &next, const std::vector<uint32_t> *only) {
     const Body &b = bodies_[static_cast<size_t>(i)];
     const Obstacle &ob = obstacles_[o];
     const TurningPath path = turning_path(b, now);
@@ -584,7 +590,9 @@ void EventBake::predict_turning_obstacle(int i, size_t o, double now, double lim
             next = predicted(now + window, EventKind::kRecheck);
     };
     std::vector<uint32_t> near;
-    if (ob.boxes.size() > 4) {
+    if (only) { // some of its triangles only (bake_hinge.cpp: beyond a hinge's edge)
+        near = *only;
+    } else if (ob.boxes.size() > 4) {
         const double speed = glm::length(path.v), accel = glm::length(path.a),
                      size = b.turning_reach_now();
         if (travel > size) // speed w + accel w^2 / 2 = size

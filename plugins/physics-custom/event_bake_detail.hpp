@@ -64,8 +64,8 @@ inline const char *name_of(const ani_physics_model &m) {
 // A turning model tipping over an edge it stands on, on a face of a static model, or over an edge
 // of a static model its face lies across (bake_hinge.cpp): it turns about the fixed line through
 // `point` along its spin's axis as the pendulum says, held there by the contact forces its motion
-// needs, until a vertex lands on the face (`landing`; never over a static model's edge) or those
-// forces fail first (`ends`: the edge would lift off or slip). The same on a body that stands
+// needs, until a vertex lands on the face (`landing`; over an edge: a contact with the triangles
+// `beyond`, if any) or those forces fail first (`ends`: the edge would lift off or slip). The same on a body that stands
 // without Dynamics (a platform released from its keys), until its keys take it back.
 struct Hinge {
     int support = -1;       // the static model (its obstacle's index), or -1
@@ -79,6 +79,10 @@ struct Hinge {
     double landing = kNever;
     std::vector<glm::dvec3> landing_points; // world: every vertex on the face then
     double ends = kNever;
+    // Over a static model's edge: that model's triangles within its reach above the top's plane
+    // or beyond the edge (a step's nose, the lower steps), as corner indices of its shape's
+    // triangles; their first contact with it, found as any turning model's, is its landing.
+    std::vector<uint32_t> beyond;
 };
 
 // A model that takes part in collisions and moves: a sphere (Dynamics or Gravity on), or any
@@ -429,7 +433,8 @@ class EventBake {
     void set_prediction(int i, const Predicted &p);
     TurningPath turning_path(const Body &b, double now) const;
     TurningMesh turning_mesh(const Body &b) const;
-    void predict_turning_obstacle(int i, size_t o, double now, double limit, Predicted &next);
+    void predict_turning_obstacle(int i, size_t o, double now, double limit, Predicted &next,
+                                  const std::vector<uint32_t> *only = nullptr);
     std::optional<TurningContact>
     contact_moving_in(const Body &b, const TurningMesh &mb, const TurningPath &pb, const Body *o,
                       const TurningMesh &mo, const TurningPath &po, double now, double window,

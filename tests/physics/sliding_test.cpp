@@ -373,6 +373,58 @@ TEST_CASE("a box left overhanging a table's edge turns about that edge as the pe
     CHECK(end.center.x > 1.5);
 }
 
+TEST_CASE("a box left overhanging a step's nose turns about it as the pendulum equation says, "
+          "and lands on the step below when its far corner reaches it") {
+    // The stairs of stairs.ani: the top step's tread at y = 2.5 ends at the nose, x = 1; the next
+    // tread is H = 0.5 lower. A box of side s = 1.2 (mu 1, Rotates on) lies on the top step with
+    // its centre of mass d = 0.05 past the nose. It turns about the nose as the upside-down
+    // pendulum (w2 = g rho / (s^2 / 6 + rho^2), rho = |(d, s / 2)|), the lower steps within its
+    // reach: its far bottom corner, L = s / 2 + d from the nose along its face, comes down on the
+    // circle about the nose and meets the next tread when L sin(delta) = H, delta the turn.
+    const double s = 1.6, d = 0.05, H = 0.5, L = 0.5 * s + d;
+    Document doc;
+    doc.add_model(model("floor", "plane", false, false), placed({0, 0, 0}, glm::dvec3(20, 1, 20)));
+    doc.add_model(model("stairs", "stairs", false, false), placed({0, 0, 0}));
+    Model m = model("box", "cube", true, true);
+    m.friction = 1.0;
+    m.restitution = 0.5;
+    m.rotates = true;
+    doc.add_model(m, placed({1.0 + d, 2.5 + 0.5 * s, 0.0}, 0.5 * s));
+    auto timeline = timeline_of(doc);
+    timeline->bake(2.0);
+    const double rho = std::hypot(d, 0.5 * s), w2 = G * rho / (s * s / 6.0 + rho * rho),
+                 phi0 = std::atan2(d, 0.5 * s), delta = std::asin(H / L);
+    const double lands = tipping::until(w2, phi0, [&](double phi) { return phi - phi0 >= delta; });
+    // (The edge holds it all the way: friction 1 is enough.)
+    REQUIRE(tipping::until(w2, phi0, [&](double phi) {
+                return tipping::over_edge_slips(G, w2, rho, phi0, 1.0, phi) || phi - phi0 >= delta;
+            }) == lands);
+    const RotationSegment *hinge = nullptr;
+    for (const RotationSegment &r : timeline->rotations(2))
+        if (r.hinge && !hinge) hinge = &r;
+    REQUIRE(hinge);
+    CAPTURE(hinge->t0, hinge->t1, lands);
+    CHECK(hinge->t0 < 1e-5);
+    tipping::follow(w2, phi0, lands - 0.01, 0.02, [&](double t, double phi, double) {
+        const ModelPose p = timeline->evaluate(t).models[2];
+        const glm::dvec3 arm = p.center - glm::dvec3(1.0, 2.5, p.center.z);
+        CAPTURE(t);
+        CHECK(std::abs(glm::length(arm) - rho) < 1e-9);
+        CHECK(std::abs(std::atan2(arm.x, arm.y) - phi) < 1e-8);
+    });
+    // Its first contact after the start: the far corner on the next tread, at the pendulum's time.
+    const ani_collision_event *landed = nullptr;
+    for (const ani_collision_event &e : timeline->events())
+        if (e.t > 1e-3 && !landed) landed = &e;
+    REQUIRE(landed);
+    CAPTURE(landed->t - lands);
+    CHECK(std::abs(landed->t - lands) < 1e-8);
+    CHECK(std::abs(hinge->t1 - lands) < 1e-8);
+    CHECK(std::abs(landed->point.y - (2.5 - H)) < 1e-9);
+    CHECK(std::abs(landed->point.x - (1.0 + L * std::cos(delta))) < 1e-6);
+    CHECK(timeline->stats().backend_counts.at("tips about an edge") >= 1);
+}
+
 TEST_CASE("a box sent across a rough 20 degree slope curves down it as the rough incline's closed "
           "form says, and stops when it says") {
     // On a slope of angle theta, with a = g sin(theta) down the fall line d and friction
