@@ -183,7 +183,7 @@ TEST_CASE("with --fps a key per frame is linear and with the timeline's values")
     REQUIRE(k.size() == 49);
     CHECK(motion_keys::is_linear(k, 1e-12));
     for (size_t i = 0; i < k.size(); ++i) {
-        CHECK(k[i].t == Approx(i / 24.0).margin(1e-15));
+        CHECK(k[i].t == Approx(static_cast<double>(i) / 24.0).margin(1e-15));
         CHECK(k[i].value == b.timeline->evaluate(k[i].t).models[static_cast<size_t>(ball)].center);
     }
 }
