@@ -65,8 +65,9 @@ inline const char *name_of(const ani_physics_model &m) {
 // of a static model its face lies across (bake_hinge.cpp): it turns about the fixed line through
 // `point` along its spin's axis as the pendulum says, held there by the contact forces its motion
 // needs, until a vertex lands on the face (`landing`; over an edge: a contact with the triangles
-// `beyond`, if any) or those forces fail first (`ends`: the edge would lift off or slip). The same on a body that stands
-// without Dynamics (a platform released from its keys), until its keys take it back.
+// `beyond`, if any) or those forces fail first (`ends`: the edge would lift off or slip). The
+// same on a body that stands without Dynamics (a platform released from its keys), until its
+// keys take it back.
 struct Hinge {
     int support = -1;       // the static model (its obstacle's index), or -1
     int support_body = -1;  // or the body that stands (its index), or -1
@@ -377,9 +378,9 @@ class EventBake {
                    const glm::dvec3 &n, const glm::dvec3 &v, const glm::dvec3 &w, double t,
                    double &psi0, double &mu) const;
     static double first_failure(const std::function<bool(double)> &holds, double t, double until);
-    static std::shared_ptr<Hinge> new_hinge(const Body &b, const HingeSupport &on, const glm::dvec3 &P,
-                                            const glm::dvec3 &n, const glm::dmat3 &R,
-                                            const glm::dvec3 &c);
+    static std::shared_ptr<Hinge> new_hinge(const Body &b, const HingeSupport &on,
+                                            const glm::dvec3 &P, const glm::dvec3 &n,
+                                            const glm::dmat3 &R, const glm::dvec3 &c);
     static bool edge_holds(const ani::Pendulum &pendulum, double time, const glm::dvec3 &u,
                            const glm::dvec3 &r0, double psi0, const glm::dvec3 &n0,
                            bool normal_turns, double m, const glm::dvec3 &g, double mu);

@@ -143,9 +143,9 @@ def case_platform_tip(c):
     centre of mass 3.1 cm past the platform's edge): the editor bakes it to the end and says so
     (it used to take 31 s of microcollisions for 1.5 s of it). The die tips off the platform's
     edge about that edge (physics.md, "A hinge on a body that stands"): at 0.5 s it lies where it
-    started; at 1 s it has turned about the edge (about 40 degrees), right of and below where it
-    lay; at 1.5 s it has slid off and fallen, well below; at 7 s it lies still on the floor (the same
-    at 6 s, to the pixel)."""
+    started; at 1 s it has turned about the edge, right of and below where it lay; at 1.5 s it has
+    slid off and fallen, well below; at 7 s it lies still on the floor (the same at 6 s, to the
+    pixel)."""
     with open(os.path.join(c.source, 'assets/animations/platform_lift.ani')) as f:
         text = f.read()
     text = text.replace('  friction 0.5\nend', '  friction 1\n  rotates true\nend', 1)

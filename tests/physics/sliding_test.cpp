@@ -276,7 +276,8 @@ TEST_CASE("a cube leaning on its edge tips over as the pendulum equation says, a
     }
     // The face lands when phi reaches 45 degrees: the first contact after the start, at the
     // speed of its far edge, s phi'.
-    const double landing = tipping::until(w2, 15.0 * deg, [&](double p) { return p >= 45.0 * deg; });
+    const double landing =
+        tipping::until(w2, 15.0 * deg, [&](double p) { return p >= 45.0 * deg; });
     const ani_collision_event *landed = nullptr;
     for (const ani_collision_event &e : timeline->events())
         if (e.t > 1e-3) {
@@ -376,7 +377,7 @@ TEST_CASE("a box left overhanging a table's edge turns about that edge as the pe
 TEST_CASE("a box left overhanging a step's nose turns about it as the pendulum equation says, "
           "and lands on the step below when its far corner reaches it") {
     // The stairs of stairs.ani: the top step's tread at y = 2.5 ends at the nose, x = 1; the next
-    // tread is H = 0.5 lower. A box of side s = 1.2 (mu 1, Rotates on) lies on the top step with
+    // tread is H = 0.5 lower. A box of side s = 1.6 (mu 1, Rotates on) lies on the top step with
     // its centre of mass d = 0.05 past the nose. It turns about the nose as the upside-down
     // pendulum (w2 = g rho / (s^2 / 6 + rho^2), rho = |(d, s / 2)|), the lower steps within its
     // reach: its far bottom corner, L = s / 2 + d from the nose along its face, comes down on the

@@ -1,8 +1,8 @@
 // The reference for a cube tipping over about its edge (docs/physics.md, "Tipping"), shared by
-// tests/physics/sliding_test.cpp, sticking_test.cpp and bench/rest.cpp: a cube of side s held at an edge turns about
-// it as an upside-down pendulum, I phi'' = m g d sin(phi) with d = s / sqrt(2) and I = 2/3 m s^2
-// about an edge, so phi'' = w2 sin(phi), w2 = 3 g / (2 sqrt(2) s) (phi: its centre of mass past
-// the vertical through the edge). Integrated by classical Runge-Kutta: in steps of 1e-6 s its
+// tests/physics/sliding_test.cpp, sticking_test.cpp and bench/rest.cpp: a cube of side s held at
+// an edge turns about it as an upside-down pendulum, I phi'' = m g d sin(phi) with d = s / sqrt(2)
+// and I = 2/3 m s^2 about an edge, so phi'' = w2 sin(phi), w2 = 3 g / (2 sqrt(2) s) (phi: its
+// centre of mass past the vertical through the edge). Integrated by classical Runge-Kutta: in steps of 1e-6 s its
 // error is far below what the tests check.
 #pragma once
 
