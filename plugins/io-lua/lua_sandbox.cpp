@@ -7,6 +7,7 @@ namespace lua_scene {
 namespace {
 
 constexpr int kHookEvery = 10000; // instructions between budget checks
+constexpr lua_Integer kRandomSeed = 0; // math.randomseed(0), as docs/scene-lua.md says
 // The chunk's name in Lua's messages; replaced by the file's full path afterwards, because Lua
 // cuts source names to LUA_IDSIZE (60) characters.
 constexpr const char *kChunkMarker = "<scene>";
@@ -47,6 +48,14 @@ Sandbox::Sandbox(SandboxLimits limits) : limits_(limits) {
     }
     lua_pushcfunction(L_, safe_load);
     lua_setglobal(L_, "load");
+    // Lua seeds math.random from the clock and addresses; a scene that scatters models with it
+    // would open differently each time, and its keyframes would no longer match. A fixed seed
+    // makes every opening the same (a scene may still call math.randomseed itself).
+    lua_getglobal(L_, "math");
+    lua_getfield(L_, -1, "randomseed");
+    lua_pushinteger(L_, kRandomSeed);
+    lua_call(L_, 1, 0);
+    lua_pop(L_, 1);
     // string.dump makes bytecode, which a scene never needs.
     lua_getglobal(L_, "string");
     lua_pushnil(L_);

@@ -133,10 +133,15 @@ int check_node(lua_State *L, int arg) { return *static_cast<int *>(luaL_checkuda
 
 Node &node_at(lua_State *L, int index) { return scene_of(L).nodes[static_cast<size_t>(index)]; }
 
+// A name, a mesh, an axis, a file: text without NUL bytes. The document holds C strings, so a
+// NUL would cut the name short ('ab\0cd' would be 'ab', '\0x' no name at all).
 std::string checked_string(lua_State *L, int arg) {
     size_t size = 0;
     const char *s = luaL_checklstring(L, arg, &size);
-    return std::string(s, size);
+    std::string out(s, size);
+    if (out.find('\0') != std::string::npos)
+        luaL_argerror(L, arg, "holds a NUL byte (\\0), which no name, mesh or file may");
+    return out;
 }
 
 // A name no node has yet, Blender's way: the name itself when free, otherwise its stem (the name
@@ -205,13 +210,21 @@ void check_keys(lua_State *L, int arg, const char *function, std::initializer_li
     while (lua_next(L, arg) != 0) {
         lua_pop(L, 1);
         bool known = false;
-        if (lua_type(L, -1) == LUA_TSTRING)
-            for (const char *a : allowed) known = known || std::string(lua_tostring(L, -1)) == a;
+        if (lua_type(L, -1) == LUA_TSTRING) {
+            size_t size = 0;
+            const char *key = lua_tolstring(L, -1, &size); // a key string, not converted in place
+            for (const char *a : allowed) known = known || std::string(key, size) == a;
+        }
         if (!known) {
             std::string list;
             for (const char *a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-            luaL_error(L, "unknown key '%s' in %s; expected %s", luaL_tolstring(L, -1, nullptr),
-                       function, list.c_str());
+            size_t size = 0;
+            const char *text = luaL_tolstring(L, -1, &size);
+            std::string shown;
+            for (size_t i = 0; i < size; ++i)
+                shown += text[i] == '\0' ? std::string("\\0") : std::string(1, text[i]);
+            luaL_error(L, "unknown key '%s' in %s; expected %s", shown.c_str(), function,
+                       list.c_str());
         }
     }
 }
@@ -250,6 +263,8 @@ std::optional<std::string> string_field(lua_State *L, int table, const char *key
     const char *s = lua_tolstring(L, -1, &size);
     std::string out(s, size);
     lua_pop(L, 1);
+    if (out.find('\0') != std::string::npos)
+        luaL_error(L, "'%s' holds a NUL byte (\\0), which no name may", key);
     return out;
 }
 

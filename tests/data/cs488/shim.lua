@@ -170,6 +170,9 @@ function gr.render(root, file, width, height, eye, view, up, fov, ambient, light
   set_camera(eye, view, up, fov)
 end
 
+-- animator seeds math.random with 0 before a scene runs, so that a scene opens the same way
+-- every time (docs/scene-lua.md); Lua itself seeds it from the clock.
+math.randomseed(0)
 local root = dofile(arg[1]) or render.root
 
 local function numbers(t)
