@@ -423,6 +423,8 @@ class EventBake {
     void predict(int i, double now);
     void predict_release(int i, int j, double now, double &limit, Predicted &next);
     std::optional<Contact> advance(int i, int j, int obstacle, double now, double limit);
+    bool sphere_and_translating(int i, int j, double now, double &limit, Predicted &next,
+                                std::optional<Contact> &contact);
     void predict_obstacles(int i, double now, double limit, Predicted &next);
     std::optional<Contact> mesh_pair(const MeshShape &a, const Path &pa, const MeshShape &b,
                                      const Path &pb, double limit);
