@@ -101,9 +101,16 @@ void EventBake::advance_to_end() {
 void EventBake::handle(int i, const Predicted &event, double now) {
     Body &b = bodies_[static_cast<size_t>(i)];
     // A body tipping over an edge meets anything, or its hinge ends: it turns freely from here,
-    // and the response sees it as any other turning body (bake_hinge.cpp).
+    // and the response sees it as any other turning body (bake_hinge.cpp). Not at a contact
+    // that did not happen: one predicted with a body that has changed course since (stale), or
+    // an undecided one (looked at again, still hinged).
+    const bool no_contact =
+        (event.kind == EventKind::kBody || event.kind == EventKind::kObstacle) &&
+        (event.contact.normal == glm::dvec3(0.0) ||
+         (event.kind == EventKind::kBody &&
+          bodies_[static_cast<size_t>(event.other)].version != event.other_version));
     if (b.hinge && event.kind != EventKind::kRecheck && event.kind != EventKind::kRelease &&
-        event.kind != EventKind::kNone)
+        event.kind != EventKind::kNone && !no_contact)
         unhinge(b, now);
     switch (event.kind) {
     case EventKind::kNone:
