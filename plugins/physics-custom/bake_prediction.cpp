@@ -342,7 +342,7 @@ void EventBake::predict_release(int i, int j, double now, double &limit, Predict
 
 // A sphere (free, turning or not) and a body that translates at a constant velocity u without
 // turning (a keyed platform between two of its keys, or one that stands: carried_motion). In
-// that body's frame, inertial, the sphere's centre is still a parabola, p + (v - u) t + a t^2,
+// that body's frame, inertial, the sphere's centre is still a parabola, p + (v - u) t + a t^2 / 2,
 // and the body's triangles stand: the exact sphere-triangle test of a static model holds, up
 // to where u changes (a recheck then, `limit` shortened to it). Conservative advancement
 // crawled there: a ball rolling off a moving platform's rim left it in 2.4 million steps of
@@ -353,8 +353,10 @@ bool EventBake::sphere_and_translating(int i, int j, double now, double &limit, 
     const Body &b = bodies_[static_cast<size_t>(i)], &o = bodies_[static_cast<size_t>(j)];
     if (b.sphere == o.sphere) return false;
     const int si = b.sphere ? i : j, mi = b.sphere ? j : i;
-    const Body &sphere = bodies_[static_cast<size_t>(si)], &mover = bodies_[static_cast<size_t>(mi)];
-    if (sphere.keyed() || sphere.carried() || mover.turning() || is_overlapped(i, j)) return false;
+    const Body &sphere = bodies_[static_cast<size_t>(si)];
+    const Body &mover = bodies_[static_cast<size_t>(mi)];
+    if (sphere.keyed() || sphere.carried() || mover.turning() || is_overlapped(i, j))
+        return false;
     const std::optional<Carried> motion = carried_motion(mi, now);
     if (!motion) return false;
     const double span = std::min(limit, motion->until - now);
