@@ -378,7 +378,7 @@ TEST_CASE("a box tipping over a table's edge stays on its hinge when a ball that
           "it turns away first") {
     // table_edge.lua's tipping box, and a ball (no gravity) sent at its side along z at 20 m/s,
     // whose path a small static block cuts at z = -3: the ball bounces back off the block at
-    // about 0.11 s, so the contact the box had predicted with it (about 0.25 s) never happens.
+    // about 0.125 s, so the contact the box had predicted with it (about 0.26 s) never happens.
     // That prediction, stale when its time comes, must not end the hinge: the box turns about
     // the edge as the pendulum says, with no contact, as without the ball.
     Document doc = shipped_scene("table_edge.lua");
