@@ -2,6 +2,8 @@
 -- tree a trunk and a crown at a random spot, height and turn. animator seeds math.random with
 -- 0 before the scene runs (docs/scene-lua.md), so the forest is the same at every opening;
 -- shim.lua seeds Debian's lua5.4 the same way, and its xoshiro256** gives the same numbers.
+gr.camera{eye = {0, 14, 24}, look_at = {0, 0, 0}, up = {0, 1, 0}, fov = 50}
+
 root = gr.node('root')
 
 bark = gr.material({0.4, 0.25, 0.1}, {0.1, 0.1, 0.1}, 5)
