@@ -8,6 +8,29 @@ namespace physics_custom::bake {
 
 namespace {
 constexpr double kContactSlack = 1e-9; // turning_contact.hpp's contact slack (m)
+
+// The first contact within `limit` of a sphere (centre on `path`, radius r) with the triangles
+// of `ob` as they stand, exact (sphere_triangle), each tested only where the swept sphere's box
+// reaches the triangle's, and not where skip(triangle) says. `tested` counts the triangles
+// tested.
+template <class Skip>
+std::optional<Contact> sphere_against_triangles(const Path &path, double r, const Obstacle &ob,
+                                                double limit, Skip skip, std::size_t &tested) {
+    Box reach = swept_box(path, limit);
+    reach.lo -= glm::dvec3(r);
+    reach.hi += glm::dvec3(r);
+    std::optional<Contact> first;
+    for (size_t k = 0; k + 2 < ob.corners.size(); k += 3) {
+        if (!reach.overlaps(ob.boxes[k / 3]) || skip(k / 3)) continue;
+        ++tested;
+        if (auto c = sphere_triangle(path, r, ob.corners[k], ob.corners[k + 1], ob.corners[k + 2],
+                                     limit)) {
+            first = c;
+            limit = c->t;
+        }
+    }
+    return first;
+}
 } // namespace
 
 // The nearest point of a mesh body (at pose p) to q.
@@ -366,21 +389,11 @@ bool EventBake::sphere_and_translating(int i, int j, double now, double &limit, 
         limit = span;
     }
     if (sphere.still() && motion->velocity == glm::dvec3(0.0)) return true; // neither moves
-    const double r = sphere.radius;
     const Path path = from_now(sphere, now);
     const Path relative{path.p, path.v - motion->velocity, path.a};
-    const Obstacle faces = face_of(mover, now);
-    Box reach = swept_box(relative, span);
-    reach.lo -= glm::dvec3(r);
-    reach.hi += glm::dvec3(r);
-    std::optional<Contact> first;
-    for (size_t k = 0; k + 2 < faces.corners.size(); k += 3) {
-        if (!reach.overlaps(faces.boxes[k / 3])) continue;
-        const double until = first ? first->t : span;
-        if (auto hit = sphere_triangle(relative, r, faces.corners[k], faces.corners[k + 1],
-                                       faces.corners[k + 2], until))
-            if (!first || hit->t < first->t) first = hit;
-    }
+    std::size_t tested = 0; // counted as the one pair it is (predict)
+    std::optional<Contact> first = sphere_against_triangles(
+        relative, sphere.radius, face_of(mover, now), span, [](size_t) { return false; }, tested);
     if (first) {
         first->point += motion->velocity * first->t; // where the mover is then
         if (!b.sphere) first->normal = -first->normal; // from j towards i
@@ -483,20 +496,13 @@ void EventBake::predict_obstacles(int i, double now, double limit, Predicted &ne
         if (!(glm::length(path.p - ob.center) <= r + ob.radius) &&
             !sphere_sphere(path, r, fixed, ob.radius, limit))
             continue;
-        // Each triangle only if the swept sphere's box reaches the triangle's box.
-        Box reach = swept_box(path, limit);
-        reach.lo -= glm::dvec3(r);
-        reach.hi += glm::dvec3(r);
         const bool on_it = b.support == static_cast<int>(o);
-        for (size_t k = 0; k + 2 < ob.corners.size(); k += 3) {
-            if (!reach.overlaps(ob.boxes[k / 3])) continue;
-            if (on_it && in_support_plane(b, ob, k / 3)) continue; // it slides on these
-            ++tested;
-            if (auto c = sphere_triangle(path, r, ob.corners[k], ob.corners[k + 1],
-                                         ob.corners[k + 2], limit)) {
-                next = predicted(now + c->t, EventKind::kObstacle, static_cast<int>(o), 0, *c);
-                limit = c->t;
-            }
+        if (auto c = sphere_against_triangles(
+                path, r, ob, limit,
+                [&](size_t k) { return on_it && in_support_plane(b, ob, k); }, // it slides on these
+                tested)) {
+            next = predicted(now + c->t, EventKind::kObstacle, static_cast<int>(o), 0, *c);
+            limit = c->t;
         }
     }
     count_.done += tested;

@@ -4,6 +4,8 @@
 // stepped over, at any speed.
 #pragma once
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include <optional>
@@ -23,6 +25,11 @@ struct Box {
     glm::dvec3 lo{0.0}, hi{0.0};
     bool overlaps(const Box &o) const {
         return lo.x <= o.hi.x && o.lo.x <= hi.x && lo.y <= o.hi.y && o.lo.y <= hi.y && lo.z <= o.hi.z && o.lo.z <= hi.z;
+    }
+    // The distance between the two boxes, 0 where they meet (a lower bound of the distance
+    // between anything inside them).
+    double distance(const Box &o) const {
+        return glm::length(glm::max(glm::max(lo - o.hi, o.lo - hi), glm::dvec3(0.0)));
     }
 };
 Box swept_box(const Path &path, double t);

@@ -282,33 +282,22 @@ struct Nearest {
     TurningContact::Kind kind = TurningContact::kNone;
 };
 
-// An axis-aligned box, and the distance from it to a point or to another (0 when they meet).
-struct Bounds {
-    glm::dvec3 lo{kInf}, hi{-kInf};
-    void add(const glm::dvec3 &p) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
+// Each triangle's box, and each edge's, placed at `v`.
+std::vector<Box> triangle_boxes(const TurningMesh &m, const std::vector<glm::dvec3> &v) {
+    std::vector<Box> out(m.triangle_count);
+    for (std::size_t k = 0; k < m.triangle_count; ++k) {
+        const uint32_t *t = m.triangles + 3 * k;
+        out[k] = Box{glm::min(v[t[0]], glm::min(v[t[1]], v[t[2]])),
+                     glm::max(v[t[0]], glm::max(v[t[1]], v[t[2]]))};
     }
-    double to(const glm::dvec3 &p) const {
-        return glm::length(glm::max(glm::max(lo - p, p - hi), glm::dvec3(0.0)));
-    }
-    double to(const Bounds &o) const {
-        return glm::length(glm::max(glm::max(lo - o.hi, o.lo - hi), glm::dvec3(0.0)));
-    }
-};
-
-std::vector<Bounds> triangle_bounds(const TurningMesh &m, const std::vector<glm::dvec3> &v) {
-    std::vector<Bounds> out(m.triangle_count);
-    for (std::size_t k = 0; k < m.triangle_count; ++k)
-        for (int c = 0; c < 3; ++c) out[k].add(v[m.triangles[3 * k + static_cast<std::size_t>(c)]]);
     return out;
 }
 
-std::vector<Bounds> edge_bounds(const TurningMesh &m, const std::vector<glm::dvec3> &v) {
-    std::vector<Bounds> out(m.edge_count);
+std::vector<Box> edge_boxes(const TurningMesh &m, const std::vector<glm::dvec3> &v) {
+    std::vector<Box> out(m.edge_count);
     for (std::size_t k = 0; k < m.edge_count; ++k) {
-        out[k].add(v[m.edges[k][0]]);
-        out[k].add(v[m.edges[k][1]]);
+        const glm::dvec3 &p = v[m.edges[k][0]], &q = v[m.edges[k][1]];
+        out[k] = Box{glm::min(p, q), glm::max(p, q)};
     }
     return out;
 }
@@ -343,7 +332,7 @@ Nearest nearest_features(const TurningMesh &ma, const std::vector<glm::dvec3> &v
             best.kind = kind;
         }
     };
-    const std::vector<Bounds> boxes_a = triangle_bounds(ma, va), boxes_b = triangle_bounds(mb, vb);
+    const std::vector<Box> boxes_a = triangle_boxes(ma, va), boxes_b = triangle_boxes(mb, vb);
     double reach = kInf, size = 0.0;
     {
         double lowest = kInf;
@@ -353,10 +342,10 @@ Nearest nearest_features(const TurningMesh &ma, const std::vector<glm::dvec3> &v
         for (int side = 0; side < 2; ++side) {
             const TurningMesh &mq = side == 0 ? mb : ma;
             const std::vector<glm::dvec3> &vp = side == 0 ? va : vb, &vq = side == 0 ? vb : va;
-            const std::vector<Bounds> &boxes = side == 0 ? boxes_b : boxes_a;
+            const std::vector<Box> &boxes = side == 0 ? boxes_b : boxes_a;
             for (std::size_t k = 0; k < mq.triangle_count; ++k)
                 for (const glm::dvec3 &x : vp) {
-                    const double d = boxes[k].to(x);
+                    const double d = boxes[k].distance(Box{x, x});
                     if (d < lowest) {
                         lowest = d;
                         point = &x;
@@ -377,13 +366,13 @@ Nearest nearest_features(const TurningMesh &ma, const std::vector<glm::dvec3> &v
     for (int side = 0; side < 2; ++side) {
         const TurningMesh &mp = side == 0 ? ma : mb, &mq = side == 0 ? mb : ma;
         const std::vector<glm::dvec3> &vp = side == 0 ? va : vb, &vq = side == 0 ? vb : va;
-        const std::vector<Bounds> &boxes = side == 0 ? boxes_b : boxes_a;
+        const std::vector<Box> &boxes = side == 0 ? boxes_b : boxes_a;
         for (std::size_t k = 0; k < mq.triangle_count; ++k) {
             const uint32_t *tri = mq.triangles + 3 * k;
             const glm::dvec3 &q0 = vq[tri[0]], &q1 = vq[tri[1]], &q2 = vq[tri[2]];
             const glm::dvec3 face = glm::cross(q1 - q0, q2 - q0);
             for (std::size_t i = 0; i < mp.vertex_count; ++i) {
-                if (boxes[k].to(vp[i]) > cut) continue;
+                if (boxes[k].distance(Box{vp[i], vp[i]}) > cut) continue;
                 const glm::dvec3 c = closest_point_on_triangle(vp[i], q0, q1, q2);
                 if (side == 0)
                     offer(vp[i], c, face, TurningContact::kVertexFace);
@@ -392,10 +381,10 @@ Nearest nearest_features(const TurningMesh &ma, const std::vector<glm::dvec3> &v
             }
         }
     }
-    const std::vector<Bounds> edges_a = edge_bounds(ma, va), edges_b = edge_bounds(mb, vb);
+    const std::vector<Box> edges_a = edge_boxes(ma, va), edges_b = edge_boxes(mb, vb);
     for (std::size_t i = 0; i < ma.edge_count; ++i)
         for (std::size_t j = 0; j < mb.edge_count; ++j) {
-            if (edges_a[i].to(edges_b[j]) > cut) continue;
+            if (edges_a[i].distance(edges_b[j]) > cut) continue;
             const glm::dvec3 &a0 = va[ma.edges[i][0]], &a1 = va[ma.edges[i][1]];
             const glm::dvec3 &b0 = vb[mb.edges[j][0]], &b1 = vb[mb.edges[j][1]];
             glm::dvec3 x, y;
