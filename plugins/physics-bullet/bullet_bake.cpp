@@ -93,9 +93,9 @@ struct Body {
     std::unique_ptr<btRigidBody> rb;
     std::unique_ptr<Track> track;
     std::unique_ptr<RotationTrack> rotation; // only when Bullet turns it
-    bool gyroscopic = false; // turned, with moments that differ (start_dynamic)
-    bool turns = false;      // Rotates and Dynamics: Bullet turns it
-    glm::dvec3 pivot{0.0};   // its centre of mass when not its origin (pivot_of)
+    bool gyroscopic = false;                 // turned, with moments that differ (start_dynamic)
+    bool turns = false;                      // Rotates and Dynamics: Bullet turns it
+    glm::dvec3 pivot{0.0};                   // its centre of mass when not its origin (pivot_of)
     glm::dvec3 a{0.0};                       // its acceleration when free (gravity or none)
     double keyed_from = 0.0;                 // start of the current keyed span
     double keys_end = 0.0;                   // where its keyed span ends: free from there
@@ -255,6 +255,47 @@ class Bake {
             still_overlapping_.insert(key);
     }
 
+    // A pair already in contact whose bodies meet slower than gravity brings them together over
+    // two steps (2 |G| dt, this step's pull included) is resting on each other, not bouncing:
+    // its points get no restitution this step. Bullet's own threshold would also turn slow
+    // collisions of free bodies inelastic; this one leaves a fresh contact its restitution at
+    // any speed. Without it a resting body hops at each step by its restitution, and the hops
+    // of a ball with e = 1 that rolls, held by the contact threshold (configure_material), grow
+    // into bounces; a box on a box then meets a blow in mid-hop (physics-bullet.md, "Settings").
+    void settle(btBroadphasePair &pair) {
+        if (!pair.m_algorithm || contacts_.empty()) return;
+        const auto *a = static_cast<const btCollisionObject *>(pair.m_pProxy0->m_clientObject);
+        const auto *b = static_cast<const btCollisionObject *>(pair.m_pProxy1->m_clientObject);
+        const PairKey key = key_of(static_cast<uint32_t>(a->getUserIndex()),
+                                   static_cast<uint32_t>(b->getUserIndex()));
+        const bool resting = contacts_.count(key) != 0;
+        const double slow = 2.0 * glm::length(gravity_) * dt_;
+        manifolds_.resizeNoInitialize(0);
+        pair.m_algorithm->getAllContactManifolds(manifolds_);
+        for (int k = 0; k < manifolds_.size(); ++k) {
+            btPersistentManifold &m = *manifolds_[k];
+            const double e = combined_restitution(m.getBody0()->getRestitution(),
+                                                  m.getBody1()->getRestitution());
+            for (int p = 0; p < m.getNumContacts(); ++p) {
+                btManifoldPoint &point = m.getContactPoint(p);
+                const glm::dvec3 at =
+                    0.5 * (vec(point.getPositionWorldOnA()) + vec(point.getPositionWorldOnB()));
+                const double approach =
+                    glm::dot(pulled_velocity(m.getBody1(), at) - pulled_velocity(m.getBody0(), at),
+                             vec(point.m_normalWorldOnB));
+                point.m_combinedRestitution = resting && approach < slow ? 0.0 : e;
+            }
+        }
+    }
+
+    // A point's velocity once this step's gravity is added (as Bullet's solver sees it).
+    glm::dvec3 pulled_velocity(const btCollisionObject *o, const glm::dvec3 &point) {
+        const Body *body = body_of(o);
+        glm::dvec3 v = velocity_of(o, point);
+        if (body && !body->kinematic && body->mode == Mode::kDynamic) v += body->a * dt_;
+        return v;
+    }
+
     bool keyed(const btCollisionObject *o) const {
         const int ref = o->getUserIndex2();
         return ref >= 0 && bodies_[static_cast<size_t>(ref)].mode == Mode::kKeyed;
@@ -411,6 +452,7 @@ class Bake {
             }
         }
         self.after_near(pair);
+        self.settle(pair);
     }
 
     static void pre_tick(btDynamicsWorld *world, btScalar) {
@@ -620,8 +662,9 @@ class Bake {
         return pivot;
     }
 
-    // The shape of model i at a scale: a sphere, a convex hull, or its triangles (a BVH when it
-    // never moves, GImpact when it does). `room`: a static convex mesh a body starts inside.
+    // The shape of model i at a scale: a sphere, a box, a convex hull, or its triangles (a BVH
+    // when it never moves, GImpact when it does). `room`: a static convex mesh a body starts
+    // inside.
     std::unique_ptr<Shape> make_shape(uint32_t i, const glm::dvec3 &scale, bool moving,
                                       bool room = false,
                                       const glm::dvec3 &pivot = glm::dvec3(0.0)) {
@@ -640,10 +683,12 @@ class Bake {
                 throw ani::Failure(ANI_ERR_INVALID_ARGUMENT,
                                    std::string("model '") + name_of(scene_->models[i]) +
                                        "' has a mesh without area (every triangle is degenerate)");
-            if (info.convex && !room)
-                shape = hull_shape(mesh, scale, options_.margin, pivot);
-            else
+            if (info.convex && !room) {
+                shape = box_shape(mesh, scale, options_.margin, pivot);
+                if (!shape) shape = hull_shape(mesh, scale, options_.margin, pivot);
+            } else {
                 shape = triangle_shape(mesh, scale, moving, pivot);
+            }
         }
         shape->scale = scale;
         ++shapes_built_;
@@ -680,7 +725,7 @@ class Bake {
         btRigidBody::btRigidBodyConstructionInfo ci(0.0, nullptr, o.shape->shape.get());
         o.rb = std::make_unique<btRigidBody>(ci);
         o.rb->setWorldTransform(transform(center, q));
-        configure_material(*o.rb, i);
+        configure_material(*o.rb, i, o.shape->reach);
         o.rb->setUserIndex(static_cast<int>(i));
         o.rb->setUserIndex2(-1 - static_cast<int>(obstacles_.size()));
         world_->addRigidBody(o.rb.get(), btBroadphaseProxy::DefaultFilter,
@@ -688,14 +733,20 @@ class Bake {
         obstacles_.push_back(std::move(o));
     }
 
-    void configure_material(btRigidBody &rb, uint32_t model) const {
+    void configure_material(btRigidBody &rb, uint32_t model, double reach) const {
         // The model's own values: the combine callbacks take the lower restitution and the
         // higher friction of a contact's two bodies (install_combine_rules).
         rb.setRestitution(materials_[model].restitution);
         rb.setFriction(materials_[model].friction);
         rb.setRollingFriction(0.0);
         rb.setSpinningFriction(0.0);
-        rb.setContactProcessingThreshold(0.0);
+        // Bullet's solver takes a contact point only while its gap is below the smaller of the
+        // two bodies' thresholds. Below the gap a resting body hops by at each step (the
+        // separation of the pair, separation()), so that a box resting on a box is held at every
+        // corner at every step (at 0, a corner that hopped clear drops out of the solve and the
+        // stack shudders: 0.1 m at any step); a model approaching from farther is met once it
+        // touches, as with 0 (Bullet would otherwise stop it early, by up to the gap).
+        rb.setContactProcessingThreshold(2.0 * glm::length(gravity_) * dt_ * dt_ + 1e-6 * reach);
     }
 
     void add_body(uint32_t i, const ani_time_span &span, bool free_now, bool released) {
@@ -725,7 +776,7 @@ class Bake {
         }
         btRigidBody::btRigidBodyConstructionInfo ci(0.0, nullptr, b.shape->shape.get());
         b.rb = std::make_unique<btRigidBody>(ci);
-        configure_material(*b.rb, i);
+        configure_material(*b.rb, i, b.shape->reach);
         b.rb->setDamping(0.0, 0.0);
         b.rb->setFlags(b.rb->getFlags() & ~BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY);
         b.rb->setUserIndex(static_cast<int>(i));
@@ -1697,7 +1748,7 @@ class Bake {
         totals["segments"] = static_cast<double>(segments_);
         totals["worlds built"] = static_cast<double>(worlds_);
         totals["shapes built"] = static_cast<double>(shapes_built_);
-        for (const char *name : {"sphere shapes", "convex hulls", "triangle meshes"})
+        for (const char *name : {"sphere shapes", "box shapes", "convex hulls", "triangle meshes"})
             totals[name] += 0.0;
         for (const auto &[name, value] : totals) {
             double &said = counted_[name];

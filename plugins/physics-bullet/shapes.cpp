@@ -1,5 +1,6 @@
 #include "shapes.hpp"
 
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
@@ -245,6 +246,54 @@ std::unique_ptr<Shape> hull_shape(const ani_mesh_view &mesh, const glm::dvec3 &s
     return s;
 }
 
+std::unique_ptr<Shape> box_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale, double largest,
+                                 const glm::dvec3 &offset) {
+    std::vector<glm::dvec3> v = scaled_vertices(mesh, scale);
+    if (v.empty() || mesh.triangle_count == 0) return nullptr;
+    glm::dvec3 lo = v[0] - offset, hi = lo;
+    for (glm::dvec3 &p : v) {
+        p -= offset;
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const glm::dvec3 half = 0.5 * (hi - lo);
+    const double size = glm::length(hi - lo);
+    const double tolerance = 1e-9 * size;
+    if (!(std::min({half.x, half.y, half.z}) > 1e-6 * size) ||
+        glm::length(lo + hi) > 2.0 * tolerance)
+        return nullptr;
+    // Every vertex a corner of the bounds, and every triangle on one of the bounds' faces (a
+    // closed mesh of such triangles is the box itself).
+    auto at_bound = [&](double x, double l, double h) {
+        return std::abs(x - l) <= tolerance || std::abs(x - h) <= tolerance;
+    };
+    for (const glm::dvec3 &p : v)
+        if (!at_bound(p.x, lo.x, hi.x) || !at_bound(p.y, lo.y, hi.y) || !at_bound(p.z, lo.z, hi.z))
+            return nullptr;
+    for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
+        const uint32_t *i = mesh.triangles + 3 * static_cast<size_t>(t);
+        bool on_face = false;
+        for (int axis = 0; axis < 3 && !on_face; ++axis)
+            for (double side : {lo[axis], hi[axis]})
+                on_face = on_face || (std::abs(v[i[0]][axis] - side) <= tolerance &&
+                                      std::abs(v[i[1]][axis] - side) <= tolerance &&
+                                      std::abs(v[i[2]][axis] - side) <= tolerance);
+        if (!on_face) return nullptr;
+    }
+    auto s = std::make_unique<Shape>();
+    s->kind = ShapeKind::kBox;
+    s->scale = scale;
+    s->reach = glm::length(half);
+    s->inner = std::min({half.x, half.y, half.z});
+    // The margin lies inside the box's faces (btBoxShape keeps them at the half extents), and
+    // rounds its edges and corners: at most a fifth of its smallest half extent.
+    s->margin = std::min(largest, 0.2 * s->inner);
+    auto box = std::make_unique<btBoxShape>(btVector3(half.x, half.y, half.z));
+    box->setMargin(s->margin);
+    s->shape = std::move(box);
+    return s;
+}
+
 std::unique_ptr<Shape> triangle_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale,
                                       bool moving, const glm::dvec3 &offset) {
     auto s = std::make_unique<Shape>();
@@ -334,6 +383,13 @@ std::string Shape::describe() const {
     case ShapeKind::kSphere:
         out << "sphere shape (radius " << reach << ")";
         break;
+    case ShapeKind::kBox: {
+        const btVector3 h =
+            static_cast<const btBoxShape *>(shape.get())->getHalfExtentsWithMargin();
+        out << "box shape (" << 2.0 * h.x() << " x " << 2.0 * h.y() << " x " << 2.0 * h.z()
+            << ", margin " << margin << ")";
+        break;
+    }
     case ShapeKind::kHull:
         out << "convex hull ("
             << static_cast<const btConvexHullShape *>(shape.get())->getNumPoints()
@@ -354,6 +410,8 @@ const char *Shape::count_name() const {
     switch (kind) {
     case ShapeKind::kSphere:
         return "sphere shapes";
+    case ShapeKind::kBox:
+        return "box shapes";
     case ShapeKind::kHull:
         return "convex hulls";
     default:

@@ -1,6 +1,7 @@
 // Collision shapes for the models (docs/physics-bullet.md, "Shapes"): a sphere for a mesh that is
-// a sphere under a uniform scale, a convex hull for a closed convex mesh, and its triangles for any
-// other mesh: a BVH triangle mesh when the model never moves, GImpact when it does.
+// a sphere under a uniform scale, a box for a mesh that is a box along its own axes, a convex hull
+// for any other closed convex mesh, and its triangles for any other mesh: a BVH triangle mesh when
+// the model never moves, GImpact when it does.
 #pragma once
 
 #include <animator/physics.h>
@@ -34,7 +35,7 @@ bool inside_convex(const ani_mesh_view &mesh, const glm::dvec3 &p);
 // tetrahedra from the origin to each triangle); the origin when it has no volume.
 glm::dvec3 centre_of_mass(const ani_mesh_view &mesh, const glm::dvec3 &scale);
 
-enum class ShapeKind { kSphere, kHull, kBvhTriangles, kGImpactTriangles };
+enum class ShapeKind { kSphere, kBox, kHull, kBvhTriangles, kGImpactTriangles };
 
 // A Bullet shape with what it points into, for a mesh under a scale (rotation and translation
 // are the body's transform).
@@ -69,6 +70,13 @@ std::unique_ptr<Shape> sphere_shape(double radius);
 // that turns about its centre of mass).
 std::unique_ptr<Shape> hull_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale,
                                   double margin = 0.04, const glm::dvec3 &offset = glm::dvec3(0.0));
+// A box shape for a mesh that is a box along its own axes (eight corners, its faces the box's),
+// centred on `offset` under the scale; null for any other mesh. Bullet meets two boxes by
+// clipping one's face against the other's (btBoxBoxDetector: the whole face in contact at every
+// step), where two hulls are met by one point per step: a box resting on a box, or sliding on
+// one, is then held at its four corners from the first step (physics-bullet.md, "Shapes").
+std::unique_ptr<Shape> box_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale,
+                                 double margin = 0.04, const glm::dvec3 &offset = glm::dvec3(0.0));
 std::unique_ptr<Shape> triangle_shape(const ani_mesh_view &mesh, const glm::dvec3 &scale,
                                       bool moving, const glm::dvec3 &offset = glm::dvec3(0.0));
 

@@ -58,8 +58,8 @@ TEST_CASE("the step set in a document's parameters changes how many steps a bake
     CHECK(count(*odd, "steps") == 12);
     CHECK(odd->baked_until() == 1.0);
     // The counts the backend reports.
-    for (const char *name : {"contacts", "sphere shapes", "convex hulls", "triangle meshes",
-                             "steps coasted", "releases from keys"})
+    for (const char *name : {"contacts", "sphere shapes", "box shapes", "convex hulls",
+                             "triangle meshes", "steps coasted", "releases from keys"})
         CHECK(count(*by_default, name) >= 0.0);
     CHECK(count(*by_default, "contacts") == 1); // the first bounce, at 0.71 s
 }
@@ -103,13 +103,14 @@ TEST_CASE("each model's shape is chosen from its mesh, logged and counted") {
     t->bake(0.1);
     const auto log = take_log();
     CHECK(logged(log, "model 'ball'", "sphere shape (radius 0.5"));
-    CHECK(logged(log, "model 'egg'", "convex hull")); // a sphere scaled unevenly
-    CHECK(logged(log, "model 'block'", "convex hull"));
+    CHECK(logged(log, "model 'egg'", "convex hull"));            // a sphere scaled unevenly
+    CHECK(logged(log, "model 'block'", "box shape (1 x 1 x 1")); // a cube: box against box
     CHECK(logged(log, "model 'floor'", "BVH triangle mesh"));
     CHECK(logged(log, "model 'steps'", "BVH triangle mesh"));    // concave, static
     CHECK(logged(log, "model 'ring'", "GImpact triangle mesh")); // concave, moving
     CHECK(count(*t, "sphere shapes") == 1);
-    CHECK(count(*t, "convex hulls") == 2);
+    CHECK(count(*t, "convex hulls") == 1);
+    CHECK(count(*t, "box shapes") == 1);
     CHECK(count(*t, "triangle meshes") == 3);
 }
 

@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 using namespace animator;
@@ -136,4 +137,45 @@ TEST_CASE("the mesh analysis: which meshes are closed and convex") {
     CHECK_FALSE(plane.convex);
     CHECK(plane.has_area);
     CHECK(info("cube").reach == Approx(std::sqrt(3.0)).epsilon(1e-7));
+}
+
+TEST_CASE(
+    "a mesh that is a box along its own axes gets a box shape, any other convex mesh a hull") {
+    struct View {
+        std::vector<double> positions;
+        std::vector<uint32_t> triangles;
+        ani_mesh_view view{};
+    };
+    auto view_of = [](const std::string &id) {
+        const Mesh mesh = load_mesh(env().assets.resolve(ANI_ASSET_MESH, id).value()).mesh;
+        auto v = std::make_unique<View>();
+        for (const glm::dvec3 &p : mesh.positions)
+            v->positions.insert(v->positions.end(), {p.x, p.y, p.z});
+        v->triangles = mesh.triangles;
+        v->view.struct_size = sizeof v->view;
+        v->view.positions = v->positions.data();
+        v->view.vertex_count = static_cast<uint32_t>(mesh.positions.size());
+        v->view.triangles = v->triangles.data();
+        v->view.triangle_count = static_cast<uint32_t>(mesh.triangle_count());
+        return v;
+    };
+    const auto cube = view_of("cube"); // the generated cube: corners at +-1
+    const auto box = physics_bullet::box_shape(cube->view, {10.0, 0.25, 1.5}, 0.04);
+    REQUIRE(box);
+    CHECK(box->kind == physics_bullet::ShapeKind::kBox);
+    CHECK(box->describe() == "box shape (20 x 0.5 x 3, margin 0.04)");
+    CHECK(box->inner == 0.25);
+    CHECK(box->margin == 0.04); // min(0.04, 0.2 x 0.25)
+    CHECK(box->reach == Approx(std::sqrt(100.0 + 0.0625 + 2.25)));
+    // A thin box: its margin a fifth of its half thickness, inside its faces.
+    CHECK(physics_bullet::box_shape(cube->view, {1.0, 0.05, 1.0}, 0.04)->margin == Approx(0.01));
+    // Centred on the point it turns about, or not at all (a hull keeps the offset).
+    CHECK_FALSE(physics_bullet::box_shape(cube->view, glm::dvec3(1.0), 0.04, {0.0, 0.5, 0.0}));
+    // One corner moved: eight corners, but not those of their bounds.
+    cube->positions[0] *= 0.5;
+    CHECK_FALSE(physics_bullet::box_shape(cube->view, glm::dvec3(1.0), 0.04));
+    for (const char *other : {"sphere", "cylinder", "cone", "plane"}) {
+        CAPTURE(other);
+        CHECK_FALSE(physics_bullet::box_shape(view_of(other)->view, glm::dvec3(1.0), 0.04));
+    }
 }
