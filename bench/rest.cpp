@@ -32,6 +32,7 @@ struct RestScene {
     // The errors of a bake (one per measure).
     std::function<std::vector<double>(const Timeline &, const Document &)> errors;
     double bullet_margin = 0.0; // Bullet's collision margin (m) when not its default
+    int bullet_iterations = 0;  // Bullet's solver iterations when not its default (10)
 };
 
 int model_named(const Document &doc, const std::string &name) {
@@ -120,7 +121,9 @@ std::vector<RestScene> scenes() {
                  worst(3.0, [&](double s) {
                      return glm::length(t.evaluate(s).models[static_cast<size_t>(sticking)].center - s0);
                  })};
-         }},
+         },
+         0.0,
+         1000}, // with 10, the sliding box's friction falls short at every step (physics-bullet.md)
         {"rolling",
          "scenes/rolling_ball.lua",
          "ball launched at 4 m/s without spin, mu 0.2: rolls at 5/7 v0",
@@ -172,7 +175,9 @@ std::vector<RestScene> scenes() {
              const double r = 0.3 * bt::unit_sphere_radius();
              return std::vector<double>{
                  moved, std::abs(t.evaluate(3.0).models[static_cast<size_t>(ball)].center.y - (3.0 + r))};
-         }},
+         },
+         0.0,
+         1000}, // with 10, the blow leaks into the boxes at every step
         {"knock",
          "scenes/stack_knock.lua",
          "ball dropped on a stack's edge knocks its top box off, e 1, mu 0 (to 2 s)",
@@ -279,6 +284,8 @@ void run_rest(const Options &o) {
             for (int r = 0; r < o.runs; ++r) {
                 Document d = bt::with_param(doc, "step", dt);
                 if (s.bullet_margin > 0.0) d = bt::with_param(d, "margin", s.bullet_margin);
+                if (s.bullet_iterations > 0)
+                    d = bt::with_param(d, "solver_iterations", s.bullet_iterations);
                 auto t = bt::timeline_of(d, backend);
                 const auto start = std::chrono::steady_clock::now();
                 t->bake(s.until);
