@@ -35,39 +35,10 @@ struct RestScene {
     int bullet_iterations = 0;  // Bullet's solver iterations when not its default (10)
 };
 
-int model_named(const Document &doc, const std::string &name) {
-    for (size_t i = 0; i < doc.models().size(); ++i)
-        if (doc.models()[i].name == name) return static_cast<int>(i);
-    throw std::runtime_error("no model " + name);
-}
-
-glm::dvec3 start_of(const Document &doc, int m) {
-    return doc.keyframes().front().states[static_cast<size_t>(m)]->center;
-}
-
-// The largest of f(t) at every 1/120 s of [0, until].
-double worst(double until, const std::function<double(double)> &f) {
-    double e = 0.0;
-    for (int k = 0; k <= static_cast<int>(std::lround(until * 120.0)); ++k)
-        e = std::max(e, f(k / 120.0));
-    return e;
-}
-
-// The energy of the models named (kinetic, turning and potential), with their masses and moments
-// of inertia (each about every axis through its centre: a cube's or a ball's).
-double energy(const Timeline &t, const Document &doc, double at,
-              const std::vector<std::tuple<std::string, double, double>> &models) {
-    double e = 0.0;
-    for (const auto &[name, mass, inertia] : models) {
-        const int m = model_named(doc, name);
-        const ModelPose p = t.evaluate(at).models[static_cast<size_t>(m)];
-        const RotationSegment *r = t.rotation_at(m, at);
-        const glm::dvec3 w = r ? angular_velocity_at(*r, at) : glm::dvec3(0.0);
-        e += 0.5 * mass * glm::dot(p.velocity, p.velocity) + 0.5 * inertia * glm::dot(w, w) +
-             mass * G * p.center.y;
-    }
-    return e;
-}
+using bt::energy;
+using bt::model_named;
+using bt::start_of;
+using bt::worst;
 
 // The angle (degrees past the vertical through its edge) of a cube of side 1 m tipping from 15
 // degrees at rest, at t (tests/physics/tipping_pendulum.hpp), until the face lands at 45 degrees.

@@ -9,8 +9,10 @@
 
 #include "support.hpp"
 
+#include <functional>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace animator::bullet_test {
@@ -38,6 +40,17 @@ ModelState placed(glm::dvec3 center, glm::dvec3 scale = glm::dvec3(1.0),
                   glm::dvec3 angles = glm::dvec3(0.0));
 void key(Document &doc, std::int64_t ms, int model, const ModelState &state);
 Document load(const std::string &animation); // assets/animations/NAME
+
+// The index of the model called `name` (throws when there is none).
+int model_named(const Document &doc, const std::string &name);
+// Where model m stands at the first keyframe.
+glm::dvec3 start_of(const Document &doc, int m);
+// The largest of f(t) at every 1/120 s of [0, until].
+double worst(double until, const std::function<double(double)> &f);
+// The energy of the models named (kinetic, turning and potential under G along -y), with their
+// masses and moments of inertia (each about every axis through its centre: a cube's or a ball's).
+double energy(const Timeline &t, const Document &doc, double at,
+              const std::vector<std::tuple<std::string, double, double>> &models);
 
 // The segment of a model covering t (the last one starting at or before t).
 const ani_motion_segment *segment_at(const Timeline &t, int model, double time);

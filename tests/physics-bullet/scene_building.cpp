@@ -5,6 +5,10 @@
 
 #include "assets/mesh.hpp"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -86,9 +90,40 @@ void key(Document &doc, std::int64_t ms, int model, const ModelState &state) {
 }
 
 Document load(const std::string &animation) {
-    return open_document(env().plugins,
-                         std::filesystem::path(ANIMATOR_SOURCE_DIR) / "assets/animations" / animation)
+    return open_document(env().plugins, std::filesystem::path(ANIMATOR_SOURCE_DIR) /
+                                            "assets/animations" / animation)
         .document;
+}
+
+int model_named(const Document &doc, const std::string &name) {
+    for (size_t i = 0; i < doc.models().size(); ++i)
+        if (doc.models()[i].name == name) return static_cast<int>(i);
+    throw std::runtime_error("no model " + name);
+}
+
+glm::dvec3 start_of(const Document &doc, int m) {
+    return doc.keyframes().front().states[static_cast<size_t>(m)]->center;
+}
+
+double worst(double until, const std::function<double(double)> &f) {
+    double e = 0.0;
+    for (int k = 0; k <= static_cast<int>(std::lround(until * 120.0)); ++k)
+        e = std::max(e, f(k / 120.0));
+    return e;
+}
+
+double energy(const Timeline &t, const Document &doc, double at,
+              const std::vector<std::tuple<std::string, double, double>> &models) {
+    double e = 0.0;
+    for (const auto &[name, mass, inertia] : models) {
+        const int m = model_named(doc, name);
+        const ModelPose p = t.evaluate(at).models[static_cast<size_t>(m)];
+        const RotationSegment *r = t.rotation_at(m, at);
+        const glm::dvec3 w = r ? angular_velocity_at(*r, at) : glm::dvec3(0.0);
+        e += 0.5 * mass * glm::dot(p.velocity, p.velocity) + 0.5 * inertia * glm::dot(w, w) +
+             mass * G * p.center.y;
+    }
+    return e;
 }
 
 const ani_motion_segment *segment_at(const Timeline &t, int model, double time) {
