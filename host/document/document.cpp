@@ -14,7 +14,6 @@ bool finite(const glm::dvec3 &v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 bool in_unit(double x) { return x >= 0.0 && x <= 1.0; }
-bool in_unit(const glm::dvec3 &v) { return in_unit(v.x) && in_unit(v.y) && in_unit(v.z); }
 // A colour: finite and >= 0 (above 1 is brighter than white, as the CS488 course allowed).
 bool colour(const glm::dvec3 &v) { return finite(v) && v.x >= 0.0 && v.y >= 0.0 && v.z >= 0.0; }
 
@@ -134,9 +133,8 @@ Document::Document() {
 }
 
 int Document::find_model(const std::string &name) const {
-    for (size_t i = 0; i < models_.size(); ++i)
-        if (models_[i].name == name) return static_cast<int>(i);
-    return -1;
+    const auto it = by_name_.find(name);
+    return it == by_name_.end() ? -1 : it->second;
 }
 
 int Document::find_keyframe(std::int64_t time_ms) const {
@@ -165,12 +163,14 @@ void Document::add_model(const Model &model, const ModelState &state) {
     if (model.parent < -1 || model.parent >= static_cast<int>(models_.size()))
         throw DocumentError(concat("model '", model.name, "': parent ", model.parent,
                                    " is not an earlier model"));
+    by_name_[model.name] = static_cast<int>(models_.size());
     models_.push_back(model);
     for (auto &k : keyframes_) k.states.push_back(k.time_ms == 0 ? std::optional<ModelState>(state) : std::nullopt);
 }
 
 void Document::remove_last_model() {
     if (models_.empty()) throw DocumentError("there is no model to remove");
+    by_name_.erase(models_.back().name);
     models_.pop_back();
     for (auto &k : keyframes_) k.states.pop_back();
 }
@@ -185,6 +185,8 @@ void Document::set_model(int index, const Model &model) {
     if (model.parent < -1 || model.parent >= index)
         throw DocumentError(concat("model '", model.name, "': parent ", model.parent,
                                    " is not an earlier model"));
+    by_name_.erase(models_[static_cast<size_t>(index)].name);
+    by_name_[model.name] = index;
     models_[static_cast<size_t>(index)] = model;
 }
 

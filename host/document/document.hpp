@@ -16,6 +16,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace animator {
@@ -222,6 +223,7 @@ class Document {
     Keyframe &mutable_keyframe(std::int64_t time_ms);
 
     std::vector<Model> models_;
+    std::unordered_map<std::string, int> by_name_; // models_'s indices by name (a large scene)
     std::vector<Keyframe> keyframes_; // strictly increasing times; keyframes_[0].time_ms == 0
     Settings settings_;
 };

@@ -51,6 +51,7 @@ void EventBake::classify() {
             b.material = material;
             b.keys_end = free_now ? t_begin_ : span.end;
             if (turning) set_turning(b, std::move(*turning));
+            if (!b.sphere) mesh_bodies_.push_back(static_cast<int>(bodies_.size()));
             bodies_.push_back(b);
             Body &body = bodies_.back();
             if (released) {

@@ -76,10 +76,9 @@ bool EventBake::try_ride(int i, double t) {
         return false;
     const glm::dvec3 c = b.path.at(t - b.t0);
     const double reach = b.sphere ? b.radius : body_size(b);
-    for (size_t j = 0; j < bodies_.size(); ++j) {
-        const Body &o = bodies_[j];
-        const int other = static_cast<int>(j);
-        if (other == i || o.sphere || !o.active || is_ignored(i, other)) continue;
+    for (const int other : mesh_bodies_) {
+        const Body &o = bodies_[static_cast<size_t>(other)];
+        if (other == i || !o.active || is_ignored(i, other)) continue;
         const Pose po = pose(o, t);
         if (glm::length(c - po.center) > 1.01 * (reach + o.reach * frobenius(po.linear))) continue;
         const Obstacle ob = face_of(o, t);

@@ -614,6 +614,7 @@ class EventBake {
     BakeOptions options_;
     glm::dvec3 gravity_;
     std::vector<Body> bodies_;
+    std::vector<int> mesh_bodies_; // the bodies that are not spheres (what can carry a model)
     std::vector<Obstacle> obstacles_;
     std::size_t triangle_count_ = 0;
     std::unique_ptr<UniformGrid> grid_; // with many bodies

@@ -135,6 +135,31 @@ TEST_CASE("a model is added to every keyframe, with a unique name and valid prop
     CHECK(doc.models().size() == 3);
 }
 
+TEST_CASE("models are found by name through renames, removals and copies") {
+    Document doc;
+    for (int k = 0; k < 5; ++k) doc.add_model(ball("m" + std::to_string(k)), ModelState{});
+    CHECK(doc.find_model("m3") == 3);
+    CHECK(doc.find_model("m9") == -1);
+    doc.set_model(3, ball("renamed"));
+    CHECK(doc.find_model("m3") == -1);
+    CHECK(doc.find_model("renamed") == 3);
+    CHECK_THROWS_WITH(doc.set_model(1, ball("renamed")), Catch::Contains("already exists"));
+    CHECK(doc.find_model("m1") == 1);
+    doc.set_model(2, ball("m2")); // its own name again
+    CHECK(doc.find_model("m2") == 2);
+    doc.remove_last_model();
+    CHECK(doc.find_model("m4") == -1);
+    CHECK_NOTHROW(doc.add_model(ball("m4"), ModelState{}));
+    const Document copy = doc;
+    CHECK(copy.find_model("m4") == 4);
+    CHECK(copy.find_model("renamed") == 3);
+    // Many models (names looked up in an index: adding them one by one is not quadratic).
+    Document big;
+    for (int k = 0; k < 20000; ++k) big.add_model(ball("b" + std::to_string(k)), ModelState{});
+    CHECK(big.find_model("b19999") == 19999);
+    CHECK(big.find_model("b0") == 0);
+}
+
 TEST_CASE("states are checked: finite centers, angles in 0..360, positive scale") {
     ModelState s;
     CHECK(check_state(s).empty());
