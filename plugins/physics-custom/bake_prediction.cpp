@@ -279,9 +279,25 @@ void EventBake::predict(int i, double now) {
             next.exit = *exit;
         }
     std::size_t tested = 0;
+    const bool free_sphere = b.free_sphere();
+    const Path here = from_now(b, now);
     for_candidates(i, [&](int j) {
         const Body &o = bodies_[static_cast<size_t>(j)];
         if (!o.active) return;
+        if (free_sphere && o.free_sphere()) {
+            // Two free spheres (the gas): neither carries the other nor tips over an edge.
+            if (!is_ignored(i, j)) {
+                ++tested;
+                double rb = b.radius, ro = o.radius;
+                radii_against(i, j, rb, ro);
+                if (auto c = sphere_sphere(here, rb, from_now(o, now), ro, limit)) {
+                    next = predicted(now + c->t, EventKind::kBody, j, o.version, *c);
+                    limit = c->t;
+                }
+            }
+            if (is_ignored(i, j) || is_overlapped(i, j)) predict_release(i, j, now, limit, next);
+            return;
+        }
         if (riders_ > 0 && carries(i, j)) return; // held on its face: they move together
         // Tipping over an edge of a body that stands (bake_hinge.cpp): its landing there, or the
         // hinge's end, is the tipping one's own event.
@@ -296,11 +312,7 @@ void EventBake::predict(int i, double now) {
             std::optional<Contact> c;
             std::vector<glm::dvec3> points; // every point touching, for a turning body
             bool moving_in = false;
-            if (b.free_sphere() && o.free_sphere()) {
-                double rb = b.radius, ro = o.radius;
-                radii_against(i, j, rb, ro);
-                c = sphere_sphere(from_now(b, now), rb, from_now(o, now), ro, limit);
-            } else if (sphere_and_translating(i, j, now, limit, next, c)) {
+            if (sphere_and_translating(i, j, now, limit, next, c)) {
                 // exact in the frame of the one that translates (c: their contact, if any)
             } else if (b.shape && o.shape && !b.carried() && !o.carried()) { // both translate
                 if (!(b.still() && o.still()))

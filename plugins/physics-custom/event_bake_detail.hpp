@@ -89,25 +89,27 @@ struct Hinge {
 // A model that takes part in collisions and moves: a sphere (Dynamics or Gravity on), or any
 // model with a mesh while its keys drive it (a moving wall). Over the bake a body is keyed (its
 // keys move it), free (a closed-form segment), or waiting (keyed, but with nothing to collide).
-struct Body {
+struct alignas(64) Body {
     enum class Mode { kKeyed, kFree, kCarried };
+    // First, together, what the prediction of a free sphere reads of every sphere near it
+    // (two cache lines: docs/performance.md, the gas).
     uint32_t model = 0;
     bool sphere = false; // the seed's sphere special case; otherwise the model's triangles
+    bool active = false; // free and colliding, or keyed and colliding
+    Mode mode = Mode::kFree;
     double radius = 0.0; // for a sphere: its radius when free
-    double reach = 0.0;  // the farthest a vertex is from the model's origin, in model space
+    double t0 = 0.0;     // start of the current free segment
+    Path path;           // free: center(t) = path.at(t - t0)
+    uint64_t version =
+        0; // counts the changes of path: events predicted against an older one are stale
+    double reach = 0.0; // the farthest a vertex is from the model's origin, in model space
     std::vector<std::array<uint32_t, 2>> edges; // not a sphere: its mesh's edges, each once
     bool dynamics = false;
-    Mode mode = Mode::kFree;
-    bool active = false;      // free and colliding, or keyed and colliding
     double keys_end = kNever; // when its last key passes (then it is free)
     double resume_at =
         kNever;              // released from its keys at a contact: the next key, where they resume
     double keyed_from = 0.0; // start of the current keyed stretch (to report it)
-    double t0 = 0.0;         // start of the current free segment
-    Path path;               // free: center(t) = path.at(t - t0)
     int motion = ANI_MOTION_FREE;
-    uint64_t version =
-        0; // counts the changes of path: events predicted against an older one are stale
     bool in_grid = false; // free spheres only
     Cell cell{};
     int ignored_obstacles = 0;    // obstacles it overlapped and does not collide with until apart

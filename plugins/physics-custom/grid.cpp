@@ -59,7 +59,7 @@ UniformGrid::UniformGrid(const Box &region, double cell)
             std::max<int64_t>(1, static_cast<int64_t>(std::ceil(extent[axis] / cell_)));
     const double cells = static_cast<double>(counts_[0] + 2) * static_cast<double>(counts_[1] + 2) *
                          static_cast<double>(counts_[2] + 2);
-    if (cells <= static_cast<double>(1 << 22)) dense_.resize(static_cast<size_t>(cells));
+    if (cells <= static_cast<double>(1 << 22)) dense_.assign(static_cast<size_t>(cells), -1);
 }
 
 Cell UniformGrid::cell_of(const glm::dvec3 &p) const {
@@ -89,15 +89,36 @@ Box UniformGrid::bounds(const Cell &c) const {
 }
 
 void UniformGrid::insert(uint32_t body, const Cell &c) {
-    at(c).push_back(body);
+    if (body >= filed_.size()) {
+        next_.resize(body + 1, -1);
+        previous_.resize(body + 1, -1);
+        filed_.resize(body + 1, kNowhere);
+    }
+    unlink(body);
+    const uint64_t k = key(c);
+    int32_t &first = head_at(k);
+    const auto b = static_cast<int32_t>(body);
+    next_[body] = first;
+    previous_[body] = -1;
+    if (first >= 0) previous_[static_cast<size_t>(first)] = b;
+    first = b;
+    filed_[body] = k;
 }
 
 void UniformGrid::remove(uint32_t body, const Cell &c) {
-    auto &list = at(c);
-    const auto found = std::find(list.begin(), list.end(), body);
-    if (found == list.end()) return;
-    *found = list.back();
-    list.pop_back(); // the empty cell stays, ready for the next body
+    if (body < filed_.size() && filed_[body] == key(c)) unlink(body);
+}
+
+void UniformGrid::unlink(uint32_t body) {
+    if (filed_[body] == kNowhere) return;
+    const int32_t after = next_[body], before = previous_[body];
+    if (before >= 0)
+        next_[static_cast<size_t>(before)] = after;
+    else
+        head_at(filed_[body]) = after; // the empty cell stays, ready for the next body
+    if (after >= 0) previous_[static_cast<size_t>(after)] = before;
+    next_[body] = previous_[body] = -1;
+    filed_[body] = kNowhere;
 }
 
 } // namespace physics_custom

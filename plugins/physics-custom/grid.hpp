@@ -44,28 +44,34 @@ class UniformGrid {
     Box bounds(const Cell &c) const;
 
     void insert(uint32_t body, const Cell &c);
-    void remove(uint32_t body, const Cell &c);
+    void remove(uint32_t body, const Cell &c); // nothing if the body is not filed there
+    // (A body is in one cell at a time: inserting it again moves it.)
 
     // Calls f(body) for every body filed in the 27 cells around c (c included).
     template <class F> void for_neighbours(const Cell &c, F &&f) const {
-        for (int64_t dx = -1; dx <= 1; ++dx)
+        for (int64_t dz = -1; dz <= 1; ++dz)
             for (int64_t dy = -1; dy <= 1; ++dy)
-                for (int64_t dz = -1; dz <= 1; ++dz) {
-                    const std::vector<uint32_t> *list = find({c[0] + dx, c[1] + dy, c[2] + dz});
-                    if (!list) continue;
-                    for (uint32_t body : *list) f(body);
-                }
+                for (int64_t dx = -1; dx <= 1; ++dx)
+                    for (int32_t body = head({c[0] + dx, c[1] + dy, c[2] + dz}); body >= 0;
+                         body = next_[static_cast<size_t>(body)])
+                        f(static_cast<uint32_t>(body));
     }
 
   private:
-    const std::vector<uint32_t> *find(const Cell &c) const {
-        if (!dense_.empty()) return &dense_[key(c)];
+    // Each cell's bodies are a list linked through arrays indexed by body (the fast codes' cell
+    // lists): a cell is one number, its first body (-1: none), in an array when the region has
+    // few enough cells, hashed otherwise; no allocation per cell, and the 27 cells around a body
+    // are read from a few cache lines (docs/performance.md, the gas).
+    int32_t head(const Cell &c) const {
+        if (!dense_.empty()) return dense_[key(c)];
         const auto it = cells_.find(key(c));
-        return it == cells_.end() ? nullptr : &it->second;
+        return it == cells_.end() ? -1 : it->second;
     }
-    std::vector<uint32_t> &at(const Cell &c) {
-        return dense_.empty() ? cells_[key(c)] : dense_[key(c)];
+    int32_t &head_at(uint64_t k) {
+        if (!dense_.empty()) return dense_[k];
+        return cells_.try_emplace(k, -1).first->second;
     }
+    void unlink(uint32_t body);
 
     // Cells run from -1 to counts_ per axis (the neighbours of the edge cells): an index into
     // the array, or 21 bits each for the hash.
@@ -80,8 +86,13 @@ class UniformGrid {
     glm::dvec3 origin_;
     double cell_;
     Cell counts_;
-    std::vector<std::vector<uint32_t>> dense_;                  // when few enough cells
-    std::unordered_map<uint64_t, std::vector<uint32_t>> cells_; // otherwise
+    std::vector<int32_t> dense_;                  // each cell's first body, when few enough cells
+    std::unordered_map<uint64_t, int32_t> cells_; // otherwise
+    // Per body: the next and previous body of its cell (-1: none), and its cell's key (or
+    // kNowhere: not filed).
+    std::vector<int32_t> next_, previous_;
+    std::vector<uint64_t> filed_;
+    static constexpr uint64_t kNowhere = ~uint64_t{0};
 };
 
 } // namespace physics_custom
