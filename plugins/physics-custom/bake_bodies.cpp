@@ -325,11 +325,6 @@ void EventBake::restart(Body &b, double t, const glm::dvec3 &velocity, bool stop
 
 // ---- where bodies are ------------------------------------------------------------------
 
-// The path of a free body from `now`, for time-of-impact queries over [0, t_end - now].
-Path EventBake::from_now(const Body &b, double now) const {
-    return Path{b.path.at(now - b.t0), b.path.velocity(now - b.t0), b.path.a};
-}
-
 // A body's pose at t: its keys', or its free path's center with its keys' rotation and
 // scale (which always come from the keys).
 Pose EventBake::pose(const Body &b, double t) const {

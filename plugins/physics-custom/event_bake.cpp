@@ -5,6 +5,8 @@
 #include "event_bake.hpp"
 #include "event_bake_detail.hpp"
 
+#include <utility>
+
 namespace physics_custom::bake {
 
 EventBake::EventBake(const ani_physics_scene &scene, double t_begin, double t_end,
@@ -71,7 +73,8 @@ void EventBake::advance_to_end() {
     double last_event = -kNever;
     while (!bodies_.empty() && queue_->top_time() <= t_end_) {
         const int i = static_cast<int>(queue_->top());
-        const Predicted event = predicted_[static_cast<size_t>(i)];
+        // Taken, not copied: predict(i) writes its next event there at the end of handle().
+        const Predicted event = std::move(predicted_[static_cast<size_t>(i)]);
         const double now = event.t;
         events_at_once = now == last_event ? events_at_once + 1 : 0;
         last_event = now;

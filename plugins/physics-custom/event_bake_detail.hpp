@@ -345,7 +345,10 @@ class EventBake {
     void emit_free(uint32_t i, const ani_body_state &start, double free_at);
     void close_segment(Body &b, double t);
     void restart(Body &b, double t, const glm::dvec3 &velocity, bool stop);
-    Path from_now(const Body &b, double now) const;
+    // The path of a free body from `now`, for time-of-impact queries over [0, t_end - now].
+    static Path from_now(const Body &b, double now) {
+        return Path{b.path.at(now - b.t0), b.path.velocity(now - b.t0), b.path.a};
+    }
     Pose pose(const Body &b, double t) const;
     const ani_mesh_view &mesh_of(const Body &b) const;
     glm::dvec3 vertex(const ani_mesh_view &mesh, uint32_t k) const;
@@ -648,12 +651,29 @@ class EventBake {
 
 // Calls f(j) for every active body that body i could meet: its grid neighbours and the
 // bodies outside the grid, or every body when i itself is outside.
+// (f only reads: the grid does not change meanwhile.)
 template <class F> void EventBake::for_candidates(int i, F &&f) const {
     const Body &b = bodies_[static_cast<size_t>(i)];
     if (b.in_grid) {
+        // The neighbours are gathered first, and the first two cache lines of each one's record
+        // (what a free sphere's prediction reads) fetched ahead, so that waiting for memory
+        // overlaps instead of following one record after another (the 10,000-ball gas spent
+        // most of its predictions waiting; docs/performance.md). Same order as the grid's.
+        std::array<int, 64> batch;
+        std::size_t n = 0;
+        auto flush = [&] {
+            for (std::size_t k = 0; k < n; ++k) f(batch[k]);
+            n = 0;
+        };
         grid_->for_neighbours(b.cell, [&](uint32_t j) {
-            if (static_cast<int>(j) != i) f(static_cast<int>(j));
+            if (static_cast<int>(j) == i) return;
+            const char *record = reinterpret_cast<const char *>(&bodies_[j]);
+            __builtin_prefetch(record);
+            __builtin_prefetch(record + 64);
+            batch[n++] = static_cast<int>(j);
+            if (n == batch.size()) flush();
         });
+        flush();
         for (int j : outside_)
             if (j != i) f(j);
     } else {

@@ -10,9 +10,9 @@ namespace physics_custom {
 Material material_of(const ani_model_desc &desc) {
     Material m;
     if (!ANI_MODEL_DESC_HAS_BODY(&desc)) return m;
-    const std::string name = desc.name ? desc.name : "?";
     auto refuse = [&](const std::string &what) {
-        throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "model '" + name + "': " + what);
+        throw ani::Failure(ANI_ERR_INVALID_ARGUMENT,
+                           "model '" + std::string(desc.name ? desc.name : "?") + "': " + what);
     };
     if (!(desc.restitution >= 0.0 && desc.restitution <= 1.0))
         refuse("restitution must be in [0, 1]");
