@@ -16,6 +16,7 @@ set(tables
   "rest.csv|scene,measure,backend,step,error,ms,runs|step,error,ms,runs"
   "gas.csv|backend,n,step,sim_seconds,wall_s,wall_per_sim_s,runs,collisions,collisions_per_s,energy_error,overlap,peak_rss_mb,baseline_rss_mb,pair_tests_done,pair_tests_skipped|n,step,sim_seconds,wall_s,wall_per_sim_s,runs,collisions,collisions_per_s,energy_error,overlap,peak_rss_mb,baseline_rss_mb,pair_tests_done,pair_tests_skipped"
   "gas_fit.csv|backend,exponent,points|exponent,points"
+  "gas_ratio.csv|n,custom_collisions_per_s,reference_collisions_per_s,ratio|n,custom_collisions_per_s,reference_collisions_per_s,ratio"
   "mesh.csv|case,query,triangles_a,triangles_b,bvh_us,brute_us,speedup,bvh_feature_tests,brute_feature_tests,bvh_node_pairs,contact,time_difference,normal_difference,point_difference|query,triangles_a,triangles_b,bvh_us,brute_us,speedup,bvh_feature_tests,brute_feature_tests,bvh_node_pairs,contact,time_difference,normal_difference,point_difference"
   "long.csv|backend,step,seconds,wall_s,runs,peak_rss_mb,baseline_rss_mb,collisions,segments,energy_error,position_error_m|step,seconds,wall_s,runs,peak_rss_mb,baseline_rss_mb,collisions,segments,energy_error,position_error_m"
   "skip.csv|what,example,value,of,note|value,of")

@@ -1,6 +1,9 @@
 // Scaling: a gas of N spheres in a closed box at a fixed density, N = 100 .. 10,000, baked through
-// the timeline by each backend in a process of its own (for its memory).
+// the timeline by each backend in a process of its own (for its memory), and run by the reference
+// gas (gas_reference.hpp, a compact event-driven program) on the same spheres over the same time:
+// physics.custom's collisions per second against the reference's.
 #include "bench.hpp"
+#include "gas_reference.hpp"
 
 #include "bullet_support.hpp"
 
@@ -66,7 +69,47 @@ Totals totals(const Document &doc, const Timeline &t, double time) {
         for (size_t b = a + 1; b < n; ++b) {
             const glm::dvec3 d = f.models[a].center - f.models[b].center;
             const double d2 = glm::dot(d, d);
-            if (d2 < 4.0 * r * r) out.overlap = std::max(out.overlap, (2.0 * r - std::sqrt(d2)) / r);
+            if (d2 < 4.0 * r * r)
+                out.overlap = std::max(out.overlap, (2.0 * r - std::sqrt(d2)) / r);
+        }
+    return out;
+}
+
+// The document's gas for the reference: model 0 is the box (the cube mesh, -1 to 1, scaled), the
+// others the balls.
+reference::Gas reference_gas(const Document &doc) {
+    reference::Gas g;
+    const ModelState &box = *doc.keyframes().front().states[0];
+    for (int a = 0; a < 3; ++a) {
+        g.lo[a] = box.center[a] - box.scale[a];
+        g.hi[a] = box.center[a] + box.scale[a];
+    }
+    g.radius = 0.2 * bt::unit_sphere_radius();
+    for (size_t k = 1; k < doc.models().size(); ++k) {
+        const glm::dvec3 c = bt::start_of(doc, static_cast<int>(k));
+        const glm::dvec3 v = doc.models()[k].initial_velocity;
+        g.position.push_back({c.x, c.y, c.z});
+        g.velocity.push_back({v.x, v.y, v.z});
+        g.mass.push_back(doc.models()[k].mass);
+    }
+    return g;
+}
+
+// As totals(), of the reference's gas.
+Totals totals(const reference::Gas &g) {
+    Totals out;
+    const size_t n = g.position.size();
+    const auto vec = [](const std::array<double, 3> &a) { return glm::dvec3(a[0], a[1], a[2]); };
+    for (size_t k = 0; k < n; ++k) {
+        const glm::dvec3 v = vec(g.velocity[k]);
+        out.energy += 0.5 * g.mass[k] * glm::dot(v, v);
+    }
+    for (size_t a = 0; a < n; ++a)
+        for (size_t b = a + 1; b < n; ++b) {
+            const glm::dvec3 d = vec(g.position[a]) - vec(g.position[b]);
+            const double d2 = glm::dot(d, d);
+            if (d2 < 4.0 * g.radius * g.radius)
+                out.overlap = std::max(out.overlap, (2.0 * g.radius - std::sqrt(d2)) / g.radius);
         }
     return out;
 }
@@ -80,33 +123,44 @@ double count(const Timeline &t, const char *name) {
 } // namespace
 
 void run_gas(const Options &o) {
-    const std::vector<int> sizes = o.quick ? std::vector<int>{100, 300}
-                                           : std::vector<int>{100, 300, 1000, 3000, 10000};
+    const std::vector<int> sizes =
+        o.quick ? std::vector<int>{100, 300} : std::vector<int>{100, 300, 1000, 3000, 10000};
     // Bullet's step for the gas: the largest of 1/240 .. 1/4000 s keeping its energy error near
     // 1e-3 (measured: see docs/performance.md).
     const double bullet_step = 1.0 / 1000.0;
+    // The reference first, so that physics.custom's row can give the ratio of the two.
+    const std::vector<std::string> backends = {"reference", "physics.custom", "physics.bullet"};
     Csv csv(o.out / "gas.csv",
             {"backend", "n", "step", "sim_seconds", "wall_s", "wall_per_sim_s", "runs",
              "collisions", "collisions_per_s", "energy_error", "overlap", "peak_rss_mb",
              "baseline_rss_mb", "pair_tests_done", "pair_tests_skipped"});
+    Csv ratios(o.out / "gas_ratio.csv",
+               {"n", "custom_collisions_per_s", "reference_collisions_per_s", "ratio"});
     const double baseline = resident_mb();
-    std::cout << "N balls (r 0.2, volume fraction 0.27, up to 1 m/s per axis) in a closed box. "
-                 "Simulated time: about "
-              << (o.quick ? "20,000" : "100,000")
-              << " collisions' worth for physics.custom; for Bullet (step 1/"
-              << std::lround(1.0 / bullet_step)
-              << " s) as much but at most 2,500 / N s. Energy error and overlap at the end.\n";
+    std::cout
+        << "N balls (r 0.2, volume fraction 0.27, up to 1 m/s per axis) in a closed box. "
+           "Simulated time: about "
+        << (o.quick ? "20,000" : "100,000")
+        << " collisions' worth for physics.custom and the reference (bench/gas_reference.hpp, "
+           "on the same balls); for Bullet (step 1/"
+        << std::lround(1.0 / bullet_step)
+        << " s) as much but at most 2,500 / N s. Energy error and overlap at the end.\n";
     std::cout << "| backend | N | sim s | wall s | wall s per sim s | collisions/s | energy "
-                 "error | deepest overlap / r | peak MB | pair tests skipped |\n";
-    std::vector<std::pair<double, double>> fit[2]; // (log N, log wall per sim s) per backend
+                 "error | deepest overlap / r | peak MB | pair tests skipped | collisions/s over "
+                 "the reference's |\n";
+    // (log N, log wall time per simulated second) per backend
+    std::vector<std::vector<std::pair<double, double>>> fit(backends.size());
     for (int n : sizes) {
-        for (int b = 0; b < 2; ++b) {
-            const std::string backend = b == 0 ? "physics.custom" : "physics.bullet";
-            // About 4.7 collisions per ball per second at this density: physics.custom bakes
-            // about 100,000 collisions (20,000 in a quick run); Bullet (about 3.5 us per ball and
-            // step at 1/1000 s here) at most that, and at most 2,500 / N s.
+        double reference_rate = 0.0;
+        for (size_t b = 0; b < backends.size(); ++b) {
+            const std::string &backend = backends[b];
+            const bool bullet = backend == "physics.bullet", reference = backend == "reference";
+            // About 4.7 collisions per ball per second at this density: physics.custom and the
+            // reference run about 100,000 collisions (20,000 in a quick run); Bullet (about 3.5
+            // us per ball and step at 1/1000 s here) at most that, and at most 2,500 / N s.
             const double sim_custom = (o.quick ? 2e4 : 1e5) / (4.7 * n);
-            const double sim = b == 0 ? sim_custom : std::min(sim_custom, (o.quick ? 25.0 : 2500.0) / n);
+            const double sim =
+                bullet ? std::min(sim_custom, (o.quick ? 25.0 : 2500.0) / n) : sim_custom;
             const int runs = o.runs;
             double peak = 0.0;
             const std::vector<double> r = in_child(
@@ -114,38 +168,60 @@ void run_gas(const Options &o) {
                     const Document doc = gas(n, bullet_step, 7);
                     std::vector<double> wall;
                     std::vector<double> out;
-                    for (int k = 0; k < runs; ++k) {
-                        auto t = bt::timeline_of(doc, backend);
-                        const auto start = std::chrono::steady_clock::now();
-                        t->bake(sim);
-                        wall.push_back(seconds_since(start));
-                        if (k > 0) continue;
-                        const Totals a = totals(doc, *t, 0.0), z = totals(doc, *t, sim);
-                        out = {static_cast<double>(t->events().size()),
-                               std::abs(z.energy - a.energy) / a.energy, z.overlap,
-                               count(*t, "pair tests done"), count(*t, "pair tests skipped")};
+                    if (reference) {
+                        // Collisions counted as the plugins' events are: pair and wall.
+                        const reference::Gas g = reference_gas(doc);
+                        for (int k = 0; k < runs; ++k) {
+                            const auto start = std::chrono::steady_clock::now();
+                            const reference::Result z = reference::run(g, sim);
+                            wall.push_back(seconds_since(start));
+                            if (k > 0) continue;
+                            const Totals at0 = totals(g), at1 = totals(z.final_state);
+                            out = {static_cast<double>(z.pair_collisions + z.wall_collisions),
+                                   std::abs(at1.energy - at0.energy) / at0.energy, at1.overlap,
+                                   static_cast<double>(z.predictions), 0.0};
+                        }
+                    } else {
+                        for (int k = 0; k < runs; ++k) {
+                            auto t = bt::timeline_of(doc, backend);
+                            const auto start = std::chrono::steady_clock::now();
+                            t->bake(sim);
+                            wall.push_back(seconds_since(start));
+                            if (k > 0) continue;
+                            const Totals a = totals(doc, *t, 0.0), z = totals(doc, *t, sim);
+                            out = {static_cast<double>(t->events().size()),
+                                   std::abs(z.energy - a.energy) / a.energy, z.overlap,
+                                   count(*t, "pair tests done"), count(*t, "pair tests skipped")};
+                        }
                     }
                     out.insert(out.begin(), median(wall));
                     return out;
                 },
                 peak);
             if (r.size() != 6) throw std::runtime_error("the gas with " + backend + " failed");
-            const double wall = r[0], collisions = r[1];
-            csv << backend << static_cast<double>(n) << (b == 0 ? 0.0 : bullet_step) << sim
-                << wall << wall / sim << static_cast<double>(runs) << collisions
-                << collisions / wall << r[2] << r[3] << peak << baseline << r[4] << r[5];
+            const double wall = r[0], collisions = r[1], rate = collisions / wall;
+            csv << backend << static_cast<double>(n) << (bullet ? bullet_step : 0.0) << sim << wall
+                << wall / sim << static_cast<double>(runs) << collisions << rate << r[2] << r[3]
+                << peak << baseline << r[4] << r[5];
             csv.end_row();
             fit[b].emplace_back(std::log(static_cast<double>(n)), std::log(wall / sim));
+            if (reference) reference_rate = rate;
+            const bool custom = backend == "physics.custom";
+            if (custom) {
+                ratios << static_cast<double>(n) << rate << reference_rate << rate / reference_rate;
+                ratios.end_row();
+            }
             const double skipped = r[4] + r[5] > 0.0 ? r[5] / (r[4] + r[5]) : 0.0;
             std::cout << "| " << backend << " | " << n << " | " << fmt(sim) << " | " << fmt(wall)
-                      << " | " << fmt(wall / sim) << " | " << fmt(collisions / wall) << " | "
-                      << fmt(r[2]) << " | " << fmt(r[3]) << " | " << fmt(peak) << " | "
-                      << (b == 0 ? fmt(100.0 * skipped) + "%" : std::string("-")) << " |\n";
+                      << " | " << fmt(wall / sim) << " | " << fmt(rate) << " | " << fmt(r[2])
+                      << " | " << fmt(r[3]) << " | " << fmt(peak) << " | "
+                      << (custom ? fmt(100.0 * skipped) + "%" : std::string("-")) << " | "
+                      << (custom ? fmt(rate / reference_rate) : std::string("-")) << " |\n";
         }
     }
-    // Least squares of log(wall per simulated second) against log N.
+    // Least squares of log(wall time per simulated second) against log N.
     Csv exponents(o.out / "gas_fit.csv", {"backend", "exponent", "points"});
-    for (int b = 0; b < 2; ++b) {
+    for (size_t b = 0; b < backends.size(); ++b) {
         const auto &pts = fit[b];
         const auto m = static_cast<double>(pts.size());
         double sx = 0, sy = 0, sxx = 0, sxy = 0;
@@ -156,10 +232,9 @@ void run_gas(const Options &o) {
             sxy += x * y;
         }
         const double slope = m > 1 ? (m * sxy - sx * sy) / (m * sxx - sx * sx) : 0.0;
-        const char *backend = b == 0 ? "physics.custom" : "physics.bullet";
-        exponents << backend << slope << m;
+        exponents << backends[b] << slope << m;
         exponents.end_row();
-        std::cout << backend << ": wall time per simulated second ~ N^" << fmt(slope)
+        std::cout << backends[b] << ": wall time per simulated second ~ N^" << fmt(slope)
                   << " (N log N over this range would be about N^1.1)\n";
     }
 }
