@@ -21,6 +21,7 @@ void EventBake::classify() {
         const bool released = !free_now && m.start.motion != ANI_MOTION_KEYED;
         const ani_model_desc &d = *m.desc;
         const Material material = material_of(d); // refuses values out of range
+        materials_.push_back(material);
         const bool movable = d.dynamics || d.gravity;
         const bool solid = m.mesh && m.mesh->triangle_count > 0 && m.group == i;
         // Keys that all hold it in the same place (a floor keyed along with the rest of a
@@ -48,6 +49,7 @@ void EventBake::classify() {
             b.reach = mesh_reach(*m.mesh);
             if (!b.sphere) b.edges = edges_of(m.mesh->triangles, m.mesh->triangle_count);
             b.dynamics = d.dynamics != 0;
+            b.mass = d.mass;
             b.material = material;
             b.keys_end = free_now ? t_begin_ : span.end;
             if (turning) set_turning(b, std::move(*turning));

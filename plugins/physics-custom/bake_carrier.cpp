@@ -151,7 +151,7 @@ bool EventBake::settle_on_carrier(int x, int y, const glm::dvec3 &n, double t) {
     if (!motion) return false;
     const glm::dvec3 u = motion->velocity, v = b.path.velocity(t - b.t0), v_rel = v - u;
     const double vn = glm::dot(v_rel, n), g_n = -glm::dot(b.free_a, n);
-    const Material mo = material_of(*scene_->models[bodies_[static_cast<size_t>(y)].model].desc);
+    const Material &mo = materials_[bodies_[static_cast<size_t>(y)].model];
     const double e = combined_restitution(b.material.restitution, mo.restitution);
     if (!carries_along(u, n) ||
         !zeno_settles(vn, g_n, e, std::max(1.0, glm::length(b.path.at(t - b.t0)))))

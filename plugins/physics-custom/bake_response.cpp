@@ -46,7 +46,7 @@ void EventBake::collide_obstacle(int i, const Obstacle &o, const Contact &contac
     // Off a model without Dynamics: a reflection; without Dynamics itself it stops. With
     // restitution or friction, or turning (which needs Dynamics): the contact impulse (the
     // sections below).
-    if (!b.dynamics || (!b.turning() && !sphere_responds(b, scene_->models[o.model])))
+    if (!b.dynamics || (!b.turning() && !sphere_responds(b, o.model)))
         restart(b, t, reflect(v, n), !b.dynamics);
     else if (b.turning() ? respond_turning_to_obstacle(i, o, contact, points, t)
                          : respond_to_obstacle(i, o, n, v, t)) {
@@ -128,30 +128,29 @@ void EventBake::collide_bodies(int i, int j, const Contact &contact,
         Body &free = b_wall ? o : b;
         const glm::dvec3 v_free = b_wall ? vo : v, v_wall = b_wall ? v : vo,
                          n_free = b_wall ? -n : n;
-        if (free.dynamics && sphere_responds(free, scene_->models[(b_wall ? b : o).model]))
+        if (free.dynamics && sphere_responds(free, (b_wall ? b : o).model))
             respond_to_wall(free, v_free, v_wall, n_free, (b_wall ? b : o).material, t);
         else
             restart(free, t,
                     free.dynamics ? reflect_off_moving_wall(v_free, v_wall, n_free)
                                   : glm::dvec3(0.0),
                     !free.dynamics);
-    } else if (b.dynamics && o.dynamics && sphere_responds(b, scene_->models[o.model])) {
+    } else if (b.dynamics && o.dynamics && sphere_responds(b, o.model)) {
         respond_to_sphere(b, v, o, vo, n, t);
     } else if (b.dynamics && o.dynamics) {
-        const double ma = scene_->models[b.model].desc->mass,
-                     mb = scene_->models[o.model].desc->mass;
+        const double ma = b.mass, mb = o.mass;
         const auto [va, vb] = elastic_exchange(ma, v, mb, vo, n);
         restart(b, t, va, false);
         restart(o, t, vb, false);
     } else {
         // A model without Dynamics stops at the contact; one with Dynamics reflects off it as
         // off a wall moving at its velocity then.
-        if (b.dynamics && sphere_responds(b, scene_->models[o.model]))
+        if (b.dynamics && sphere_responds(b, o.model))
             respond_to_wall(b, v, vo, n, o.material, t);
         else
             restart(b, t, b.dynamics ? reflect_off_moving_wall(v, vo, n) : glm::dvec3(0.0),
                     !b.dynamics);
-        if (o.dynamics && sphere_responds(o, scene_->models[b.model]))
+        if (o.dynamics && sphere_responds(o, b.model))
             respond_to_wall(o, vo, v, -n, b.material, t);
         else
             restart(o, t, o.dynamics ? reflect_off_moving_wall(vo, v, -n) : glm::dvec3(0.0),
@@ -175,9 +174,9 @@ void EventBake::collide_bodies(int i, int j, const Contact &contact,
 
 // Whether a body meets the model with something other than the seed's elastic,
 // frictionless reflection (a model that is not a sphere: the next section).
-bool EventBake::sphere_responds(const Body &b, const ani_physics_model &other) const {
+bool EventBake::sphere_responds(const Body &b, uint32_t other) const {
     if (!b.sphere) return mesh_responds(b, other);
-    const Material mo = material_of(*other.desc);
+    const Material &mo = materials_[other];
     return combined_restitution(b.material.restitution, mo.restitution) != 1.0 ||
            combined_friction(b.material.friction, mo.friction) != 0.0;
 }
@@ -201,7 +200,7 @@ ImpulseBody EventBake::sphere_body(const Body &b, double mass, const glm::dvec3 
 bool EventBake::respond_to_obstacle(int i, const Obstacle &o, const glm::dvec3 &n,
                                     const glm::dvec3 &v, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
-    const Material mo = material_of(*scene_->models[o.model].desc);
+    const Material mo = materials_[o.model];
     const double e = combined_restitution(b.material.restitution, mo.restitution),
                  mu = combined_friction(b.material.friction, mo.friction);
     const ImpulseBody a = sphere_body(b, 1.0, v, n, t); // against infinite mass: any mass
@@ -266,9 +265,9 @@ void EventBake::respond_to_sphere(Body &b, const glm::dvec3 &v, Body &o, const g
 
 // Whether a model that is not a sphere meets the other with something other than the seed's
 // elastic, frictionless reflection.
-bool EventBake::mesh_responds(const Body &b, const ani_physics_model &other) const {
+bool EventBake::mesh_responds(const Body &b, uint32_t other) const {
     if (b.sphere || b.spin.on) return false; // a turning one: the last section
-    const Material mo = material_of(*other.desc);
+    const Material &mo = materials_[other];
     return combined_restitution(b.material.restitution, mo.restitution) != 1.0 ||
            combined_friction(b.material.friction, mo.friction) != 0.0;
 }
@@ -320,7 +319,7 @@ EventBake::contact_offsets(const Body &b, const std::vector<glm::dvec3> &points,
 // mass moving as it does there.
 // A body's mass for an impulse: refused, naming the model, unless finite and > 0.
 double EventBake::collision_mass(const Body &b) const {
-    const double m = scene_->models[b.model].desc->mass;
+    const double m = b.mass;
     if (!(m > 0.0) || !std::isfinite(m))
         throw ani::Failure(ANI_ERR_FAILED, std::string("model '") +
                                                name_of(scene_->models[b.model]) +
@@ -396,7 +395,7 @@ double EventBake::microcollision_speed(const Body &b, double g_n, double t) cons
 bool EventBake::respond_turning_to_obstacle(int i, const Obstacle &o, const Contact &contact,
                                             const std::vector<glm::dvec3> &points, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
-    const Material mo = material_of(*scene_->models[o.model].desc);
+    const Material mo = materials_[o.model];
     const double e = combined_restitution(b.material.restitution, mo.restitution),
                  mu = combined_friction(b.material.friction, mo.friction);
     const glm::dvec3 n = contact.normal, c = b.path.at(t - b.t0);

@@ -171,7 +171,7 @@ void EventBake::put_on(int i, Body held, const Obstacle &ob, const glm::dvec3 &n
     ++held.version;
     b = std::move(held);
     if (b.carrier >= 0) ++riders_;
-    hold_on(b, material_of(*scene_->models[ob.model].desc), n);
+    hold_on(b, materials_[ob.model], n);
 }
 
 // The edges that bound the flat region of an obstacle in a body's support plane: those of
@@ -570,14 +570,11 @@ bool EventBake::held_by_support(const Body &b, const glm::dvec3 &push) const {
     const double across = glm::length(push + into * b.support_n);
     const int holder = b.on_body >= 0 ? b.on_body : b.carried() ? b.carried_by : b.carrier;
     const double mu =
-        holder >= 0
-            ? combined_friction(b.material.friction,
-                                bodies_[static_cast<size_t>(holder)].material.friction)
-            : combined_friction(
-                  b.material.friction,
-                  material_of(
-                      *scene_->models[obstacles_[static_cast<size_t>(b.support)].model].desc)
-                      .friction);
+        holder >= 0 ? combined_friction(b.material.friction,
+                                        bodies_[static_cast<size_t>(holder)].material.friction)
+                    : combined_friction(
+                          b.material.friction,
+                          materials_[obstacles_[static_cast<size_t>(b.support)].model].friction);
     // (A push straight into it, to rounding, is held by any support.)
     return across <= mu * into + 1e-12;
 }

@@ -105,6 +105,7 @@ struct alignas(64) Body {
     double reach = 0.0; // the farthest a vertex is from the model's origin, in model space
     std::vector<std::array<uint32_t, 2>> edges; // not a sphere: its mesh's edges, each once
     bool dynamics = false;
+    double mass = 0.0;        // its model's (kg)
     double keys_end = kNever; // when its last key passes (then it is free)
     double resume_at =
         kNever;              // released from its keys at a contact: the next key, where they resume
@@ -510,7 +511,7 @@ class EventBake {
                         double t);
     static ani_collision_event collision_event(uint32_t a, uint32_t b, const Contact &contact,
                                                double t, const glm::dvec3 &closing);
-    bool sphere_responds(const Body &b, const ani_physics_model &other) const;
+    bool sphere_responds(const Body &b, uint32_t other) const;
     static ImpulseBody sphere_body(const Body &b, double mass, const glm::dvec3 &v,
                                    const glm::dvec3 &n, double t);
     bool respond_to_obstacle(int i, const Obstacle &o, const glm::dvec3 &n, const glm::dvec3 &v,
@@ -519,7 +520,7 @@ class EventBake {
                          const glm::dvec3 &n, const Material &wall, double t);
     void respond_to_sphere(Body &b, const glm::dvec3 &v, Body &o, const glm::dvec3 &vo,
                            const glm::dvec3 &n, double t);
-    bool mesh_responds(const Body &b, const ani_physics_model &other) const;
+    bool mesh_responds(const Body &b, uint32_t other) const;
     bool settle_after_bounces(int i, const Obstacle &o, const glm::dvec3 &n, double t);
     std::vector<glm::dvec3> contact_offsets(const Body &b, const std::vector<glm::dvec3> &points,
                                             double t) const;
@@ -620,6 +621,7 @@ class EventBake {
     glm::dvec3 gravity_;
     std::vector<Body> bodies_;
     std::vector<int> mesh_bodies_; // the bodies that are not spheres (what can carry a model)
+    std::vector<Material> materials_; // every model's, by model index (read once, in classify)
     std::vector<Obstacle> obstacles_;
     std::size_t triangle_count_ = 0;
     std::unique_ptr<UniformGrid> grid_; // with many bodies
