@@ -85,7 +85,7 @@ unset multiplot
 EOF
 
 if [ -f "$out/gas.csv" ]; then
-  for backend in physics.custom physics.bullet; do
+  for backend in physics.custom physics.bullet reference; do
     awk -F, -v b="$backend" '$1 == b { print $2, $6, $9 }' "$out/gas.csv" > "$tmp/gas-$backend.dat"
   done
   gnuplot <<EOF
@@ -99,13 +99,15 @@ set multiplot layout 1,2 title 'A gas of N balls in a box (physics.bullet at 1/1
 set title 'wall time per simulated second'
 set ylabel 's'
 plot '$tmp/gas-physics.custom.dat' using 1:2 with linespoints lw 2 pt 5 lc rgb '#2471a3' title 'physics.custom', \
-     '$tmp/gas-physics.bullet.dat' using 1:2 with linespoints lw 2 pt 7 lc rgb '#c0392b' title 'physics.bullet'
+     '$tmp/gas-physics.bullet.dat' using 1:2 with linespoints lw 2 pt 7 lc rgb '#c0392b' title 'physics.bullet', \
+     '$tmp/gas-reference.dat' using 1:2 with linespoints lw 2 pt 9 lc rgb '#7f8c8d' title 'reference program (bench)'
 set title 'collisions per second of wall time'
 set ylabel 'collisions / s'
 set yrange [100:1e7]
 set format y '10^{%T}'
 plot '$tmp/gas-physics.custom.dat' using 1:3 with linespoints lw 2 pt 5 lc rgb '#2471a3' title 'physics.custom', \
      '$tmp/gas-physics.bullet.dat' using 1:3 with linespoints lw 2 pt 7 lc rgb '#c0392b' title 'physics.bullet', \
+     '$tmp/gas-reference.dat' using 1:3 with linespoints lw 2 pt 9 lc rgb '#7f8c8d' title 'reference program (bench)', \
      1e6 with lines dt 2 lc rgb 'black' title 'target 10^6'
 unset multiplot
 EOF
