@@ -3,12 +3,16 @@
 // reported to the host. Relies on event_bake_detail.hpp (the types) and the bake's data.
 #include "event_bake_detail.hpp"
 
+#include <unordered_map>
+
 namespace physics_custom::bake {
 
 // Sorts the models: static ones with a mesh are obstacles; spheres that can move and models
 // with a mesh that are keyed during the bake are bodies; the rest (jointed parts, models
 // without a mesh, free models that are not spheres) move without collisions.
 void EventBake::classify() {
+    // Models that share a mesh (a gas's balls) share its reach: measured once per mesh.
+    std::unordered_map<const ani_mesh_view *, double> reaches;
     for (uint32_t i = 0; i < scene_->model_count; ++i) {
         const ani_physics_model &m = scene_->models[i];
         if (!m.desc) throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "a model has no description");
@@ -46,7 +50,9 @@ void EventBake::classify() {
             b.model = i;
             b.sphere = radius.has_value();
             b.radius = radius.value_or(0.0);
-            b.reach = mesh_reach(*m.mesh);
+            const auto [reach, fresh] = reaches.try_emplace(m.mesh, 0.0);
+            if (fresh) reach->second = mesh_reach(*m.mesh);
+            b.reach = reach->second;
             if (!b.sphere) b.edges = edges_of(m.mesh->triangles, m.mesh->triangle_count);
             b.dynamics = d.dynamics != 0;
             b.mass = d.mass;

@@ -76,6 +76,7 @@ bool EventBake::try_ride(int i, double t) {
         return false;
     const glm::dvec3 c = b.path.at(t - b.t0);
     const double reach = b.sphere ? b.radius : body_size(b);
+    count_.scanned += mesh_bodies_.size();
     for (const int other : mesh_bodies_) {
         const Body &o = bodies_[static_cast<size_t>(other)];
         if (other == i || !o.active || is_ignored(i, other)) continue;
@@ -208,6 +209,7 @@ void EventBake::recarry(int i, double t) {
 // dropped where it is, and finds what holds it from there).
 void EventBake::carry_on(int j, double t) {
     if (riders_ == 0) return;
+    count_.scanned += bodies_.size();
     for (size_t k = 0; k < bodies_.size(); ++k) {
         Body &r = bodies_[k];
         if ((r.carrier != j && r.carried_by != j) ||

@@ -623,6 +623,7 @@ void EventBake::settle_stacks(double t) {
 // acceleration, and so do the ones asleep on them.
 void EventBake::wake_riders(int j, double t) {
     if (sleepers_ == 0 || immovable(bodies_[static_cast<size_t>(j)])) return;
+    count_.scanned += bodies_.size();
     for (size_t k = 0; k < bodies_.size(); ++k) {
         Body &r = bodies_[k];
         if (r.on_body != j) continue;

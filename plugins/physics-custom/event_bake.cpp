@@ -255,6 +255,7 @@ void EventBake::report_counts() {
         {"mesh feature tests", count_.mesh_tests},
         {"tips about an edge", count_.hinges},
         {"pair predictions reused", count_.reused},
+        {"bodies scanned after contacts", count_.scanned},
     };
     // Each slice reports its own work: the host adds them up.
     for (size_t k = 0; k < std::size(counts); ++k) {

@@ -190,6 +190,9 @@ TEST_CASE("10000 spheres: the broad phase tests a few neighbours per prediction,
     CHECK(timeline->events().size() > 2000);
     CHECK(done < 40.0 * predictions);
     CHECK(counts.at("pair tests skipped") > 1000.0 * done);
+    // Nothing after a contact looks at every body: no platform to ride or riders to wake here
+    // (a scan of all 10,000 after each contact made this gas 7 times slower once).
+    CHECK(counts.at("bodies scanned after contacts") == 0.0);
     // Energy kept through all of it.
     double e0 = 0.0, e1 = 0.0;
     const Frame a = timeline->evaluate(0.0), b = timeline->evaluate(0.5);
