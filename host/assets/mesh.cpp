@@ -190,13 +190,19 @@ std::vector<std::shared_ptr<const Mesh>> load_meshes(const std::vector<std::stri
                                                      const std::filesystem::path &document,
                                                      std::vector<std::string> &warnings) {
     std::map<std::filesystem::path, std::shared_ptr<const Mesh>> loaded;
+    // Each id is looked for once (the search asks the file system, folder by folder): a scene of
+    // 100,000 balls named one mesh 100,000 times.
+    std::map<std::string, std::optional<std::filesystem::path>> resolved;
     std::vector<std::shared_ptr<const Mesh>> out;
     for (const std::string &id : ids) {
         if (id.empty()) {
             out.push_back(nullptr);
             continue;
         }
-        const auto path = assets.resolve(ANI_ASSET_MESH, id, document);
+        auto found = resolved.find(id);
+        if (found == resolved.end())
+            found = resolved.emplace(id, assets.resolve(ANI_ASSET_MESH, id, document)).first;
+        const std::optional<std::filesystem::path> &path = found->second;
         if (!path) {
             warnings.push_back("mesh '" + id + "' not found (" + assets.searched(ANI_ASSET_MESH, id, document) +
                                "); shown as a stand-in cube until it is there");

@@ -89,35 +89,44 @@ KeyedMotion::KeyedMotion(const Document &doc, const Interpolators &interpolators
     finish(camera_rotation_, ANI_CHANNEL_CAMERA_ROTATION, interpolators.chosen.get(), glm::dvec3(0.0));
 }
 
-void KeyedMotion::evaluate(const Channel &c, const std::vector<double> &times, std::vector<double> &values,
-                           std::vector<double> &rates) {
-    values.assign(times.size() * 4, 0.0);
-    rates.assign(times.size() * 4, 0.0);
+void KeyedMotion::evaluate(const Channel &c, const double *times, std::size_t n, double *values, double *rates) {
+    std::fill(values, values + 4 * n, 0.0);
+    std::fill(rates, rates + 4 * n, 0.0);
     const auto &api = c.interpolator->api<ani_interpolator_api>();
     ani_status status{};
-    if (api.evaluate(c.interpolator->handle(), &c.channel, times.data(), static_cast<uint32_t>(times.size()),
-                     values.data(), rates.data(), &status) != ANI_OK)
+    if (api.evaluate(c.interpolator->handle(), &c.channel, times, static_cast<uint32_t>(n), values, rates,
+                     &status) != ANI_OK)
         throw PluginError("interpolator '" + c.interpolator->info().id + "': " + status.message);
+}
+
+ModelPose KeyedMotion::pose_of(const ModelChannels &ch, double t, const double *centers, const double *velocities,
+                               const double *angles, const double *angle_rates, const double *scales) {
+    ModelPose out;
+    // Outside its keys a model's angles are held: they do not turn, whatever rate the
+    // interpolator continues with.
+    const bool held = t < ch.angles.keys.front().time || t > ch.angles.keys.back().time;
+    for (int c = 0; c < 3; ++c) {
+        out.center[c] = centers[c];
+        out.velocity[c] = velocities[c];
+        out.angles[c] = angles[c];
+        out.angle_rates[c] = held ? 0.0 : angle_rates[c];
+        out.scale[c] = scales[c];
+    }
+    return out;
 }
 
 std::vector<ModelPose> KeyedMotion::model(int m, const std::vector<double> &times) const {
     const ModelChannels &ch = models_[static_cast<size_t>(m)];
-    std::vector<double> centers, velocities, angles, angle_rates, scales, scale_rates;
-    evaluate(ch.center, times, centers, velocities);
-    evaluate(ch.angles, times, angles, angle_rates);
-    evaluate(ch.scale, times, scales, scale_rates);
-    std::vector<ModelPose> out(times.size());
-    for (size_t i = 0; i < times.size(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            out[i].center[c] = centers[4 * i + static_cast<size_t>(c)];
-            out[i].velocity[c] = velocities[4 * i + static_cast<size_t>(c)];
-            out[i].angles[c] = angles[4 * i + static_cast<size_t>(c)];
-            // Outside its keys a model's angles are held: they do not turn, whatever rate the
-            // interpolator continues with.
-            const bool held = times[i] < ch.angles.keys.front().time || times[i] > ch.angles.keys.back().time;
-            out[i].angle_rates[c] = held ? 0.0 : angle_rates[4 * i + static_cast<size_t>(c)];
-            out[i].scale[c] = scales[4 * i + static_cast<size_t>(c)];
-        }
+    const std::size_t n = times.size();
+    std::vector<double> centers(4 * n), velocities(4 * n), angles(4 * n), angle_rates(4 * n), scales(4 * n),
+        scale_rates(4 * n);
+    evaluate(ch.center, times.data(), n, centers.data(), velocities.data());
+    evaluate(ch.angles, times.data(), n, angles.data(), angle_rates.data());
+    evaluate(ch.scale, times.data(), n, scales.data(), scale_rates.data());
+    std::vector<ModelPose> out(n);
+    for (size_t i = 0; i < n; ++i)
+        out[i] = pose_of(ch, times[i], &centers[4 * i], &velocities[4 * i], &angles[4 * i], &angle_rates[4 * i],
+                         &scales[4 * i]);
     return out;
 }
 
@@ -129,12 +138,20 @@ void keyed_turning(const ModelPose &pose, glm::dquat &q, glm::dvec3 &w) {
     w = rate.x * kX + A * (rate.y * kY) + (A * B) * (rate.z * kZ);
 }
 
-ModelPose KeyedMotion::model(int m, double t) const { return model(m, std::vector<double>{t}).front(); }
+// One time, without allocating (the physics backends ask for every model's start).
+ModelPose KeyedMotion::model(int m, double t) const {
+    const ModelChannels &ch = models_[static_cast<size_t>(m)];
+    double centers[4], velocities[4], angles[4], angle_rates[4], scales[4], scale_rates[4];
+    evaluate(ch.center, &t, 1, centers, velocities);
+    evaluate(ch.angles, &t, 1, angles, angle_rates);
+    evaluate(ch.scale, &t, 1, scales, scale_rates);
+    return pose_of(ch, t, centers, velocities, angles, angle_rates, scales);
+}
 
 CameraState KeyedMotion::camera(double t) const {
-    std::vector<double> position, position_rate, rotation, rotation_rate;
-    evaluate(camera_position_, {t}, position, position_rate);
-    evaluate(camera_rotation_, {t}, rotation, rotation_rate);
+    double position[4], position_rate[4], rotation[4], rotation_rate[4];
+    evaluate(camera_position_, &t, 1, position, position_rate);
+    evaluate(camera_rotation_, &t, 1, rotation, rotation_rate);
     CameraState c;
     c.position = {position[0], position[1], position[2]};
     c.rotation = glm::normalize(glm::dquat(rotation[0], rotation[1], rotation[2], rotation[3]));

@@ -66,8 +66,11 @@ class KeyedMotion {
         Channel center, angles, scale;
     };
     static void finish(Channel &c, int kind, const PluginInstance *interpolator, const glm::dvec3 &initial_rate);
-    static void evaluate(const Channel &c, const std::vector<double> &times, std::vector<double> &values,
-                         std::vector<double> &rates);
+    // The channel at n times: 4 values and 4 rates per time.
+    static void evaluate(const Channel &c, const double *times, std::size_t n, double *values, double *rates);
+    // The pose from the channels' values at one time (4 numbers each).
+    static ModelPose pose_of(const ModelChannels &ch, double t, const double *centers, const double *velocities,
+                             const double *angles, const double *angle_rates, const double *scales);
 
     std::vector<ModelChannels> models_;
     Channel camera_position_, camera_rotation_;

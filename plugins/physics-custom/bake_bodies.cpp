@@ -13,6 +13,8 @@ namespace physics_custom::bake {
 void EventBake::classify() {
     // Models that share a mesh (a gas's balls) share its reach: measured once per mesh.
     std::unordered_map<const ani_mesh_view *, double> reaches;
+    bodies_.reserve(scene_->model_count); // at most one per model: never moved as they are added
+    materials_.reserve(scene_->model_count);
     for (uint32_t i = 0; i < scene_->model_count; ++i) {
         const ani_physics_model &m = scene_->models[i];
         if (!m.desc) throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "a model has no description");
@@ -60,7 +62,7 @@ void EventBake::classify() {
             b.keys_end = free_now ? t_begin_ : span.end;
             if (turning) set_turning(b, std::move(*turning));
             if (!b.sphere) mesh_bodies_.push_back(static_cast<int>(bodies_.size()));
-            bodies_.push_back(b);
+            bodies_.push_back(std::move(b));
             Body &body = bodies_.back();
             if (released) {
                 activate(body, t_begin_, m.start);
