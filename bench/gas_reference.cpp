@@ -209,8 +209,8 @@ void Queue::sift(std::size_t k, Entry moved) {
 class Simulation {
   public:
     Simulation(const Gas &gas, std::vector<Collision> *log);
-    // Runs the events up to time `until` or until `collisions` collisions, whichever first.
-    void run(double until, std::uint64_t collisions);
+    // Runs the events up to time `until`.
+    void run(double until);
     // Every sphere moved to time t.
     Gas state(double t) const;
     Result result;
@@ -441,13 +441,12 @@ void Simulation::cross(std::uint32_t i, int axis) {
     scan(i, old, beyond_[2 * axis + (dir > 0)], 9, kNone);
 }
 
-void Simulation::run(double until, std::uint64_t collisions) {
+void Simulation::run(double until) {
     Result &out = result;
-    while (out.pair_collisions + out.wall_collisions < collisions) {
+    while (true) {
         const double t = queue_.top_time();
         if (t > until || t == kInf) break;
         const std::uint32_t i = queue_.top();
-        out.time = t;
         Event &e = e_[i];
         advance(i, t);
         if (e.pair_time <= e.move_time) {
@@ -505,16 +504,9 @@ Gas Simulation::state(double t) const {
 
 Result run(const Gas &gas, double T, std::vector<Collision> *log) {
     Simulation sim(gas, log);
-    sim.run(T, std::numeric_limits<std::uint64_t>::max());
+    sim.run(T);
     sim.result.time = T;
     sim.result.final_state = sim.state(T);
-    return std::move(sim.result);
-}
-
-Result run_collisions(const Gas &gas, std::uint64_t collisions, std::vector<Collision> *log) {
-    Simulation sim(gas, log);
-    sim.run(kInf, collisions);
-    sim.result.final_state = sim.state(sim.result.time);
     return std::move(sim.result);
 }
 

@@ -56,9 +56,4 @@ struct Result {
 // With `log`, every collision is appended to it in time order (for checks: it allocates).
 Result run(const Gas &gas, double T, std::vector<Collision> *log = nullptr);
 
-// Runs the gas until `collisions` collisions (pair and wall) have happened, for timing: the
-// result's time is the last one's.
-Result run_collisions(const Gas &gas, std::uint64_t collisions,
-                      std::vector<Collision> *log = nullptr);
-
 } // namespace animator::bench::reference

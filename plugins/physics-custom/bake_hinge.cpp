@@ -340,7 +340,7 @@ EventBake::hinge_pendulum(const Body &b, const Obstacle &ob, const glm::dvec3 &u
     if (glm::length(I * u - Iu * u) > 1e-9 * Iu) return nullptr;
     const double Ih = Iu + m * rho * rho;
     const double rate0 = glm::dot(u, I * w + m * glm::cross(r0, v)) / Ih;
-    const Material mo = materials_[ob.model];
+    const Material &mo = materials_[ob.model];
     mu = combined_friction(b.material.friction, mo.friction);
     const glm::dvec3 J = m * (rate0 * glm::cross(u, r0) - v);
     const double Jn = glm::dot(J, n), tiny = 1e-12 * m * std::max(1.0, glm::length(v));

@@ -285,7 +285,9 @@ void EventBake::predict(int i, double now) {
         const Body &o = bodies_[static_cast<size_t>(j)];
         if (!o.active) return;
         if (free_sphere && o.free_sphere()) {
-            // Two free spheres (the gas): neither carries the other nor tips over an edge.
+            // Two free spheres (the gas): neither carries the other nor tips over an edge. (Kept
+            // apart from the general branch below: folded into it, the 10,000-ball gas took 5%
+            // more time.)
             if (!is_ignored(i, j)) {
                 ++tested;
                 const Path there = from_now(o, now);
@@ -321,7 +323,7 @@ void EventBake::predict(int i, double now) {
                 // exact in the frame of the one that translates (c: their contact, if any)
             } else if (b.shape && o.shape && !b.carried() && !o.carried()) { // both translate
                 if (!(b.still() && o.still()))
-                    c = mesh_pair(*b.shape, from_now(b, now), *o.shape, from_now(o, now), limit);
+                    c = mesh_pair(*b.shape, here, *o.shape, from_now(o, now), limit);
             } else if (TurningView vb, vo; (b.turning() || o.turning()) &&
                                            turning_view(i, now, vb) && turning_view(j, now, vo)) {
                 // Both turn, or one turns and the other translates without turning (a box with

@@ -200,7 +200,7 @@ ImpulseBody EventBake::sphere_body(const Body &b, double mass, const glm::dvec3 
 bool EventBake::respond_to_obstacle(int i, const Obstacle &o, const glm::dvec3 &n,
                                     const glm::dvec3 &v, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
-    const Material mo = materials_[o.model];
+    const Material &mo = materials_[o.model];
     const double e = combined_restitution(b.material.restitution, mo.restitution),
                  mu = combined_friction(b.material.friction, mo.friction);
     const ImpulseBody a = sphere_body(b, 1.0, v, n, t); // against infinite mass: any mass
@@ -395,7 +395,7 @@ double EventBake::microcollision_speed(const Body &b, double g_n, double t) cons
 bool EventBake::respond_turning_to_obstacle(int i, const Obstacle &o, const Contact &contact,
                                             const std::vector<glm::dvec3> &points, double t) {
     Body &b = bodies_[static_cast<size_t>(i)];
-    const Material mo = materials_[o.model];
+    const Material &mo = materials_[o.model];
     const double e = combined_restitution(b.material.restitution, mo.restitution),
                  mu = combined_friction(b.material.friction, mo.friction);
     const glm::dvec3 n = contact.normal, c = b.path.at(t - b.t0);
