@@ -18,6 +18,8 @@ struct Options {
     std::string only;                // one section, or all
     std::filesystem::path out;       // where the CSVs go
     int runs = 5;                    // timed runs per point; the median is reported
+    std::vector<int> sizes;          // the gas's numbers of balls, instead of its own
+    std::vector<std::string> backends; // the gas's backends (and reference), instead of all
 };
 
 // Seconds since `start`.

@@ -133,8 +133,9 @@ double count(const Timeline &t, const char *name) {
 
 void run_gas(const Options &o) {
     const std::vector<int> sizes =
-        o.quick ? std::vector<int>{100, 300}
-                : std::vector<int>{100, 300, 1000, 3000, 10000, 100000};
+        !o.sizes.empty() ? o.sizes
+        : o.quick        ? std::vector<int>{100, 300}
+                         : std::vector<int>{100, 300, 1000, 3000, 10000, 100000};
     // Bullet to 10,000 balls: at 100,000 a run would take minutes and gigabytes for 25 steps.
     const int bullet_up_to = 10000;
     // Bullet's step for the gas: the largest of 1/240 .. 1/4000 s keeping its energy error near
@@ -168,7 +169,10 @@ void run_gas(const Options &o) {
         for (size_t b = 0; b < backends.size(); ++b) {
             const std::string &backend = backends[b];
             const bool bullet = backend == "physics.bullet", reference = backend == "reference";
-            if (bullet && n > bullet_up_to) continue;
+            if ((bullet && n > bullet_up_to) ||
+                (!o.backends.empty() &&
+                 std::find(o.backends.begin(), o.backends.end(), backend) == o.backends.end()))
+                continue;
             // About 4.7 collisions per ball per second at this density: physics.custom and the
             // reference run about 100,000 collisions (20,000 in a quick run); Bullet (about 3.5
             // us per ball and step at 1/1000 s here) at most that, and at most 2,500 / N s.

@@ -1,6 +1,8 @@
 // The reference gas (gas_reference.hpp says what it is and which techniques it uses).
 #include "gas_reference.hpp"
 
+#include "calendar_queue.hpp" // physics.custom's, which its gas lane uses too
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -31,180 +33,6 @@ struct Event {
     double move_time = kInf;
     int move = 0; // the axis; + 3 for a wall, where a crossing would leave the box
 };
-
-// The spheres' event times in order: a calendar queue (Brown, Commun. ACM 31, 1220 (1988)), in
-// the form event-driven codes use. Times are in buckets of width `width_`: those of the current
-// bucket in a small binary heap, those of the next `ring_` buckets in unsorted lists, the later
-// ones in one far list, spread into the buckets once per turn of the ring.
-class Queue {
-  public:
-    // Every sphere's time; `per_bucket`: about how many events a bucket should hold.
-    void init(const std::vector<double> &times, double per_bucket);
-    // The earliest time (infinite when there is none), and its sphere.
-    double top_time() {
-        while (heap_.empty())
-            if (!next_bucket()) return kInf;
-        return heap_[0].time;
-    }
-    std::uint32_t top() const { return heap_[0].sphere; }
-    void update(std::uint32_t i, double time);
-
-  private:
-    struct Entry {
-        double time;
-        std::uint32_t sphere;
-    };
-    static constexpr std::int64_t kNever = std::int64_t{1} << 62;
-    std::int64_t bucket(double t) const {
-        const double b = t / width_;
-        return b < 4e18 ? static_cast<std::int64_t>(b) : kNever;
-    }
-    bool next_bucket(); // false when every time left is infinite
-    void insert(std::uint32_t i, double time);
-    void link(std::uint32_t i, std::size_t list);
-    void unlink(std::uint32_t i);
-    void sift(std::size_t k, Entry moved);
-
-    double width_ = 1.0;
-    std::int64_t base_ = 0;            // the heap's bucket
-    std::size_t ring_ = 1;             // buckets in the ring
-    std::size_t listed_ = 0, far_ = 0; // spheres in lists, in the far list
-    std::vector<Entry> heap_;          // room for every sphere reserved: it never allocates
-    std::vector<double> time_;         // each sphere's time
-    std::vector<std::int32_t> where_;  // its heap slot; or -1 - its list (ring_: far)
-    std::vector<std::uint32_t> head_, prev_, next_; // the lists
-};
-
-void Queue::init(const std::vector<double> &times, double per_bucket) {
-    const std::size_t n = times.size();
-    double sum = 0.0;
-    std::size_t finite = 0;
-    for (double t : times)
-        if (t < 1e300) sum += t, ++finite;
-    // Events come at about n / mean(time) per unit time; the ring spans 8 mean times.
-    const double mean = finite ? sum / static_cast<double>(finite) : 1.0;
-    width_ = mean > 0.0 ? per_bucket * mean / static_cast<double>(n) : 1.0;
-    ring_ = std::max<std::size_t>(
-        16, static_cast<std::size_t>(8.0 * static_cast<double>(n) / per_bucket));
-    heap_.reserve(n);
-    time_.assign(n, kInf);
-    where_.assign(n, 0);
-    head_.assign(ring_ + 1, kNone);
-    prev_.assign(n, kNone);
-    next_.assign(n, kNone);
-    base_ = 0;
-    for (std::uint32_t i = 0; i < n; ++i) insert(i, times[i]);
-}
-
-void Queue::link(std::uint32_t i, std::size_t list) {
-    where_[i] = -1 - static_cast<std::int32_t>(list);
-    prev_[i] = kNone;
-    next_[i] = head_[list];
-    if (next_[i] != kNone) prev_[next_[i]] = i;
-    head_[list] = i;
-    ++listed_;
-    far_ += list == ring_;
-}
-
-void Queue::unlink(std::uint32_t i) {
-    const std::size_t list = static_cast<std::size_t>(-1 - where_[i]);
-    if (prev_[i] != kNone)
-        next_[prev_[i]] = next_[i];
-    else
-        head_[list] = next_[i];
-    if (next_[i] != kNone) prev_[next_[i]] = prev_[i];
-    --listed_;
-    far_ -= list == ring_;
-}
-
-void Queue::insert(std::uint32_t i, double time) {
-    time_[i] = time;
-    const std::int64_t b = bucket(time);
-    if (b <= base_) {
-        heap_.emplace_back();
-        sift(heap_.size() - 1, {time, i});
-    } else if (b < base_ + static_cast<std::int64_t>(ring_)) {
-        link(i, static_cast<std::size_t>(b % static_cast<std::int64_t>(ring_)));
-    } else {
-        link(i, ring_);
-    }
-}
-
-void Queue::update(std::uint32_t i, double time) {
-    if (where_[i] >= 0) { // in the heap: take it out (the last entry fills its place)
-        const std::size_t k = static_cast<std::size_t>(where_[i]);
-        if (bucket(time) <= base_) {
-            time_[i] = time;
-            sift(k, {time, i});
-            return;
-        }
-        const Entry last = heap_.back();
-        heap_.pop_back();
-        if (k < heap_.size()) sift(k, last);
-    } else {
-        unlink(i);
-    }
-    insert(i, time);
-}
-
-// The heap is empty: the next bucket's events go into it. Once per turn of the ring, the far
-// list's events that are now within the ring move into it.
-bool Queue::next_bucket() {
-    const auto ring = static_cast<std::int64_t>(ring_);
-    if (listed_ == far_) { // the ring is empty: on to the turn of the far list's earliest
-        std::int64_t first = kNever;
-        for (std::uint32_t k = head_[ring_]; k != kNone; k = next_[k])
-            first = std::min(first, bucket(time_[k]));
-        if (first >= kNever) return false;
-        base_ = std::max(base_, first / ring * ring - 1);
-    }
-    ++base_;
-    if (base_ % ring == 0) {
-        std::uint32_t k = head_[ring_];
-        head_[ring_] = kNone;
-        listed_ -= far_;
-        far_ = 0;
-        while (k != kNone) {
-            const std::uint32_t next = next_[k];
-            insert(k, time_[k]);
-            k = next;
-        }
-    }
-    const auto list = static_cast<std::size_t>(base_ % ring);
-    std::uint32_t k = head_[list];
-    head_[list] = kNone;
-    while (k != kNone) {
-        const std::uint32_t next = next_[k];
-        --listed_;
-        heap_.emplace_back();
-        sift(heap_.size() - 1, {time_[k], k});
-        k = next;
-    }
-    return true;
-}
-
-// Moves `moved` from heap slot k up or down to its place.
-void Queue::sift(std::size_t k, Entry moved) {
-    while (k > 0) {
-        const std::size_t up = (k - 1) / 2;
-        if (heap_[up].time <= moved.time) break;
-        heap_[k] = heap_[up];
-        where_[heap_[k].sphere] = static_cast<std::int32_t>(k);
-        k = up;
-    }
-    const std::size_t size = heap_.size();
-    for (;;) {
-        std::size_t down = 2 * k + 1;
-        if (down >= size) break;
-        if (down + 1 < size && heap_[down + 1].time < heap_[down].time) ++down;
-        if (heap_[down].time >= moved.time) break;
-        heap_[k] = heap_[down];
-        where_[heap_[k].sphere] = static_cast<std::int32_t>(k);
-        k = down;
-    }
-    heap_[k] = moved;
-    where_[moved.sphere] = static_cast<std::int32_t>(k);
-}
 
 class Simulation {
   public:
@@ -241,7 +69,7 @@ class Simulation {
     std::vector<std::uint32_t> prev_;       // the previous sphere in its cell, or kNone
     std::int64_t around_[27];               // the offsets of the 27 cells around a cell
     std::int64_t beyond_[6][9]; // after a crossing along axis a, way d: the 9 new, at 2a + d
-    Queue queue_;
+    physics_custom::CalendarQueue queue_;
 };
 
 Simulation::Simulation(const Gas &gas, std::vector<Collision> *log)
@@ -305,7 +133,7 @@ Simulation::Simulation(const Gas &gas, std::vector<Collision> *log)
         predict_move(i);
         times[i] = std::min(e_[i].pair_time, e_[i].move_time);
     }
-    queue_.init(times, kPerBucket);
+    queue_.init(times, 0.0, kPerBucket);
 }
 
 void Simulation::advance(std::uint32_t i, double t) {

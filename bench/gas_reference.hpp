@@ -20,7 +20,8 @@
 //   by per-sphere collision counters (a pair event predicted while the partner's counter was c is
 //   stale once that counter moved on);
 // - a calendar queue of the spheres' event times (Brown, Commun. ACM 31, 1220 (1988)), indexed by
-//   sphere: buckets of time in unsorted lists, the current one in a small binary heap;
+//   sphere: buckets of time in unsorted lists, the current one in a small binary heap (physics.custom's
+//   calendar_queue.hpp, which its gas lane uses too: the two are compared with the same queue);
 // - nothing is allocated in the event loop.
 #pragma once
 

@@ -108,7 +108,7 @@ namespace {
 int usage(const char *message) {
     if (message) std::cerr << "animator-bench: " << message << "\n";
     std::cerr << "usage: animator-bench [--quick] [--only exact|rest|gas|mesh|long|skip] [--out DIR] "
-                 "[--runs N]\n";
+                 "[--runs N] [--sizes N,N,...] [--backends reference,physics.custom,physics.bullet]\n";
     return 2;
 }
 
@@ -130,6 +130,16 @@ int main(int argc, char **argv) {
         } else if (a == "--runs" && has_value) {
             o.runs = std::atoi(argv[++i]);
             if (o.runs < 1) return usage("--runs needs a positive number");
+        } else if (a == "--sizes" && has_value) {
+            std::stringstream list(argv[++i]);
+            for (std::string n; std::getline(list, n, ',');) {
+                const int size = std::atoi(n.c_str());
+                if (size < 2) return usage("--sizes needs numbers of balls of 2 or more");
+                o.sizes.push_back(size);
+            }
+        } else if (a == "--backends" && has_value) {
+            std::stringstream list(argv[++i]);
+            for (std::string b; std::getline(list, b, ',');) o.backends.push_back(b);
         } else if (a == "--help" || a == "-h") {
             usage(nullptr);
             return 0;

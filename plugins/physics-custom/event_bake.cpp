@@ -32,7 +32,8 @@ void EventBake::run() {
                 try_settle_mesh(static_cast<int>(i), t_begin_);
         }
     settle_stacks(t_begin_);
-    for (size_t i = 0; i < bodies_.size(); ++i) predict(static_cast<int>(i), t_begin_);
+    if (!enter_gas_lane())
+        for (size_t i = 0; i < bodies_.size(); ++i) predict(static_cast<int>(i), t_begin_);
     advance_to_end();
 }
 
@@ -43,7 +44,7 @@ void EventBake::run() {
 bool EventBake::continues(const ani_physics_scene &scene, double t_begin,
                           const BakeOptions &options) const {
     return t_begin == t_end_ && options.broad_phase == options_.broad_phase &&
-           scene_print(scene) == fingerprint_;
+           options.gas_lane == options_.gas_lane && scene_print(scene) == fingerprint_;
 }
 
 // The next slice, [t_end of the last, t_end]: the events predicted beyond the last slice's
@@ -69,6 +70,10 @@ void EventBake::set_horizon() {
 
 // Processes the events up to t_end and reports every body's motion to t_end.
 void EventBake::advance_to_end() {
+    if (gas_ && run_gas_lane()) { // to t_end, or to an event it hands to the loop below
+        report_counts();
+        return;
+    }
     std::size_t events_at_once = 0;
     double last_event = -kNever;
     while (!bodies_.empty() && queue_->top_time() <= t_end_) {
@@ -256,6 +261,8 @@ void EventBake::report_counts() {
         {"tips about an edge", count_.hinges},
         {"pair predictions reused", count_.reused},
         {"bodies scanned after contacts", count_.scanned},
+        {"gas lane events", count_.lane},
+        {"gas lane hand-offs", count_.handoffs},
     };
     // Each slice reports its own work: the host adds them up.
     for (size_t k = 0; k < std::size(counts); ++k) {

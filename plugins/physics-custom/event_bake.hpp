@@ -19,6 +19,8 @@ enum class BroadPhase { kAutomatic = 0, kGrid = 1, kAllPairs = 2 };
 
 struct BakeOptions {
     BroadPhase broad_phase = BroadPhase::kAutomatic;
+    // A scene of plain free spheres in the grid is baked by the gas lane (gas_lane.hpp).
+    bool gas_lane = true;
 };
 
 // What a backend instance keeps from one bake call to the next: the editor bakes in slices,

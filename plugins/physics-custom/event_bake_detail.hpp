@@ -7,6 +7,7 @@
 
 #include "event_queue.hpp"
 #include "free_motion.hpp"
+#include "gas_lane.hpp"
 #include "grid.hpp"
 #include "impulse.hpp"
 #include "keyed_contact.hpp"
@@ -482,6 +483,13 @@ class EventBake {
     bool approaching(const Body &b, const TurningContact &c, double now,
                      const Body *other = nullptr) const;
 
+    // The gas lane: a scene of plain free spheres baked by the compact engine (bake_gas.cpp).
+    class GasSink;
+    bool enter_gas_lane();
+    bool run_gas_lane();
+    void leave_gas_lane(double t);
+    void fold_gas_counts();
+
     // Pairs that overlap when they start to collide (bake_overlaps.cpp).
     void find_overlaps(int i, double t);
     std::optional<Seen> overlap_with_obstacle(const Body &b, const Obstacle &o, double t) const;
@@ -627,6 +635,8 @@ class EventBake {
     std::unique_ptr<UniformGrid> grid_; // with many bodies
     std::vector<int> outside_;          // active bodies not in the grid (all of them without one)
     std::unique_ptr<EventQueue> queue_;
+    std::unique_ptr<GasLane> gas_; // while the gas lane bakes every body (bake_gas.cpp)
+    GasLane::Counts gas_counted_;  // its counts already in count_
     std::vector<Predicted> predicted_; // each body's earliest event
     // Pairs left alone until they are apart: overlapping keyed models, grazing contacts. Keys:
     // (body, other body) with the lower first, or (body, -1 - obstacle).
@@ -638,14 +648,14 @@ class EventBake {
     struct {
         std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0,
                     collisions = 0, advancements = 0, releases = 0, mesh_tests = 0, hinges = 0,
-                    reused = 0, scanned = 0;
+                    reused = 0, scanned = 0, lane = 0, handoffs = 0;
     } count_;
     // The turning pairs predicted at the latest time, by (lower index, higher index).
     std::map<std::pair<int, int>, PairMemo> pair_memos_;
     std::size_t reports_ = 0;
     std::size_t sleepers_ = 0;         // bodies asleep on others
     std::size_t riders_ = 0;           // bodies on carriers, or carried
-    std::array<double, 12> counted_{}; // the counts reported by the earlier slices
+    std::array<double, 14> counted_{}; // the counts reported by the earlier slices
     std::vector<bool> is_body_;        // per model: a body (the others are reported each slice)
     double horizon_ = 0.0;             // how far predictions look
     ScenePrint fingerprint_;           // the scene the bake goes on with

@@ -39,6 +39,9 @@ class UniformGrid {
     UniformGrid(const Box &region, double cell);
 
     double cell_size() const { return cell_; }
+    const glm::dvec3 &origin() const { return origin_; }
+    const Cell &counts() const { return counts_; }
+    bool dense() const { return !dense_.empty(); } // cells in an array, not hashed
     Cell cell_of(const glm::dvec3 &p) const;
     bool inside(const Cell &c) const;
     Box bounds(const Cell &c) const;

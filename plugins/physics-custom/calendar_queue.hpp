@@ -1,0 +1,61 @@
+// A calendar queue of event times, one per item (a sphere), for the event-driven gases: the gas
+// lane of physics.custom (gas_lane.hpp) and the benchmark's reference gas. Brown, Commun. ACM 31,
+// 1220 (1988), in the form event-driven codes use: times in buckets of width `width_`, those of
+// the current bucket in a small binary heap, those of the next `ring_` buckets in unsorted
+// lists, later ones in one far list spread into the ring once per turn. Updating an item is O(1)
+// on average when a bucket holds a few events; ties go to the lower item, so a run is
+// deterministic. Nothing is allocated after init.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace physics_custom {
+
+class CalendarQueue {
+  public:
+    // Every item's time (infinite: none), none before `now`; `per_bucket`: about how many
+    // events a bucket holds.
+    void init(const std::vector<double> &times, double now, double per_bucket = 16.0);
+    // The earliest time (infinite when there is none), and its item.
+    double top_time() {
+        while (heap_.empty())
+            if (!next_bucket()) return std::numeric_limits<double>::infinity();
+        return heap_[0].time;
+    }
+    std::uint32_t top() const { return heap_[0].item; }
+    void update(std::uint32_t i, double time);
+
+  private:
+    struct Entry {
+        double time;
+        std::uint32_t item;
+        bool before(const Entry &o) const {
+            return time < o.time || (time == o.time && item < o.item);
+        }
+    };
+    static constexpr std::uint32_t kNone = 0xffffffffu;
+    static constexpr std::int64_t kNever = std::int64_t{1} << 62;
+    std::int64_t bucket(double t) const {
+        const double b = t / width_;
+        return b < 4e18 ? static_cast<std::int64_t>(b) : kNever;
+    }
+    bool next_bucket(); // false when every time left is infinite
+    void insert(std::uint32_t i, double time);
+    void link(std::uint32_t i, std::size_t list);
+    void unlink(std::uint32_t i);
+    void sift(std::size_t k, Entry moved);
+
+    double width_ = 1.0;
+    std::int64_t base_ = 0;            // the heap's bucket
+    std::size_t ring_ = 1;             // buckets in the ring
+    std::size_t listed_ = 0, far_ = 0; // items in lists, in the far list
+    std::vector<Entry> heap_;          // room for every item reserved: it never allocates
+    std::vector<double> time_;         // each item's time
+    std::vector<std::int32_t> where_;  // its heap slot; or -1 - its list (ring_: far)
+    std::vector<std::uint32_t> head_, prev_, next_; // the lists
+};
+
+} // namespace physics_custom

@@ -1,0 +1,490 @@
+// The gas lane (gas_lane.hpp says what it takes and how it is fast). Every time and response is
+// the general engine's function: sphere_sphere's stable root, first_exit's cell crossings,
+// sphere_triangle, elastic_exchange and reflect, on the paths moved to the event's time as the
+// general engine moves them.
+#include "gas_lane.hpp"
+
+#include "grid.hpp"
+#include "response.hpp"
+
+#include <animator/plugin_cpp.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace physics_custom {
+
+namespace {
+glm::dvec3 vec(const double *x) {
+    return {x[0], x[1], x[2]};
+}
+void put(double *x, const glm::dvec3 &v) {
+    x[0] = v.x;
+    x[1] = v.y;
+    x[2] = v.z;
+}
+ani_vec3 ani(const glm::dvec3 &v) {
+    return {v.x, v.y, v.z};
+}
+} // namespace
+
+GasLane::GasLane(double radius, const Grid &grid, std::vector<Triangle> triangles,
+                 const std::vector<Start> &spheres, double now)
+    : r_(radius), reach2_((radius + radius) * (radius + radius)), grid_(grid),
+      triangles_(std::move(triangles)) {
+    const std::size_t n = spheres.size();
+    s_.resize(n);
+    e_.assign(n, Event{});
+    mass_.resize(n);
+    model_.resize(n);
+    motion_.resize(n);
+    contact_.resize(n);
+    prev_.assign(n, kNone);
+    int64_t cells = 1;
+    for (int a = 0; a < 3; ++a) {
+        stride_[a] = cells;
+        cells *= grid_.counts[a] + 2;
+    }
+    head_.assign(static_cast<std::size_t>(cells), kNone);
+    // (The general grid's order: x fastest, then y, then z.)
+    int q = 0;
+    for (int z = -1; z <= 1; ++z)
+        for (int y = -1; y <= 1; ++y)
+            for (int x = -1; x <= 1; ++x)
+                around_[q++] = x * stride_[0] + y * stride_[1] + z * stride_[2];
+    for (int a = 0; a < 3; ++a)
+        for (int d = 0; d < 2; ++d) {
+            const int64_t s1 = stride_[(a + 1) % 3], s2 = stride_[(a + 2) % 3];
+            q = 0;
+            for (int d1 = -1; d1 <= 1; ++d1)
+                for (int d2 = -1; d2 <= 1; ++d2)
+                    beyond_[2 * a + d][q++] = (d ? 1 : -1) * stride_[a] + d1 * s1 + d2 * s2;
+        }
+    // Each cell's triangles: those whose box reaches the cell's widened by the radius (and a
+    // little more, for rounding), in the general engine's order.
+    std::vector<std::vector<uint32_t>> lists(static_cast<std::size_t>(cells));
+    const double pad = r_ * (1.0 + 1e-6);
+    for (uint32_t k = 0; k < triangles_.size(); ++k) {
+        const Box &box = triangles_[k].box;
+        std::array<int64_t, 3> lo{}, hi{};
+        for (int a = 0; a < 3; ++a) {
+            const auto index = [&](double x) {
+                return static_cast<int64_t>(
+                    std::clamp(std::floor((x - grid_.origin[a]) / grid_.cell), -1.0,
+                               static_cast<double>(grid_.counts[a])));
+            };
+            lo[a] = index(box.lo[a] - pad);
+            hi[a] = index(box.hi[a] + pad);
+        }
+        for (int64_t z = lo[2]; z <= hi[2]; ++z)
+            for (int64_t y = lo[1]; y <= hi[1]; ++y)
+                for (int64_t x = lo[0]; x <= hi[0]; ++x)
+                    lists[static_cast<std::size_t>(cell_index({x, y, z}))].push_back(k);
+    }
+    near_from_.resize(static_cast<std::size_t>(cells) + 1);
+    for (std::size_t c = 0; c < lists.size(); ++c) {
+        near_from_[c] = static_cast<uint32_t>(near_.size());
+        near_.insert(near_.end(), lists[c].begin(), lists[c].end());
+    }
+    near_from_.back() = static_cast<uint32_t>(near_.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        const Start &st = spheres[i];
+        Sphere &p = s_[i];
+        put(p.x, st.p);
+        put(p.v, st.v);
+        p.t0 = st.t0;
+        p.count = 0;
+        mass_[i] = st.mass;
+        model_[i] = st.model;
+        motion_[i] = st.motion;
+        const glm::dvec3 c = at(p, now);
+        std::array<int64_t, 3> cell{};
+        for (int a = 0; a < 3; ++a)
+            cell[a] =
+                static_cast<int64_t>(std::clamp(std::floor((c[a] - grid_.origin[a]) / grid_.cell),
+                                                -1.0, static_cast<double>(grid_.counts[a])));
+        place(static_cast<uint32_t>(i), cell);
+        link(static_cast<uint32_t>(i));
+    }
+    std::vector<double> times(n);
+    for (uint32_t i = 0; i < n; ++i) {
+        predict_pairs(i, now);
+        predict_move(i, now);
+        times[i] = std::min(e_[i].pair_time, e_[i].move_time);
+    }
+    queue_.init(times, now);
+}
+
+glm::dvec3 GasLane::at(const Sphere &p, double t) const {
+    const double dt = t - p.t0;
+    return {p.x[0] + p.v[0] * dt, p.x[1] + p.v[1] * dt, p.x[2] + p.v[2] * dt};
+}
+
+int64_t GasLane::cell_index(const std::array<int64_t, 3> &c) const {
+    return (c[0] + 1) * stride_[0] + (c[1] + 1) * stride_[1] + (c[2] + 1) * stride_[2];
+}
+
+void GasLane::place(uint32_t i, const std::array<int64_t, 3> &c) {
+    Event &e = e_[i];
+    for (int a = 0; a < 3; ++a) e.cell[a] = static_cast<int32_t>(c[a]);
+    e.index = static_cast<uint32_t>(cell_index(c));
+    e.near_from = near_from_[e.index];
+    e.near_to = near_from_[e.index + 1];
+}
+
+void GasLane::link(uint32_t i) {
+    const std::size_t cell = e_[i].index;
+    Sphere &p = s_[i];
+    p.next = head_[cell];
+    if (p.next != kNone) prev_[p.next] = i;
+    prev_[i] = kNone;
+    head_[cell] = i;
+}
+
+void GasLane::unlink(uint32_t i) {
+    Sphere &p = s_[i];
+    if (prev_[i] != kNone)
+        s_[prev_[i]].next = p.next;
+    else
+        head_[e_[i].index] = p.next;
+    if (p.next != kNone) prev_[p.next] = prev_[i];
+}
+
+// The earliest collision of i with the spheres of the cells at `offsets` from its cell, if
+// earlier than the pair part of its event (`all`: that part starts afresh): sphere_sphere's
+// stable root, computed for every candidate without branches (they would be mispredicted).
+void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bool all) {
+    const Sphere &a = s_[i];
+    Event &e = e_[i];
+    if (all) {
+        e.pair_time = kInf;
+        e.partner = kNone;
+    }
+    const glm::dvec3 here = at(a, now);
+    const double x = here.x, y = here.y, z = here.z, vx = a.v[0], vy = a.v[1], vz = a.v[2];
+    double horizon = e.pair_time - now;
+    uint32_t partner = kNone, partner_count = 0;
+    std::size_t tests = 0;
+    // The cells' first spheres, fetched together (most cells hold one sphere or none).
+    const int64_t cell = e.index;
+    uint32_t first[27];
+    int m = 0;
+    for (int q = 0; q < count; ++q) {
+        const uint32_t k = head_[static_cast<std::size_t>(cell + offsets[q])];
+        if (k == kNone) continue;
+        __builtin_prefetch(&s_[k]);
+        first[m++] = k;
+    }
+    for (int q = 0; q < m; ++q)
+        for (uint32_t k = first[q]; k != kNone; k = s_[k].next) {
+            if (k == i) continue;
+            const Sphere &o = s_[k];
+            ++tests;
+            const double dt = now - o.t0;
+            // d = here - there, e = v - v_o, as sphere_sphere(here, r, there, r) has them.
+            const double dx = x - (o.x[0] + o.v[0] * dt), dy = y - (o.x[1] + o.v[1] * dt),
+                         dz = z - (o.x[2] + o.v[2] * dt);
+            const double ex = vx - o.v[0], ey = vy - o.v[1], ez = vz - o.v[2];
+            const double qa = ex * ex + ey * ey + ez * ez, qb = dx * ex + dy * ey + dz * ez,
+                         qc = dx * dx + dy * dy + dz * dz - reach2_;
+            const double disc = qb * qb - qa * qc;
+            const double root = qc / (-qb + std::sqrt(std::max(disc, 0.0)));
+            const double t = qc <= 0.0 ? 0.0 : root; // touching (or overlapping) and approaching
+            const bool earlier = (qb < 0.0) & (qc <= 0.0 || disc >= 0.0) & (t < horizon);
+            horizon = earlier ? t : horizon;
+            partner = earlier ? k : partner;
+            partner_count = earlier ? o.count : partner_count;
+        }
+    ++counts_.predictions;
+    counts_.done += tests;
+    if (all) counts_.skipped += s_.size() - 1 - tests;
+    if (partner != kNone) {
+        e.pair_time = now + horizon;
+        e.partner = partner;
+        e.partner_count = partner_count;
+    }
+}
+
+void GasLane::predict_pairs(uint32_t i, double now) {
+    scan(i, now, around_, 27, true);
+}
+
+// Its next move from now: out of its cell, or into a static model's triangle listed for its cell
+// before that (sphere_triangle, as the general engine's obstacles). The crossing is first_exit's
+// for a path without acceleration, written out: per axis, the face it moves towards, at
+// (face - p) / v, or at once when it is on that face or beyond it by rounding; ties go to the
+// lower axis.
+void GasLane::predict_move(uint32_t i, double now) {
+    const Sphere &p = s_[i];
+    Event &e = e_[i];
+    e.move_time = kInf;
+    e.triangle = kNone;
+    const glm::dvec3 c = at(p, now), v = vec(p.v);
+    if (v == glm::dvec3(0.0)) return; // still: it moves nowhere (the movers meet it)
+    double limit = kInf;
+    for (int a = 0; a < 3; ++a) {
+        if (v[a] == 0.0) continue;
+        const double cell = static_cast<double>(e.cell[a]) + (v[a] > 0.0 ? 1.0 : 0.0);
+        const double face = grid_.origin[a] + cell * grid_.cell;
+        const double t = (v[a] > 0.0 ? c[a] >= face : c[a] <= face) ? 0.0 : (face - c[a]) / v[a];
+        if (t < limit) {
+            limit = t;
+            e.axis = static_cast<int8_t>(a);
+            e.direction = static_cast<int8_t>(v[a] > 0.0 ? 1 : -1);
+        }
+    }
+    e.move_time = now + limit;
+    const uint32_t from = e.near_from, to = e.near_to;
+    if (from == to) return;
+    const Path here{c, v, glm::dvec3(0.0)};
+    Box reach = swept_box(here, limit);
+    reach.lo -= glm::dvec3(r_);
+    reach.hi += glm::dvec3(r_);
+    // Within r of a triangle's plane is where any contact with it starts (its edges and corners
+    // lie in the plane): a path that stays farther over [0, limit] (with a margin for rounding),
+    // or that leaves the plane from r away or more (to rounding: it has just bounced off it), meets
+    // none. Once a face is met, the triangles of the same plane (the other half of a box's side)
+    // are met no earlier. A path that meets the plane outside the triangle meets its edges or
+    // corners no earlier than the plane: tested last, and only when that is soon enough.
+    const double far = r_ * (1.0 + 1e-9) + 1e-12, off = r_ * (1.0 - 1e-9);
+    const Triangle *met = nullptr;
+    uint32_t later[16];
+    double plane_at[16];
+    int deferred = 0;
+    const auto offer = [&](uint32_t k, const Contact &hit) {
+        limit = hit.t;
+        e.move_time = now + hit.t;
+        e.triangle = k;
+        contact_[i] = hit;
+    };
+    for (uint32_t k = from; k < to; ++k) {
+        const Triangle &tri = triangles_[near_[k]];
+        if (!reach.overlaps(tri.box)) continue;
+        const glm::dvec3 &n = tri.normal;
+        if (n == glm::dvec3(0.0)) {
+            ++counts_.done;
+            if (auto hit = sphere_triangle(here, r_, tri.a, tri.b, tri.c, limit))
+                offer(near_[k], *hit);
+            continue;
+        }
+        const double d0 = glm::dot(n, c) - tri.offset, vn = glm::dot(n, v);
+        const double side = d0 > 0.0 ? 1.0 : -1.0, away = side * d0, closing = -side * vn;
+        if (away + std::min(-closing * limit, 0.0) > far || (closing <= 0.0 && away >= off))
+            continue;
+        if (met && n == met->normal && tri.offset == met->offset) continue;
+        ++counts_.done;
+        if (away > r_ && closing > 0.0) {
+            // sphere_triangle's common case written out: the plane at (away - r) / closing, met
+            // inside the triangle (sphere_triangle's test).
+            const double t = (away - r_) / closing;
+            if (!(t <= limit)) continue;
+            const glm::dvec3 normal = side * n, q = here.at(t) - r_ * normal;
+            const glm::dvec3 corners[3] = {tri.a, tri.b, tri.c};
+            bool inside = true;
+            for (int j = 0; j < 3 && inside; ++j) {
+                const glm::dvec3 &a = corners[j], &b = corners[(j + 1) % 3];
+                inside = glm::dot(n, glm::cross(b - a, q - a)) >= 0.0;
+            }
+            if (inside) {
+                offer(near_[k], Contact{t, normal, here.at(t) - normal * r_});
+                met = &tri;
+                continue;
+            }
+            if (deferred < 16) {
+                later[deferred] = near_[k];
+                plane_at[deferred++] = t;
+                continue;
+            }
+        }
+        if (auto hit = sphere_triangle(here, r_, tri.a, tri.b, tri.c, limit)) {
+            offer(near_[k], *hit);
+            met = nullptr;
+        }
+    }
+    for (int k = 0; k < deferred; ++k) {
+        if (plane_at[k] > limit) continue;
+        const Triangle &tri = triangles_[later[k]];
+        if (auto hit = sphere_triangle(here, r_, tri.a, tri.b, tri.c, limit)) offer(later[k], *hit);
+    }
+}
+
+void GasLane::schedule(uint32_t i) {
+    queue_.update(i, std::min(e_[i].pair_time, e_[i].move_time));
+}
+
+// The general engine's test for a contact without speed along its normal (EventBake::grazing):
+// it leaves such a pair alone until apart, which the lane does not do.
+bool GasLane::grazing(const glm::dvec3 &relative, const glm::dvec3 &n) const {
+    return -glm::dot(relative, n) <= 1e-9 * std::max(1.0, glm::length(relative));
+}
+
+// Whether a sphere at c moving at v after a contact touches the plane of a triangle near it
+// without speed along its normal: the general engine would put it on that face
+// (EventBake::try_settle). Looser than that test: any such triangle of its cell.
+bool GasLane::left_touching(uint32_t i, const glm::dvec3 &c, const glm::dvec3 &v) const {
+    const Event &e = e_[i];
+    if (e.near_from == e.near_to) return false;
+    const double tol = 1e-6 * r_, still = 1e-9 * std::max(1.0, glm::length(v));
+    for (uint32_t k = e.near_from; k < e.near_to; ++k) {
+        const Triangle &tri = triangles_[near_[k]];
+        if (tri.normal == glm::dvec3(0.0)) continue;
+        if (std::abs(glm::dot(tri.normal, c) - tri.offset - r_) <= tol &&
+            std::abs(glm::dot(v, tri.normal)) <= still)
+            return true;
+    }
+    return false;
+}
+
+// Its segment up to t, from where it started or from where this slice starts
+// (EventBake::close_segment).
+void GasLane::emit(uint32_t i, double t, Sink &sink) const {
+    const Sphere &p = s_[i];
+    const double from = std::max(p.t0, t_begin_);
+    if (t <= from && !(t == t_end_ && from == t_end_)) return;
+    ani_motion_segment s{};
+    s.model = model_[i];
+    s.motion = motion_[i];
+    s.t0 = from;
+    s.t1 = t;
+    s.p0 = ani(from == p.t0 ? vec(p.x) : at(p, from));
+    s.v0 = ani(vec(p.v));
+    sink.segment(s);
+}
+
+void GasLane::restart(uint32_t i, double t, const glm::dvec3 &v, Sink &sink) {
+    emit(i, t, sink);
+    Sphere &p = s_[i];
+    put(p.x, at(p, t));
+    put(p.v, v);
+    p.t0 = t;
+    ++p.count;
+    motion_[i] = ANI_MOTION_FREE;
+}
+
+// Two spheres meet at t: the elastic exchange between their masses along the line of centres
+// (EventBake::collide_bodies). False, changing nothing, when the general engine would do other.
+bool GasLane::collide(uint32_t i, uint32_t j, double t, Sink &sink) {
+    const glm::dvec3 ci = at(s_[i], t), cj = at(s_[j], t), between = ci - cj;
+    const glm::dvec3 n = glm::length(between) > 0.0 ? glm::normalize(between) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 v = vec(s_[i].v), vo = vec(s_[j].v);
+    if (grazing(v - vo, n)) return false;
+    const auto [va, vb] = elastic_exchange(mass_[i], v, mass_[j], vo, n);
+    if (left_touching(i, ci, va) || left_touching(j, cj, vb)) return false;
+    ani_collision_event ev{};
+    ev.t = t;
+    ev.a = model_[i];
+    ev.b = model_[j];
+    ev.normal = ani(n);
+    ev.point = ani(ci - n * r_);
+    ev.speed = std::max(0.0, -glm::dot(v - vo, n));
+    restart(i, t, va, sink);
+    restart(j, t, vb, sink);
+    sink.collision(ev);
+    return true;
+}
+
+// A sphere meets a static model at t: the reflection (EventBake::collide_obstacle).
+bool GasLane::bounce(uint32_t i, double t, Sink &sink) {
+    const Event &e = e_[i];
+    const Contact &contact = contact_[i];
+    const glm::dvec3 v = vec(s_[i].v), n = contact.normal;
+    if (grazing(v, n)) return false;
+    const glm::dvec3 v1 = reflect(v, n);
+    if (left_touching(i, at(s_[i], t), v1)) return false;
+    ani_collision_event ev{};
+    ev.t = t;
+    ev.a = model_[i];
+    ev.b = triangles_[e.triangle].model;
+    ev.normal = ani(n);
+    ev.point = ani(contact.point);
+    ev.speed = std::max(0.0, -glm::dot(v, n));
+    restart(i, t, v1, sink);
+    sink.collision(ev);
+    return true;
+}
+
+// Into the next cell: only the 9 cells beyond it are new (the pair part found before bounds the
+// others). False, changing nothing, when that cell is outside the grid.
+bool GasLane::cross(uint32_t i, double now) {
+    const Event &e = e_[i];
+    std::array<int64_t, 3> c{e.cell[0], e.cell[1], e.cell[2]};
+    c[static_cast<std::size_t>(e.axis)] += e.direction;
+    for (int a = 0; a < 3; ++a)
+        if (c[a] < 0 || c[a] >= grid_.counts[a]) return false;
+    unlink(i);
+    place(i, c);
+    link(i);
+    ++counts_.crossings;
+    scan(i, now, beyond_[2 * e.axis + (e.direction > 0)], 9, false);
+    return true;
+}
+
+bool GasLane::run(double t_begin, double t_end, Sink &sink) {
+    t_begin_ = t_begin;
+    t_end_ = t_end;
+    while (true) {
+        const double t = queue_.top_time();
+        if (!(t <= t_end)) return true;
+        const uint32_t i = queue_.top();
+        Event &e = e_[i];
+        at_once_ = t == last_ ? at_once_ + 1 : 0;
+        last_ = t;
+        if (at_once_ > 100000 + 10 * s_.size())
+            throw ani::Failure(ANI_ERR_FAILED, "models keep colliding at t = " + std::to_string(t) +
+                                                   " s without moving apart");
+        if (e.pair_time <= e.move_time) {
+            const uint32_t j = e.partner;
+            if (s_[j].count != e.partner_count) { // j changed course since: predict i anew
+                ++counts_.stale;
+                predict_pairs(i, t);
+            } else {
+                if (!collide(i, j, t, sink)) {
+                    stopped_at_ = t;
+                    return false;
+                }
+                predict_pairs(i, t);
+                predict_move(i, t);
+                predict_pairs(j, t);
+                predict_move(j, t);
+                schedule(j);
+            }
+        } else if (e.triangle != kNone) {
+            if (!bounce(i, t, sink)) {
+                stopped_at_ = t;
+                return false;
+            }
+            predict_pairs(i, t);
+            predict_move(i, t);
+        } else {
+            if (!cross(i, t)) {
+                stopped_at_ = t;
+                return false;
+            }
+            predict_move(i, t);
+        }
+        schedule(i);
+        if (++counts_.events % 1024 == 0) sink.progress(t);
+    }
+}
+
+void GasLane::close(double t_begin, double t_end, Sink &sink) {
+    t_begin_ = t_begin;
+    t_end_ = t_end;
+    for (uint32_t i = 0; i < s_.size(); ++i) emit(i, t_end, sink);
+}
+
+GasLane::Start GasLane::state(std::size_t k) const {
+    const Sphere &p = s_[k];
+    Start st;
+    st.model = model_[k];
+    st.mass = mass_[k];
+    st.motion = motion_[k];
+    st.t0 = p.t0;
+    st.p = vec(p.x);
+    st.v = vec(p.v);
+    return st;
+}
+
+} // namespace physics_custom

@@ -1,0 +1,155 @@
+// The gas lane of the event-driven bake (physics.md, "The gas lane"; docs/performance.md, the
+// gas): a scene whose moving bodies are all plain free spheres (Dynamics on, no gravity, one
+// radius, the seed's elastic frictionless response with each other and with the static models,
+// no spin, nothing resting, overlapping or ignored) is baked by this compact engine instead of
+// the general one. It does the same exact mathematics (the same time-of-impact and response
+// functions, the same grid cells and cell-crossing times), so it finds the same events to
+// rounding, but with the techniques of the fast event-driven codes (Rapaport, "The Art of
+// Molecular Dynamics Simulation"; Smallenburg, Eur. Phys. J. E 45, 22 (2022)):
+// - each sphere's hot data in one 64-byte record (its segment's start, velocity and start time,
+//   a collision counter, the next sphere in its cell), the rest in arrays read only at events;
+// - one event per sphere (its earliest pair collision, and its next move: a cell crossing or a
+//   static model), made stale lazily by the partner's counter; a crossing keeps the pair part
+//   and scans only the 9 cells newly in reach;
+// - the static models' triangles listed per cell once, so a sphere far from every wall tests
+//   none;
+// - a calendar queue of the event times; nothing allocated in the loop.
+// When an event is one it does not take (a grazing contact, a sphere left touching a face
+// without speed along it, a sphere leaving the grid), it stops before it, and the general engine
+// goes on from there with every sphere where the lane left it (EventBake::leave_gas_lane).
+#pragma once
+
+#include "calendar_queue.hpp"
+#include "time_of_impact.hpp"
+
+#include <animator/physics.h>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace physics_custom {
+
+class GasLane {
+  public:
+    // A sphere as the lane takes it: its model, mass, how it reports its motion (FREE, or REST
+    // while it has not moved), and its segment (centre p at t0, velocity v).
+    struct Start {
+        uint32_t model = 0;
+        double mass = 1.0;
+        int motion = ANI_MOTION_FREE;
+        double t0 = 0.0;
+        glm::dvec3 p{0.0}, v{0.0};
+    };
+    // A triangle of a static model (world space) and that model.
+    struct Triangle {
+        glm::dvec3 a{0.0}, b{0.0}, c{0.0};
+        glm::dvec3 normal{0.0}; // unit (0 without area), its plane normal . x = offset
+        double offset = 0.0;
+        Box box;
+        uint32_t model = 0;
+    };
+    // The general engine's grid (grid.hpp): cells of side `cell` from `origin`, `counts` per axis.
+    struct Grid {
+        glm::dvec3 origin{0.0};
+        double cell = 1.0;
+        std::array<int64_t, 3> counts{1, 1, 1};
+    };
+    // What the lane reports, and the bake's progress.
+    class Sink {
+      public:
+        virtual ~Sink() = default;
+        virtual void segment(const ani_motion_segment &s) = 0;
+        virtual void collision(const ani_collision_event &e) = 0;
+        virtual void progress(double now) = 0; // every 1024 events (it may throw to cancel)
+    };
+    struct Counts {
+        std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0, events = 0;
+    };
+
+    // Every sphere must start inside the grid's cells and apart from the others and the
+    // triangles (the general engine's checks have run).
+    GasLane(double radius, const Grid &grid, std::vector<Triangle> triangles,
+            const std::vector<Start> &spheres, double now);
+
+    // Runs the events up to t_end (the segments from t_begin, where this slice starts). False
+    // when it stopped before an event it does not take, at stopped_at(): the general engine
+    // goes on from there.
+    bool run(double t_begin, double t_end, Sink &sink);
+    double stopped_at() const { return stopped_at_; }
+    // Reports every sphere's segment up to t_end (the end of the slice).
+    void close(double t_begin, double t_end, Sink &sink);
+    // A sphere now (its segment, as Start has it).
+    Start state(std::size_t k) const;
+    std::size_t size() const { return s_.size(); }
+    const Counts &counts() const { return counts_; }
+
+  private:
+    static constexpr uint32_t kNone = 0xffffffffu;
+    static constexpr double kInf = std::numeric_limits<double>::infinity();
+    // What a scan of neighbours reads of each: one cache line.
+    struct alignas(64) Sphere {
+        double x[3]; // centre at t0 (the start of its segment)
+        double v[3];
+        double t0;
+        uint32_t count; // its collisions: a pair event predicted at another count is stale
+        uint32_t next;  // the next sphere in its cell, or kNone
+    };
+    // A sphere's next event: the earlier of its earliest pair collision and its next move (a
+    // cell crossing, or a static model within its cell); and its cell, with that cell's
+    // triangles (near_[near_from, near_to)). One cache line, read at its events.
+    struct alignas(64) Event {
+        double pair_time = kInf;
+        uint32_t partner = kNone, partner_count = 0;
+        double move_time = kInf;
+        std::array<int32_t, 3> cell{};
+        uint32_t index = 0; // of its cell in head_
+        uint32_t near_from = 0, near_to = 0;
+        uint32_t triangle = kNone; // met at move_time, with contact_ (or kNone: a crossing)
+        int8_t axis = 0, direction = 0;
+    };
+
+    glm::dvec3 at(const Sphere &p, double t) const;
+    int64_t cell_index(const std::array<int64_t, 3> &c) const;
+    void place(uint32_t i, const std::array<int64_t, 3> &c); // in cell c (its Event's fields)
+    void scan(uint32_t i, double now, const int64_t *offsets, int count, bool all);
+    void predict_pairs(uint32_t i, double now);
+    void predict_move(uint32_t i, double now);
+    void schedule(uint32_t i);
+    bool left_touching(uint32_t i, const glm::dvec3 &c, const glm::dvec3 &v) const;
+    bool grazing(const glm::dvec3 &relative, const glm::dvec3 &n) const;
+    void restart(uint32_t i, double t, const glm::dvec3 &v, Sink &sink);
+    void emit(uint32_t i, double t, Sink &sink) const;
+    bool collide(uint32_t i, uint32_t j, double t, Sink &sink);
+    bool bounce(uint32_t i, double t, Sink &sink);
+    bool cross(uint32_t i, double now);
+    void unlink(uint32_t i);
+    void link(uint32_t i);
+
+    double r_, reach2_; // the radius, and (r + r)^2
+    Grid grid_;
+    std::vector<Triangle> triangles_;
+    std::vector<Sphere> s_;
+    std::vector<Event> e_;
+    std::vector<double> mass_;
+    std::vector<uint32_t> model_;
+    std::vector<int> motion_;
+    // The cells: a layer of empty cells around the grid's (no bounds tests); each cell's first
+    // sphere, each sphere's previous one, and each cell's triangles (CSR).
+    std::array<int64_t, 3> stride_{};
+    std::vector<uint32_t> head_, prev_;
+    std::vector<Contact> contact_; // each sphere's with the triangle of its event, if any
+    std::vector<uint32_t> near_from_, near_;
+    int64_t around_[27];
+    int64_t beyond_[6][9]; // after a crossing along axis a, way d: the 9 new cells, at 2a + d
+    CalendarQueue queue_;
+    Counts counts_;
+    double stopped_at_ = kInf;
+    double t_begin_ = 0.0, t_end_ = 0.0; // the slice's
+    std::size_t at_once_ = 0;
+    double last_ = -kInf;
+};
+
+} // namespace physics_custom
