@@ -77,8 +77,7 @@ void EventBake::classify() {
                 body.keyed_from = t_begin_;
                 body.active = true;
             }
-            body.path.p =
-                body.keyed() ? vec(keyed_state(*scene_, i, t_begin_, nullptr).center) : body.path.p;
+            body.path.p = body.keyed() ? vec(keyed(i, t_begin_, nullptr).center) : body.path.p;
 
             continue;
         }
@@ -114,13 +113,13 @@ bool EventBake::keys_hold_still(uint32_t i, double last) const {
             times.push_back(m.key_times[k]);
         }
     glm::dvec3 v0;
-    const ani_model_state first = keyed_state(*scene_, i, t_begin_, &v0);
+    const ani_model_state first = keyed(i, t_begin_, &v0);
     auto same = [](const ani_vec3 &a, const ani_vec3 &b) {
         return a.x == b.x && a.y == b.y && a.z == b.z;
     };
     for (double t : times) {
         glm::dvec3 v;
-        const ani_model_state s = keyed_state(*scene_, i, t, &v);
+        const ani_model_state s = keyed(i, t, &v);
         if (v != glm::dvec3(0.0) || !same(s.center, first.center) ||
             !same(s.angles, first.angles) || !same(s.scale, first.scale))
             return false;
@@ -130,6 +129,22 @@ bool EventBake::keys_hold_still(uint32_t i, double last) const {
 
 // The state a model is in at t: the host's cache where a resumed bake starts, otherwise its
 // keys' (physics.md: where and how fast it leaves them).
+ani_model_state EventBake::keyed(uint32_t m, double t, glm::dvec3 *velocity) const {
+    KeyedMemo &memo = keyed_memo_[m];
+    if (!(memo.t == t)) {
+        ani_vec3 v{};
+        if (scene_->evaluate_keyed(scene_->host_context, m, t, &memo.state, &v) != ANI_OK) {
+            memo.t = std::numeric_limits<double>::quiet_NaN();
+            throw ani::Failure(ANI_ERR_FAILED, std::string("cannot evaluate the keys of model '") +
+                                                   name_of(scene_->models[m]) + "'");
+        }
+        memo.t = t;
+        memo.velocity = vec(v);
+    }
+    if (velocity) *velocity = memo.velocity;
+    return memo.state;
+}
+
 ani_body_state EventBake::start_of(uint32_t i, double t) {
     const ani_physics_model &m = scene_->models[i];
     if (t == t_begin_ && m.start.motion != ANI_MOTION_KEYED) return m.start;
@@ -150,14 +165,14 @@ std::optional<double> EventBake::sphere_radius(uint32_t i, double t) {
     const ani_physics_model &m = scene_->models[i];
     if (!m.mesh || !m.mesh->is_sphere) return std::nullopt;
     if (glm::length(vec(m.mesh->bound_center)) > 1e-9 * m.mesh->bound_radius) return std::nullopt;
-    const ani_model_state s = keyed_state(*scene_, i, t, nullptr);
+    const ani_model_state s = keyed(i, t, nullptr);
     if (!uniform(s.scale)) return std::nullopt;
     return m.mesh->bound_radius * s.scale.x;
 }
 
 void EventBake::add_obstacle(uint32_t i, double t) {
     const ani_mesh_view &mesh = *scene_->models[i].mesh;
-    const ani_model_state state = keyed_state(*scene_, i, t, nullptr);
+    const ani_model_state state = keyed(i, t, nullptr);
     const glm::dmat3 linear = linear_part(state);
     Obstacle o;
     o.model = i;
@@ -253,7 +268,7 @@ void EventBake::activate(Body &b, double t, const ani_body_state &start) {
     }
     b.shape.reset();
     if (!b.sphere && !b.turns && t >= b.keys_end) { // its keys no longer turn or scale it
-        const ani_model_state state = keyed_state(*scene_, b.model, t, nullptr);
+        const ani_model_state state = keyed(b.model, t, nullptr);
         b.shape = build_shape(b.model, ani(glm::dvec3(0.0)), linear_part(state), glm::dvec3(0.0));
     }
     ++b.version;
@@ -269,7 +284,7 @@ void EventBake::stop(Body &b) {
 // The state a model leaves its keys with at time t (physics.md: where and how fast).
 ani_body_state EventBake::leaving_keys(uint32_t i, double t) {
     glm::dvec3 v;
-    const ani_model_state s = keyed_state(*scene_, i, t, &v);
+    const ani_model_state s = keyed(i, t, &v);
     ani_body_state state{};
     state.motion = ANI_MOTION_KEYED;
     state.center = s.center;
@@ -345,7 +360,7 @@ Pose EventBake::pose(const Body &b, double t) const {
         return p;
     }
     glm::dvec3 v;
-    const ani_model_state s = keyed_state(*scene_, b.model, t, &v);
+    const ani_model_state s = keyed(b.model, t, &v);
     Pose p;
     p.linear = b.turning() ? glm::dmat3(glm::mat3_cast(b.spin.at(t))) * b.scale : linear_part(s);
     if (b.keyed()) {
@@ -444,20 +459,17 @@ void EventBake::start_spin(Body &b, double t) {
                      vec(m.start_angular_velocity));
         return;
     }
-    const glm::dquat keyed =
-        orientation_of_angles(vec(keyed_state(*scene_, b.model, t, nullptr).angles));
+    const glm::dquat at_keys = orientation_of_angles(vec(keyed(b.model, t, nullptr).angles));
     if (b.keys_end <= 0.0) {
         Spin from_zero = b.spin;
-        from_zero.start(
-            0.0, orientation_of_angles(vec(keyed_state(*scene_, b.model, 0.0, nullptr).angles)),
-            b.material.angular_velocity);
+        from_zero.start(0.0, orientation_of_angles(vec(keyed(b.model, 0.0, nullptr).angles)),
+                        b.material.angular_velocity);
         b.spin.start(t, from_zero.at(t), from_zero.rate(t));
         return;
     }
     const double h = 1e-6 * std::max(1.0, std::abs(t));
-    const glm::dquat before =
-        orientation_of_angles(vec(keyed_state(*scene_, b.model, t - h, nullptr).angles));
-    b.spin.start(t, keyed, angular_velocity_between(before, keyed, h));
+    const glm::dquat before = orientation_of_angles(vec(keyed(b.model, t - h, nullptr).angles));
+    b.spin.start(t, at_keys, angular_velocity_between(before, at_keys, h));
 }
 
 // A body's angular velocity changes at t: its rotation segment so far is reported.
@@ -559,7 +571,7 @@ EventBake::TurningShape EventBake::turning_shape(uint32_t i, double t) const {
         throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, std::string("model '") + name_of(m) +
                                                          "' needs a finite mass > 0 to rotate");
     TurningShape shape;
-    const ani_vec3 s = keyed_state(*scene_, i, t, nullptr).scale;
+    const ani_vec3 s = keyed(i, t, nullptr).scale;
     shape.scale = glm::dmat3(glm::scale(glm::dmat4(1.0), vec(s)));
     std::vector<double> positions;
     for (uint32_t k = 0; k < m.mesh->vertex_count; ++k) {

@@ -39,7 +39,7 @@ std::optional<EventBake::Carried> EventBake::carried_motion(int j, double t) con
     ani_model_state first{};
     for (int k = 1; k <= 4; ++k) {
         glm::dvec3 v;
-        const ani_model_state s = keyed_state(*scene_, c.model, t + 0.2 * k * (end - t), &v);
+        const ani_model_state s = keyed(c.model, t + 0.2 * k * (end - t), &v);
         auto same = [](const ani_vec3 &a, const ani_vec3 &b) {
             return a.x == b.x && a.y == b.y && a.z == b.z;
         };
@@ -269,8 +269,8 @@ bool EventBake::sticks(const Body &b, int j, const glm::dvec3 &n, double t, doub
         const double tau = t + span * k / kSamples;
         const double t1 = std::clamp(tau - h, t, end - 3.0 * h), t2 = t1 + 2.0 * h;
         glm::dvec3 v1, v2;
-        keyed_state(*scene_, c.model, t1, &v1);
-        keyed_state(*scene_, c.model, t2, &v2);
+        keyed(c.model, t1, &v1);
+        keyed(c.model, t2, &v2);
         const glm::dvec3 f = (v2 - v1) / (t2 - t1) - b.free_a;
         const double fn = glm::dot(f, n);
         if (!(fn > 1e-9 * glm::length(b.free_a))) return false;
@@ -333,12 +333,10 @@ void EventBake::emit_carried(const Body &b, double t) {
     s.t1 = t;
     emit(s);
     const Body &c = bodies_[static_cast<size_t>(b.carried_by)];
-    const glm::dquat carrier =
-        orientation_of_angles(vec(keyed_state(*scene_, c.model, from, nullptr).angles));
-    const glm::dquat own =
-        b.carried_spin
-            ? b.spin.at(from)
-            : orientation_of_angles(vec(keyed_state(*scene_, b.model, from, nullptr).angles));
+    const glm::dquat carrier = orientation_of_angles(vec(keyed(c.model, from, nullptr).angles));
+    const glm::dquat own = b.carried_spin
+                               ? b.spin.at(from)
+                               : orientation_of_angles(vec(keyed(b.model, from, nullptr).angles));
     const glm::dvec3 offset = glm::conjugate(carrier) * b.carried_offset;
     const glm::dquat relative = glm::normalize(glm::conjugate(carrier) * own);
     ani_carried_segment seg{};

@@ -397,8 +397,7 @@ bool EventBake::sphere_and_translating(int i, int j, double now, double &limit, 
     const int si = b.sphere ? i : j, mi = b.sphere ? j : i;
     const Body &sphere = bodies_[static_cast<size_t>(si)];
     const Body &mover = bodies_[static_cast<size_t>(mi)];
-    if (sphere.keyed() || sphere.carried() || mover.turning() || is_overlapped(i, j))
-        return false;
+    if (sphere.keyed() || sphere.carried() || mover.turning() || is_overlapped(i, j)) return false;
     const std::optional<Carried> motion = carried_motion(mi, now);
     if (!motion) return false;
     const double span = std::min(limit, motion->until - now);
@@ -414,7 +413,7 @@ bool EventBake::sphere_and_translating(int i, int j, double now, double &limit, 
     std::optional<Contact> first = sphere_against_triangles(
         relative, sphere.radius, face_of(mover, now), span, [](size_t) { return false; }, tested);
     if (first) {
-        first->point += motion->velocity * first->t; // where the mover is then
+        first->point += motion->velocity * first->t;   // where the mover is then
         if (!b.sphere) first->normal = -first->normal; // from j towards i
         contact = first;
     }
@@ -646,8 +645,8 @@ TurningMesh EventBake::turning_mesh(const Body &b) const {
 
 // A turning body against a static model: the first contact within [now, now + limit] at which
 // it moves into the obstacle (contact_moving_in).
-void EventBake::predict_turning_obstacle(int i, size_t o, double now, double limit,
-                                         Predicted &next, const std::vector<uint32_t> *only) {
+void EventBake::predict_turning_obstacle(int i, size_t o, double now, double limit, Predicted &next,
+                                         const std::vector<uint32_t> *only) {
     const Body &b = bodies_[static_cast<size_t>(i)];
     const Obstacle &ob = obstacles_[o];
     const TurningPath path = turning_path(b, now);
@@ -786,9 +785,9 @@ bool EventBake::turning_view(int i, double now, TurningView &view) const {
 // two keys: equal at t and at four times up to end (for an interpolation at most cubic, equal
 // throughout).
 bool EventBake::keys_hold_pose(uint32_t model, double t, double end) const {
-    const ani_model_state first = keyed_state(*scene_, model, t, nullptr);
+    const ani_model_state first = keyed(model, t, nullptr);
     for (int k = 1; k <= 4; ++k) {
-        const ani_model_state s = keyed_state(*scene_, model, t + 0.25 * k * (end - t), nullptr);
+        const ani_model_state s = keyed(model, t + 0.25 * k * (end - t), nullptr);
         if (!(vec(s.angles) == vec(first.angles)) || !(vec(s.scale) == vec(first.scale)))
             return false;
     }

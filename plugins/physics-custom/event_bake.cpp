@@ -20,7 +20,17 @@ EventBake::EventBake(const ani_physics_scene &scene, double t_begin, double t_en
 }
 
 void EventBake::run() {
-    fingerprint_ = scene_print(*scene_);
+    keyed_memo_.assign(scene_->model_count, KeyedMemo{});
+    fingerprint_ = scene_print(*scene_, [&](uint32_t m, double t, ani_model_state &s, ani_vec3 &v) {
+        try {
+            glm::dvec3 velocity;
+            s = keyed(m, t, &velocity);
+            v = ani(velocity);
+            return true;
+        } catch (const ani::Failure &) {
+            return false;
+        }
+    });
     classify();
     build_broad_phase();
     queue_ = std::make_unique<EventQueue>(bodies_.size());
@@ -52,6 +62,7 @@ bool EventBake::continues(const ani_physics_scene &scene, double t_begin,
 // slices each started over, and redid the predictions and advancements of every body).
 void EventBake::resume(const ani_physics_scene &scene, double t_end, const ani_bake_sink &sink) {
     scene_ = &scene;
+    keyed_memo_.assign(scene_->model_count, KeyedMemo{}); // its answers were the last scene's
     sink_ = &sink;
     t_begin_ = t_end_;
     t_end_ = t_end;

@@ -620,6 +620,18 @@ class EventBake {
     void drop(int i, double t);
     void carry_again(int i, double t);
 
+    // The keys' state of model m at t (keyed_state), remembered for the last time asked: a bake's
+    // setup asks for each model's state where the bake starts several times over (its radius, its
+    // start, its fingerprint), and each answer goes through the host and its interpolation
+    // plugin (docs/performance.md, the gas's setup).
+    ani_model_state keyed(uint32_t m, double t, glm::dvec3 *velocity) const;
+    struct KeyedMemo {
+        double t = std::numeric_limits<double>::quiet_NaN(); // none yet
+        ani_model_state state{};
+        glm::dvec3 velocity{0.0};
+    };
+    mutable std::vector<KeyedMemo> keyed_memo_; // per model, for scene_
+
     // The data, shared by every stage.
     const ani_physics_scene *scene_; // this call's (the host builds it anew for each)
     double t_begin_, t_end_;

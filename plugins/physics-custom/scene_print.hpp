@@ -7,29 +7,27 @@
 #include <animator/physics.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace physics_custom {
 
-struct ModelPrint {
-    const ani_mesh_view *mesh = nullptr;
-    const double *positions = nullptr;
-    uint32_t vertex_count = 0, triangle_count = 0, group = 0;
-    int32_t dynamics = 0, gravity = 0;
-    double mass = 0.0;
-    std::vector<double> body; // restitution, friction, rotates, angular velocity (ABI 1.3)
-    std::vector<double> spans, keys, key_states;
-    bool operator==(const ModelPrint &o) const;
-};
-
+// All of it, model after model, in two flat lists (one allocation each, not several per model:
+// a gas of 100,000 balls is printed at every bake's start): the meshes' addresses, and every
+// number with the count of each variable-length part before it.
 struct ScenePrint {
-    double gravity = 0.0;
-    int32_t down_axis = 0;
-    std::vector<ModelPrint> models;
-    bool operator==(const ScenePrint &o) const;
+    std::vector<const void *> meshes; // per model: its mesh view and its positions
+    std::vector<double> numbers;
+    bool operator==(const ScenePrint &o) const {
+        return meshes == o.meshes && numbers == o.numbers;
+    }
 };
 
-// A key that cannot be evaluated makes a print equal to no other (the bake starts anew).
-ScenePrint scene_print(const ani_physics_scene &scene);
+// The keys' state of model m at t and their velocity there, or false when they cannot say.
+using KeyedEvaluator = std::function<bool(uint32_t m, double t, ani_model_state &, ani_vec3 &)>;
+
+// A key that cannot be evaluated makes a print equal to no other (the bake starts anew). Keys are
+// evaluated by the scene's evaluate_keyed, or by `evaluate` when given.
+ScenePrint scene_print(const ani_physics_scene &scene, const KeyedEvaluator &evaluate = {});
 
 } // namespace physics_custom
