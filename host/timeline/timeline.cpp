@@ -402,6 +402,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     };
 
     BakeContext context{this, &segments_, &events_, &progress, &stats_.backend_counts, &rotations_, &overlaps_, &carried_, &models};
+    context.log.reserve(2 * models.size() + 1024); // every model's segment, and as many more
     ani_bake_sink sink{};
     sink.context = &context;
     sink.segment = [](void *c, const ani_motion_segment *s) {

@@ -11,6 +11,9 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 #include <cmath>
 #include <string>
 
@@ -152,9 +155,102 @@ void GasLane::unlink(uint32_t i) {
     if (p.next != kNone) prev_[p.next] = prev_[i];
 }
 
+namespace {
+
+// The candidates of one scan, gathered (structure of arrays, so that their roots are computed
+// several at a time), and what the roots are computed from.
+struct Batch {
+    static constexpr int kSize = 64;
+    alignas(32) double x[kSize], y[kSize], z[kSize], vx[kSize], vy[kSize], vz[kSize], t0[kSize];
+    alignas(32) double t[kSize]; // out: the time from now of each one's contact, or infinity
+    uint32_t sphere[kSize], count[kSize];
+    int n = 0;
+};
+struct Scanner {
+    double now, x, y, z, vx, vy, vz, reach2, horizon;
+};
+
+// sphere_sphere's stable root for every candidate of the batch, as sphere_sphere(here, r, there, r)
+// computes it (d = here - there, e = v - v_o; the same operations in the same order, so the same
+// numbers): infinity for one that is not approaching, does not meet, or meets no earlier than
+// the horizon. Several at a time where the processor can (the same operations on each).
+inline void roots_scalar(Batch &b, const Scanner &s, int from) {
+    for (int k = from; k < b.n; ++k) {
+        const double dt = s.now - b.t0[k];
+        const double dx = s.x - (b.x[k] + b.vx[k] * dt), dy = s.y - (b.y[k] + b.vy[k] * dt),
+                     dz = s.z - (b.z[k] + b.vz[k] * dt);
+        const double ex = s.vx - b.vx[k], ey = s.vy - b.vy[k], ez = s.vz - b.vz[k];
+        const double qa = ex * ex + ey * ey + ez * ez, qb = dx * ex + dy * ey + dz * ez,
+                     qc = dx * dx + dy * dy + dz * dz - s.reach2;
+        const double disc = qb * qb - qa * qc;
+        const double root = qc / (-qb + std::sqrt(std::max(disc, 0.0)));
+        const double t = qc <= 0.0 ? 0.0 : root; // touching (or overlapping) and approaching
+        const bool earlier = (qb < 0.0) & (qc <= 0.0 || disc >= 0.0) & (t < s.horizon);
+        b.t[k] = earlier ? t : std::numeric_limits<double>::infinity();
+    }
+}
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+__attribute__((target("avx2"))) void roots_avx2(Batch &b, const Scanner &s) {
+    const __m256d now = _mm256_set1_pd(s.now), x = _mm256_set1_pd(s.x), y = _mm256_set1_pd(s.y),
+                  z = _mm256_set1_pd(s.z), vx = _mm256_set1_pd(s.vx), vy = _mm256_set1_pd(s.vy),
+                  vz = _mm256_set1_pd(s.vz), reach2 = _mm256_set1_pd(s.reach2),
+                  horizon = _mm256_set1_pd(s.horizon), zero = _mm256_setzero_pd(),
+                  inf = _mm256_set1_pd(std::numeric_limits<double>::infinity());
+    int k = 0;
+    for (; k + 4 <= b.n; k += 4) {
+        const __m256d dt = _mm256_sub_pd(now, _mm256_load_pd(b.t0 + k));
+        const __m256d ovx = _mm256_load_pd(b.vx + k), ovy = _mm256_load_pd(b.vy + k),
+                      ovz = _mm256_load_pd(b.vz + k);
+        const __m256d dx = _mm256_sub_pd(
+                          x, _mm256_add_pd(_mm256_load_pd(b.x + k), _mm256_mul_pd(ovx, dt))),
+                      dy = _mm256_sub_pd(
+                          y, _mm256_add_pd(_mm256_load_pd(b.y + k), _mm256_mul_pd(ovy, dt))),
+                      dz = _mm256_sub_pd(
+                          z, _mm256_add_pd(_mm256_load_pd(b.z + k), _mm256_mul_pd(ovz, dt)));
+        const __m256d ex = _mm256_sub_pd(vx, ovx), ey = _mm256_sub_pd(vy, ovy),
+                      ez = _mm256_sub_pd(vz, ovz);
+        const __m256d qa = _mm256_add_pd(
+            _mm256_add_pd(_mm256_mul_pd(ex, ex), _mm256_mul_pd(ey, ey)), _mm256_mul_pd(ez, ez));
+        const __m256d qb = _mm256_add_pd(
+            _mm256_add_pd(_mm256_mul_pd(dx, ex), _mm256_mul_pd(dy, ey)), _mm256_mul_pd(dz, ez));
+        const __m256d qc =
+            _mm256_sub_pd(_mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                                        _mm256_mul_pd(dz, dz)),
+                          reach2);
+        const __m256d disc = _mm256_sub_pd(_mm256_mul_pd(qb, qb), _mm256_mul_pd(qa, qc));
+        const __m256d root = _mm256_div_pd(
+            qc, _mm256_add_pd(_mm256_sub_pd(zero, qb), _mm256_sqrt_pd(_mm256_max_pd(disc, zero))));
+        const __m256d touching = _mm256_cmp_pd(qc, zero, _CMP_LE_OQ);
+        const __m256d t = _mm256_blendv_pd(root, zero, touching);
+        const __m256d earlier = _mm256_and_pd(
+            _mm256_and_pd(_mm256_cmp_pd(qb, zero, _CMP_LT_OQ),
+                          _mm256_or_pd(touching, _mm256_cmp_pd(disc, zero, _CMP_GE_OQ))),
+            _mm256_cmp_pd(t, horizon, _CMP_LT_OQ));
+        _mm256_store_pd(b.t + k, _mm256_blendv_pd(inf, t, earlier));
+    }
+    roots_scalar(b, s, k);
+}
+// (__builtin_cpu_init first: this runs among the library's static initialisers.)
+const bool kAvx2 = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+}();
+#endif
+
+void roots(Batch &b, const Scanner &s) {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+    if (kAvx2) return roots_avx2(b, s);
+#endif
+    roots_scalar(b, s, 0);
+}
+
+} // namespace
+
 // The earliest collision of i with the spheres of the cells at `offsets` from its cell, if
-// earlier than the pair part of its event (`all`: that part starts afresh): sphere_sphere's
-// stable root, computed for every candidate without branches (they would be mispredicted).
+// earlier than the pair part of its event (`all`: that part starts afresh). The candidates are
+// gathered in batches and their roots computed together (roots: without branches, which would
+// be mispredicted, and several at a time); the earliest is taken in the order they were found.
 void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bool all) {
     const Sphere &a = s_[i];
     Event &e = e_[i];
@@ -163,10 +259,21 @@ void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bo
         e.partner = kNone;
     }
     const glm::dvec3 here = at(a, now);
-    const double x = here.x, y = here.y, z = here.z, vx = a.v[0], vy = a.v[1], vz = a.v[2];
-    double horizon = e.pair_time - now;
+    Scanner s{now, here.x, here.y, here.z, a.v[0], a.v[1], a.v[2], reach2_, e.pair_time - now};
     uint32_t partner = kNone, partner_count = 0;
     std::size_t tests = 0;
+    Batch batch;
+    const auto take = [&] {
+        roots(batch, s);
+        for (int k = 0; k < batch.n; ++k)
+            if (batch.t[k] < s.horizon) {
+                s.horizon = batch.t[k];
+                partner = batch.sphere[k];
+                partner_count = batch.count[k];
+            }
+        tests += static_cast<std::size_t>(batch.n);
+        batch.n = 0;
+    };
     // The cells' first spheres, fetched together (most cells hold one sphere or none).
     const int64_t cell = e.index;
     uint32_t first[27];
@@ -181,27 +288,24 @@ void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bo
         for (uint32_t k = first[q]; k != kNone; k = s_[k].next) {
             if (k == i) continue;
             const Sphere &o = s_[k];
-            ++tests;
-            const double dt = now - o.t0;
-            // d = here - there, e = v - v_o, as sphere_sphere(here, r, there, r) has them.
-            const double dx = x - (o.x[0] + o.v[0] * dt), dy = y - (o.x[1] + o.v[1] * dt),
-                         dz = z - (o.x[2] + o.v[2] * dt);
-            const double ex = vx - o.v[0], ey = vy - o.v[1], ez = vz - o.v[2];
-            const double qa = ex * ex + ey * ey + ez * ez, qb = dx * ex + dy * ey + dz * ez,
-                         qc = dx * dx + dy * dy + dz * dz - reach2_;
-            const double disc = qb * qb - qa * qc;
-            const double root = qc / (-qb + std::sqrt(std::max(disc, 0.0)));
-            const double t = qc <= 0.0 ? 0.0 : root; // touching (or overlapping) and approaching
-            const bool earlier = (qb < 0.0) & (qc <= 0.0 || disc >= 0.0) & (t < horizon);
-            horizon = earlier ? t : horizon;
-            partner = earlier ? k : partner;
-            partner_count = earlier ? o.count : partner_count;
+            const int n = batch.n++;
+            batch.x[n] = o.x[0];
+            batch.y[n] = o.x[1];
+            batch.z[n] = o.x[2];
+            batch.vx[n] = o.v[0];
+            batch.vy[n] = o.v[1];
+            batch.vz[n] = o.v[2];
+            batch.t0[n] = o.t0;
+            batch.sphere[n] = k;
+            batch.count[n] = o.count;
+            if (batch.n == Batch::kSize) take();
         }
+    take();
     ++counts_.predictions;
     counts_.done += tests;
     if (all) counts_.skipped += s_.size() - 1 - tests;
     if (partner != kNone) {
-        e.pair_time = now + horizon;
+        e.pair_time = now + s.horizon;
         e.partner = partner;
         e.partner_count = partner_count;
     }
