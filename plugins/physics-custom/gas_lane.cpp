@@ -264,7 +264,20 @@ void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bo
     std::size_t tests = 0;
     Batch batch;
     const auto take = [&] {
+        // (Filled to a whole number of fours with itself: not approaching, never earlier.)
+        for (int n = batch.n; n % 4 != 0; ++n) {
+            batch.x[n] = s.x;
+            batch.y[n] = s.y;
+            batch.z[n] = s.z;
+            batch.vx[n] = s.vx;
+            batch.vy[n] = s.vy;
+            batch.vz[n] = s.vz;
+            batch.t0[n] = now;
+        }
+        const int found = batch.n;
+        batch.n = (batch.n + 3) / 4 * 4;
         roots(batch, s);
+        batch.n = found;
         for (int k = 0; k < batch.n; ++k)
             if (batch.t[k] < s.horizon) {
                 s.horizon = batch.t[k];
@@ -429,14 +442,13 @@ bool GasLane::grazing(const glm::dvec3 &relative, const glm::dvec3 &n) const {
 // (EventBake::try_settle). Looser than that test: any such triangle of its cell.
 bool GasLane::left_touching(uint32_t i, const glm::dvec3 &c, const glm::dvec3 &v) const {
     const Event &e = e_[i];
-    if (e.near_from == e.near_to) return false;
-    const double tol = 1e-6 * r_, still = 1e-9 * std::max(1.0, glm::length(v));
+    const double tol = 1e-6 * r_;
     for (uint32_t k = e.near_from; k < e.near_to; ++k) {
         const Triangle &tri = triangles_[near_[k]];
-        if (tri.normal == glm::dvec3(0.0)) continue;
-        if (std::abs(glm::dot(tri.normal, c) - tri.offset - r_) <= tol &&
-            std::abs(glm::dot(v, tri.normal)) <= still)
-            return true;
+        if (tri.normal == glm::dvec3(0.0) ||
+            !(std::abs(glm::dot(tri.normal, c) - tri.offset - r_) <= tol))
+            continue;
+        if (std::abs(glm::dot(v, tri.normal)) <= 1e-9 * std::max(1.0, glm::length(v))) return true;
     }
     return false;
 }
