@@ -1,4 +1,4 @@
-// Scaling: a gas of N spheres in a closed box at a fixed density, N = 100 .. 100,000, baked through
+// Scaling: a gas of N spheres in a closed box at a fixed density, N = 100 .. 1,000,000, baked through
 // the timeline by each backend in a process of its own (for its memory), and run by the reference
 // gas (gas_reference.hpp, a compact event-driven program) on the same spheres over the same time:
 // physics.custom's collisions per second against the reference's.
@@ -135,13 +135,14 @@ void run_gas(const Options &o) {
     const std::vector<int> sizes =
         !o.sizes.empty() ? o.sizes
         : o.quick        ? std::vector<int>{100, 300}
-                         : std::vector<int>{100, 300, 1000, 3000, 10000, 100000};
+                         : std::vector<int>{100, 300, 1000, 3000, 10000, 100000, 1000000};
     // Bullet to 10,000 balls: at 100,000 a run would take minutes and gigabytes for 25 steps.
     const int bullet_up_to = 10000;
     // Bullet's step for the gas: the largest of 1/240 .. 1/4000 s keeping its energy error near
     // 1e-3 (measured: see docs/performance.md).
     const double bullet_step = 1.0 / 1000.0;
-    // The reference first, so that physics.custom's row can give the ratio of the two.
+    // The reference has a row of its own (its memory, in a process of its own); physics.custom runs
+    // it again beside itself, in its process, for the ratio of the two.
     const std::vector<std::string> backends = {"reference", "physics.custom", "physics.bullet"};
     Csv csv(o.out / "gas.csv",
             {"backend", "n", "step", "sim_seconds", "wall_s", "wall_per_sim_s", "runs",
@@ -154,8 +155,8 @@ void run_gas(const Options &o) {
         << "N balls (r 0.2, volume fraction 0.27, up to 1 m/s per axis) in a closed box. "
            "Simulated time: about "
         << (o.quick ? "20,000" : "100,000")
-        << " collisions' worth for physics.custom and the reference (bench/gas_reference.hpp, "
-           "on the same balls); for Bullet (step 1/"
+        << " collisions' worth, at least 0.2 s, for physics.custom and the reference "
+           "(bench/gas_reference.hpp, on the same balls, in the same process); for Bullet (step 1/"
         << std::lround(1.0 / bullet_step)
         << " s) as much but at most 2,500 / N s, to N = 10,000. Energy error and overlap at the "
            "end.\n";
@@ -165,7 +166,6 @@ void run_gas(const Options &o) {
     // (log N, log wall time per simulated second) per backend
     std::vector<std::vector<std::pair<double, double>>> fit(backends.size());
     for (int n : sizes) {
-        double reference_rate = 0.0;
         for (size_t b = 0; b < backends.size(); ++b) {
             const std::string &backend = backends[b];
             const bool bullet = backend == "physics.bullet", reference = backend == "reference";
@@ -176,55 +176,71 @@ void run_gas(const Options &o) {
             // About 4.7 collisions per ball per second at this density: physics.custom and the
             // reference run about 100,000 collisions (20,000 in a quick run); Bullet (about 3.5
             // us per ball and step at 1/1000 s here) at most that, and at most 2,500 / N s.
-            const double sim_custom = (o.quick ? 2e4 : 1e5) / (4.7 * n);
+            // At least 0.2 s: the balls start on a lattice, about 0.04 s from their first
+            // contacts (1,000,000 balls: 0.2 s, about a million collisions).
+            const double sim_custom = std::max((o.quick ? 2e4 : 1e5) / (4.7 * n), 0.2);
             const double sim =
                 bullet ? std::min(sim_custom, (o.quick ? 25.0 : 2500.0) / n) : sim_custom;
             const int runs = o.runs;
             double peak = 0.0;
+            const bool custom = backend == "physics.custom";
             const std::vector<double> r = in_child(
                 [&] {
                     const Document doc = gas(n, bullet_step, 7);
-                    std::vector<double> wall;
-                    std::vector<double> out;
-                    if (reference) {
-                        // Collisions counted as the plugins' events are: pair and wall.
-                        const reference::Gas g = reference_gas(doc);
-                        for (int k = 0; k < runs; ++k) {
-                            const auto start = std::chrono::steady_clock::now();
-                            const reference::Result z = reference::run(g, sim);
-                            wall.push_back(seconds_since(start));
-                            if (k > 0) continue;
+                    const reference::Gas g = reference_gas(doc);
+                    // One run of the reference on the document's gas, timed; the first one's
+                    // totals in `out`. Collisions counted as the plugins' events are: pair and
+                    // wall.
+                    const auto reference_run = [&](bool first, std::vector<double> &out) {
+                        const auto start = std::chrono::steady_clock::now();
+                        const reference::Result z = reference::run(g, sim);
+                        const double seconds = seconds_since(start);
+                        if (first) {
                             const Totals at0 = totals(g), at1 = totals(z.final_state);
                             out = {static_cast<double>(z.pair_collisions + z.wall_collisions),
                                    std::abs(at1.energy - at0.energy) / at0.energy, at1.overlap,
                                    static_cast<double>(z.predictions), 0.0};
                         }
-                    } else {
-                        for (int k = 0; k < runs; ++k) {
-                            auto t = bt::timeline_of(doc, backend);
-                            const auto start = std::chrono::steady_clock::now();
-                            t->bake(sim);
-                            wall.push_back(seconds_since(start));
-                            if (k > 0) continue;
+                        return seconds;
+                    };
+                    std::vector<double> wall, beside; // beside: the reference in this process
+                    std::vector<double> out, reference_out;
+                    for (int k = 0; k < runs; ++k) {
+                        if (reference) {
+                            wall.push_back(reference_run(k == 0, out));
+                            continue;
+                        }
+                        auto t = bt::timeline_of(doc, backend);
+                        const auto start = std::chrono::steady_clock::now();
+                        t->bake(sim);
+                        wall.push_back(seconds_since(start));
+                        if (k == 0) {
                             const Totals a = totals(doc, *t, 0.0), z = totals(doc, *t, sim);
                             out = {static_cast<double>(t->events().size()),
                                    std::abs(z.energy - a.energy) / a.energy, z.overlap,
                                    count(*t, "pair tests done"), count(*t, "pair tests skipped")};
                         }
+                        // physics.custom's runs alternate with the reference's, in this
+                        // process: the ratio of the two is measured in one run, on one machine
+                        // state.
+                        if (custom) beside.push_back(reference_run(k == 0, reference_out));
                     }
                     out.insert(out.begin(), median(wall));
+                    if (custom) out.insert(out.end(), {median(beside), reference_out[0]});
                     return out;
                 },
                 peak);
-            if (r.size() != 6) throw std::runtime_error("the gas with " + backend + " failed");
+            if (r.size() != (custom ? 8u : 6u))
+                throw std::runtime_error("the gas with " + backend + " failed");
             const double wall = r[0], collisions = r[1], rate = collisions / wall;
             csv << backend << static_cast<double>(n) << (bullet ? bullet_step : 0.0) << sim << wall
                 << wall / sim << static_cast<double>(runs) << collisions << rate << r[2] << r[3]
                 << peak << baseline << r[4] << r[5];
             csv.end_row();
             fit[b].emplace_back(std::log(static_cast<double>(n)), std::log(wall / sim));
-            if (reference) reference_rate = rate;
-            const bool custom = backend == "physics.custom";
+            // The reference's rate beside physics.custom's, in the same process (its own row's
+            // process measures its memory).
+            const double reference_rate = custom ? r[7] / r[6] : 0.0;
             if (custom) {
                 ratios << static_cast<double>(n) << rate << reference_rate << rate / reference_rate;
                 ratios.end_row();
