@@ -79,6 +79,113 @@ bool EventBake::enter_gas_lane() {
     return true;
 }
 
+// The gas lane taken straight from the scene, before any body is made (a gas of a million balls
+// needs no 1 KB body record each, nor the general engine's checks of every ball): every model
+// that moves is a free sphere with Dynamics, no acceleration and no turning, of one radius; every
+// model with triangles that does not move is free of its keys (a static model); the seed's
+// response between them all; enough spheres for the grid; and, the lane checks, every ball apart
+// from the others and from the static models (not even touching them). Any of it missing: false,
+// having reported nothing, and the bake goes the general way (which may still give the lane the
+// gas: enter_gas_lane). The bodies are made only if the lane hands the bake back.
+bool EventBake::gas_from_scene() {
+    if (!options_.gas_lane || options_.broad_phase == BroadPhase::kAllPairs || t_begin_ < 0.0)
+        return false;
+    const uint32_t n = scene_->model_count;
+    std::vector<Material> materials;
+    materials.reserve(n);
+    std::vector<uint32_t> spheres, walls;
+    double r = -1.0;
+    for (uint32_t i = 0; i < n; ++i) {
+        const ani_physics_model &m = scene_->models[i];
+        if (!m.desc) return false;
+        materials.push_back(material_of(*m.desc)); // refuses values out of range, as classify
+        const ani_time_span span =
+            m.keyed_span_count ? m.keyed_spans[0] : ani_time_span{t_begin_, t_begin_};
+        const bool free_now = span.end <= t_begin_;
+        const bool movable = m.desc->dynamics || m.desc->gravity;
+        const bool solid = m.mesh && m.mesh->triangle_count > 0 && m.group == i;
+        if (!solid) continue;        // collides with nothing: reported as it moves (emit_unmoved)
+        if (!free_now) return false; // keyed here: a moving wall, or a ball still on its keys
+        if (!movable) {
+            walls.push_back(i);
+            continue;
+        }
+        if (!m.desc->dynamics || materials.back().rotates) return false;
+        const std::optional<double> radius = sphere_radius(i, t_begin_);
+        if (!radius || (r >= 0.0 && *radius != r)) return false;
+        r = *radius;
+        spheres.push_back(i);
+    }
+    if (spheres.empty() ||
+        (options_.broad_phase == BroadPhase::kAutomatic && spheres.size() < kGridFrom))
+        return false;
+    const auto seed_pair = [](const Material &a, const Material &b) {
+        return combined_restitution(a.restitution, b.restitution) == 1.0 &&
+               combined_friction(a.friction, b.friction) == 0.0;
+    };
+    std::vector<const Material *> kinds; // the spheres' distinct materials
+    for (uint32_t i : spheres)
+        if (std::none_of(kinds.begin(), kinds.end(), [&](const Material *k) {
+                return k->restitution == materials[i].restitution &&
+                       k->friction == materials[i].friction;
+            }))
+            kinds.push_back(&materials[i]);
+    for (const Material *a : kinds) {
+        for (const Material *b : kinds)
+            if (!seed_pair(*a, *b)) return false;
+        for (uint32_t w : walls)
+            if (!seed_pair(*a, materials[w])) return false;
+    }
+    std::vector<GasLane::Start> starts;
+    starts.reserve(spheres.size());
+    for (uint32_t i : spheres) {
+        const ani_motion_segment s = free_segment(i, *scene_->models[i].desc, start_of(i, t_begin_),
+                                                  t_begin_, t_end_, ani(gravity_));
+        if (!(s.a.x == 0.0 && s.a.y == 0.0 && s.a.z == 0.0)) return false;
+        starts.push_back(
+            {i, scene_->models[i].desc->mass, s.motion, t_begin_, vec(s.p0), vec(s.v0)});
+    }
+    // The static models, and the grid as build_broad_phase makes it.
+    for (uint32_t w : walls) add_obstacle(w, t_begin_);
+    const auto give_up = [&] {
+        obstacles_.clear();
+        triangle_count_ = 0;
+        return false;
+    };
+    Box region{starts[0].p, starts[0].p};
+    for (const GasLane::Start &st : starts) {
+        region.lo = glm::min(region.lo, st.p);
+        region.hi = glm::max(region.hi, st.p);
+    }
+    std::vector<GasLane::Triangle> triangles;
+    triangles.reserve(triangle_count_);
+    for (const Obstacle &o : obstacles_)
+        for (size_t k = 0; k < o.boxes.size(); ++k) {
+            region.lo = glm::min(region.lo, o.boxes[k].lo);
+            region.hi = glm::max(region.hi, o.boxes[k].hi);
+            triangles.push_back({o.corners[3 * k], o.corners[3 * k + 1], o.corners[3 * k + 2],
+                                 o.normals[k], o.offsets[k], o.boxes[k], o.model});
+        }
+    const double cell = 2.0 * r * (1.0 + 1e-6);
+    region.lo -= glm::dvec3(cell);
+    region.hi += glm::dvec3(cell);
+    auto grid = std::make_unique<UniformGrid>(region, cell);
+    if (!grid->dense()) return give_up();
+    const GasLane::Grid geometry{grid->origin(), grid->cell_size(), grid->counts()};
+    auto lane =
+        std::make_unique<GasLane>(r, geometry, std::move(triangles), starts, t_begin_, true);
+    if (!lane->admissible()) return give_up();
+    // Taken: every other model is reported as classify reports it.
+    materials_ = std::move(materials);
+    is_body_.assign(n, false);
+    for (uint32_t i : spheres) is_body_[i] = true;
+    for (uint32_t i = 0; i < n; ++i)
+        if (!is_body_[i]) emit_unmoved(i);
+    grid_ = std::move(grid);
+    gas_ = std::move(lane);
+    return true;
+}
+
 // Runs the lane to the slice's end and reports every sphere's motion to there. When it stops
 // before an event it does not take, the bodies go back to the general engine, which goes on
 // from there (false).
@@ -97,6 +204,28 @@ bool EventBake::run_gas_lane() {
 // Every sphere back in its body where the lane left it (a segment from its last contact), filed
 // in the general grid and predicted from t, the time of the event the lane did not take.
 void EventBake::leave_gas_lane(double t) {
+    if (bodies_.empty()) { // taken from the scene (gas_from_scene): the bodies are made now
+        std::unordered_map<const ani_mesh_view *, double> reaches;
+        bodies_.resize(gas_->size());
+        for (size_t k = 0; k < bodies_.size(); ++k) {
+            Body &b = bodies_[k];
+            b.model = gas_->state(k).model;
+            const ani_physics_model &m = scene_->models[b.model];
+            b.sphere = true;
+            b.radius = gas_->radius();
+            const auto [reach, fresh] = reaches.try_emplace(m.mesh, 0.0);
+            if (fresh) reach->second = mesh_reach(*m.mesh);
+            b.reach = reach->second;
+            b.dynamics = true;
+            b.mass = m.desc->mass;
+            b.material = materials_[b.model];
+            b.keys_end = t_begin_;
+            b.mode = Body::Mode::kFree;
+            b.active = true;
+        }
+        queue_ = std::make_unique<EventQueue>(bodies_.size());
+        predicted_.assign(bodies_.size(), Predicted{});
+    }
     for (size_t i = 0; i < bodies_.size(); ++i) {
         Body &b = bodies_[i];
         const GasLane::Start st = gas_->state(i);

@@ -31,6 +31,10 @@ void EventBake::run() {
             return false;
         }
     });
+    if (gas_from_scene()) { // a gas: the lane from the start, no body made (bake_gas.cpp)
+        advance_to_end();
+        return;
+    }
     classify();
     build_broad_phase();
     queue_ = std::make_unique<EventQueue>(bodies_.size());

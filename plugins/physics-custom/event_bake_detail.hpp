@@ -485,6 +485,7 @@ class EventBake {
 
     // The gas lane: a scene of plain free spheres baked by the compact engine (bake_gas.cpp).
     class GasSink;
+    bool gas_from_scene();
     bool enter_gas_lane();
     bool run_gas_lane();
     void leave_gas_lane(double t);

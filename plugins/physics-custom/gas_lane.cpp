@@ -34,7 +34,7 @@ ani_vec3 ani(const glm::dvec3 &v) {
 } // namespace
 
 GasLane::GasLane(double radius, const Grid &grid, std::vector<Triangle> triangles,
-                 const std::vector<Start> &spheres, double now)
+                 const std::vector<Start> &spheres, double now, bool check)
     : r_(radius), reach2_((radius + radius) * (radius + radius)), grid_(grid),
       triangles_(std::move(triangles)) {
     const std::size_t n = spheres.size();
@@ -111,6 +111,10 @@ GasLane::GasLane(double radius, const Grid &grid, std::vector<Triangle> triangle
         place(static_cast<uint32_t>(i), cell);
         link(static_cast<uint32_t>(i));
     }
+    if (check && !apart(now)) {
+        admissible_ = false;
+        return;
+    }
     std::vector<double> times(n);
     for (uint32_t i = 0; i < n; ++i) {
         predict_pairs(i, now);
@@ -118,6 +122,29 @@ GasLane::GasLane(double radius, const Grid &grid, std::vector<Triangle> triangle
         times[i] = std::min(e_[i].pair_time, e_[i].move_time);
     }
     queue_.init(times, now);
+}
+
+// Whether every sphere is inside the grid's cells, no two overlap (closer than 2r less the
+// general engine's touching allowance, 1e-6 r each: EventBake::overlaps_body) and none is within
+// r (and that allowance) of a triangle: one touching a face, which the general engine may put on
+// it, is left to the general engine too.
+bool GasLane::apart(double now) const {
+    const double closest = (r_ + r_) * (1.0 - 1e-6), beside = r_ * (1.0 + 1e-6);
+    for (uint32_t i = 0; i < s_.size(); ++i) {
+        const Event &e = e_[i];
+        for (int a = 0; a < 3; ++a)
+            if (e.cell[a] < 0 || e.cell[a] >= grid_.counts[a]) return false;
+        const glm::dvec3 c = at(s_[i], now);
+        for (int q = 0; q < 27; ++q)
+            for (uint32_t k = head_[e.index + around_[q]]; k != kNone; k = s_[k].next)
+                if (k != i && glm::length(c - at(s_[k], now)) < closest) return false;
+        for (uint32_t k = e.near_from; k < e.near_to; ++k) {
+            const Triangle &tri = triangles_[near_[k]];
+            if (glm::length(c - closest_point_on_triangle(c, tri.a, tri.b, tri.c)) < beside)
+                return false;
+        }
+    }
+    return true;
 }
 
 glm::dvec3 GasLane::at(const Sphere &p, double t) const {

@@ -70,9 +70,11 @@ class GasLane {
     };
 
     // Every sphere must start inside the grid's cells and apart from the others and the
-    // triangles (the general engine's checks have run).
+    // triangles: the general engine's checks have run, or `check` asks the lane to see to it
+    // (admissible() says whether they are; if not, the lane must not be run).
     GasLane(double radius, const Grid &grid, std::vector<Triangle> triangles,
-            const std::vector<Start> &spheres, double now);
+            const std::vector<Start> &spheres, double now, bool check = false);
+    bool admissible() const { return admissible_; }
 
     // Runs the events up to t_end (the segments from t_begin, where this slice starts). False
     // when it stopped before an event it does not take, at stopped_at(): the general engine
@@ -84,6 +86,7 @@ class GasLane {
     // A sphere now (its segment, as Start has it).
     Start state(std::size_t k) const;
     std::size_t size() const { return s_.size(); }
+    double radius() const { return r_; }
     const Counts &counts() const { return counts_; }
 
   private:
@@ -146,6 +149,8 @@ class GasLane {
     int64_t beyond_[6][9]; // after a crossing along axis a, way d: the 9 new cells, at 2a + d
     CalendarQueue queue_;
     Counts counts_;
+    bool admissible_ = true;
+    bool apart(double now) const;
     double stopped_at_ = kInf;
     double t_begin_ = 0.0, t_end_ = 0.0; // the slice's
     std::size_t at_once_ = 0;

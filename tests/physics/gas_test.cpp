@@ -395,4 +395,12 @@ TEST_CASE("the gas lane takes only the plain elastic gas") {
         gas.doc.set_state(0, 3, st);
         CHECK(lane_events(gas) == 0.0);
     }
+    {
+        // Two balls overlapping where the bake starts: the general engine's overlap rules.
+        Gas gas = make_gas(100, 0.2, 0.6, 1.0, 2.0, 0, 37);
+        ModelState st = *gas.doc.keyframes().front().states[2];
+        st.center = gas.doc.keyframes().front().states[1]->center + glm::dvec3(0.1, 0.0, 0.0);
+        gas.doc.set_state(0, 2, st);
+        CHECK(lane_events(gas) == 0.0);
+    }
 }
