@@ -567,9 +567,7 @@ bool GasLane::cross(uint32_t i, double now) {
 bool GasLane::run(double t_begin, double t_end, Sink &sink) {
     t_begin_ = t_begin;
     t_end_ = t_end;
-    while (true) {
-        const double t = queue_.top_time();
-        if (!(t <= t_end)) return true;
+    for (double t = queue_.top_time(); t <= t_end; t = queue_.top_time()) {
         const uint32_t i = queue_.top();
         Event &e = e_[i];
         at_once_ = t == last_ ? at_once_ + 1 : 0;
@@ -579,6 +577,7 @@ bool GasLane::run(double t_begin, double t_end, Sink &sink) {
                                                    " s without moving apart");
         if (e.pair_time <= e.move_time) {
             const uint32_t j = e.partner;
+            __builtin_prefetch(&e_[j]); // (read after the collision: fetched meanwhile)
             if (s_[j].count != e.partner_count) { // j changed course since: predict i anew
                 ++counts_.stale;
                 predict_pairs(i, t);
@@ -609,7 +608,13 @@ bool GasLane::run(double t_begin, double t_end, Sink &sink) {
         }
         schedule(i);
         if (++counts_.events % 1024 == 0) sink.progress(t);
+        // The next event's sphere, fetched while the queue finds it again.
+        if (queue_.top_time() <= t_end) {
+            __builtin_prefetch(&e_[queue_.top()]);
+            __builtin_prefetch(&s_[queue_.top()]);
+        }
     }
+    return true;
 }
 
 void GasLane::close(double t_begin, double t_end, Sink &sink) {

@@ -12,6 +12,8 @@ ScenePrint scene_print(const ani_physics_scene &scene, const KeyedEvaluator &eva
     x.push_back(scene.down_axis);
     x.push_back(scene.model_count);
     print.meshes.reserve(2 * static_cast<std::size_t>(scene.model_count));
+    x.reserve(32 * static_cast<std::size_t>(scene.model_count)); // a model keyed once: 29
+
     for (uint32_t i = 0; i < scene.model_count; ++i) {
         const ani_physics_model &m = scene.models[i];
         print.meshes.push_back(m.mesh);
