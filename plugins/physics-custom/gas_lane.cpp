@@ -448,7 +448,7 @@ void GasLane::predict_move(uint32_t i, double now) {
         }
     }
     for (int k = 0; k < deferred; ++k) {
-        if (plane_at[k] > limit) continue;
+        if (plane_at[k] >= limit) continue; // (a tie at most: met as early already)
         const Triangle &tri = triangles_[later[k]];
         if (auto hit = sphere_triangle(here, r_, tri.a, tri.b, tri.c, limit)) offer(later[k], *hit);
     }
