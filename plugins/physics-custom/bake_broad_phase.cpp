@@ -22,6 +22,14 @@ void EventBake::build_broad_phase() {
         region.hi = glm::max(region.hi, b.path.p);
     }
     if (!(widest > 0.0)) return;
+    grid_ = grid_over(region, widest);
+    for (size_t i = 0; i < bodies_.size(); ++i)
+        if (bodies_[i].active) file(static_cast<int>(i), t_begin_);
+}
+
+// The grid over `centres` (where the spheres start) and the static models, for spheres at most
+// `widest` across (the gas lane's too: bake_gas.cpp).
+std::unique_ptr<UniformGrid> EventBake::grid_over(Box region, double widest) const {
     for (const Obstacle &o : obstacles_)
         for (const Box &box : o.boxes) {
             region.lo = glm::min(region.lo, box.lo);
@@ -31,9 +39,7 @@ void EventBake::build_broad_phase() {
     const double cell = widest * (1.0 + 1e-6);
     region.lo -= glm::dvec3(cell);
     region.hi += glm::dvec3(cell);
-    grid_ = std::make_unique<UniformGrid>(region, cell);
-    for (size_t i = 0; i < bodies_.size(); ++i)
-        if (bodies_[i].active) file(static_cast<int>(i), t_begin_);
+    return std::make_unique<UniformGrid>(region, cell);
 }
 
 // Files an active body: a free sphere under its cell, any other among the bodies outside

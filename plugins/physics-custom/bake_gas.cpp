@@ -25,6 +25,44 @@ class EventBake::GasSink final : public GasLane::Sink {
     EventBake &bake_;
 };
 
+namespace {
+
+// The seed's elastic, frictionless response between every two of the balls' materials and between
+// each of them and each wall's.
+bool elastic(const std::vector<const Material *> &balls,
+             const std::vector<const Material *> &walls) {
+    const auto seed_pair = [](const Material &a, const Material &b) {
+        return combined_restitution(a.restitution, b.restitution) == 1.0 &&
+               combined_friction(a.friction, b.friction) == 0.0;
+    };
+    std::vector<const Material *> kinds; // the balls' distinct materials (a gas has one or few)
+    for (const Material *m : balls)
+        if (std::none_of(kinds.begin(), kinds.end(), [&](const Material *k) {
+                return k->restitution == m->restitution && k->friction == m->friction;
+            }))
+            kinds.push_back(m);
+    for (const Material *a : kinds) {
+        for (const Material *b : kinds)
+            if (!seed_pair(*a, *b)) return false;
+        for (const Material *w : walls)
+            if (!seed_pair(*a, *w)) return false;
+    }
+    return true;
+}
+
+} // namespace
+
+// The static models' triangles, as the lane takes them.
+std::vector<GasLane::Triangle> EventBake::lane_triangles() const {
+    std::vector<GasLane::Triangle> triangles;
+    triangles.reserve(triangle_count_);
+    for (const Obstacle &o : obstacles_)
+        for (size_t k = 0; k < o.boxes.size(); ++k)
+            triangles.push_back({o.corners[3 * k], o.corners[3 * k + 1], o.corners[3 * k + 2],
+                                 o.normals[k], o.offsets[k], o.boxes[k], o.model});
+    return triangles;
+}
+
 // Whether every body is a sphere the lane takes, as they are at the bake's start: free with
 // Dynamics and no acceleration, one radius, not turning, resting, carried, overlapping or left
 // alone with anything; and the seed's elastic frictionless response between every pair of them
@@ -34,7 +72,7 @@ bool EventBake::enter_gas_lane() {
         !ignored_.empty() || !overlaps_.empty() || sleepers_ > 0 || riders_ > 0)
         return false;
     const double r = bodies_[0].radius;
-    std::vector<const Material *> kinds; // the spheres' distinct materials
+    std::vector<const Material *> balls, walls;
     for (const Body &b : bodies_) {
         if (!b.active || !b.free_sphere() || !b.in_grid || !b.dynamics || b.spin.on ||
             b.supported() || b.on_body >= 0 || b.hinge || b.settles_at < kNever ||
@@ -42,28 +80,10 @@ bool EventBake::enter_gas_lane() {
             b.path.a != glm::dvec3(0.0) || b.free_a != glm::dvec3(0.0) || b.ignored_obstacles > 0 ||
             b.overlapped_obstacles > 0)
             return false;
-        const Material &m = b.material;
-        if (std::none_of(kinds.begin(), kinds.end(), [&](const Material *k) {
-                return k->restitution == m.restitution && k->friction == m.friction;
-            }))
-            kinds.push_back(&m);
+        balls.push_back(&b.material);
     }
-    const auto seed_pair = [](const Material &a, const Material &b) {
-        return combined_restitution(a.restitution, b.restitution) == 1.0 &&
-               combined_friction(a.friction, b.friction) == 0.0;
-    };
-    for (const Material *a : kinds) {
-        for (const Material *b : kinds)
-            if (!seed_pair(*a, *b)) return false;
-        for (const Obstacle &o : obstacles_)
-            if (!seed_pair(*a, materials_[o.model])) return false;
-    }
-    std::vector<GasLane::Triangle> triangles;
-    triangles.reserve(triangle_count_);
-    for (const Obstacle &o : obstacles_)
-        for (size_t k = 0; k < o.boxes.size(); ++k)
-            triangles.push_back({o.corners[3 * k], o.corners[3 * k + 1], o.corners[3 * k + 2],
-                                 o.normals[k], o.offsets[k], o.boxes[k], o.model});
+    for (const Obstacle &o : obstacles_) walls.push_back(&materials_[o.model]);
+    if (!elastic(balls, walls)) return false;
     std::vector<GasLane::Start> spheres(bodies_.size());
     for (size_t i = 0; i < bodies_.size(); ++i) {
         const Body &b = bodies_[i];
@@ -75,7 +95,7 @@ bool EventBake::enter_gas_lane() {
     grid.counts = grid_->counts();
     // The lane keeps its own cells: the general grid is emptied until the lane hands back.
     for (size_t i = 0; i < bodies_.size(); ++i) unfile(static_cast<int>(i));
-    gas_ = std::make_unique<GasLane>(r, grid, std::move(triangles), spheres, t_begin_);
+    gas_ = std::make_unique<GasLane>(r, grid, lane_triangles(), spheres, t_begin_);
     return true;
 }
 
@@ -119,23 +139,10 @@ bool EventBake::gas_from_scene() {
     if (spheres.empty() ||
         (options_.broad_phase == BroadPhase::kAutomatic && spheres.size() < kGridFrom))
         return false;
-    const auto seed_pair = [](const Material &a, const Material &b) {
-        return combined_restitution(a.restitution, b.restitution) == 1.0 &&
-               combined_friction(a.friction, b.friction) == 0.0;
-    };
-    std::vector<const Material *> kinds; // the spheres' distinct materials
-    for (uint32_t i : spheres)
-        if (std::none_of(kinds.begin(), kinds.end(), [&](const Material *k) {
-                return k->restitution == materials[i].restitution &&
-                       k->friction == materials[i].friction;
-            }))
-            kinds.push_back(&materials[i]);
-    for (const Material *a : kinds) {
-        for (const Material *b : kinds)
-            if (!seed_pair(*a, *b)) return false;
-        for (uint32_t w : walls)
-            if (!seed_pair(*a, materials[w])) return false;
-    }
+    std::vector<const Material *> balls, wall_materials;
+    for (uint32_t i : spheres) balls.push_back(&materials[i]);
+    for (uint32_t w : walls) wall_materials.push_back(&materials[w]);
+    if (!elastic(balls, wall_materials)) return false;
     std::vector<GasLane::Start> starts;
     starts.reserve(spheres.size());
     for (uint32_t i : spheres) {
@@ -145,7 +152,7 @@ bool EventBake::gas_from_scene() {
         starts.push_back(
             {i, scene_->models[i].desc->mass, s.motion, t_begin_, vec(s.p0), vec(s.v0)});
     }
-    // The static models, and the grid as build_broad_phase makes it.
+    // The static models, and the grid as build_broad_phase makes it (grid_over).
     for (uint32_t w : walls) add_obstacle(w, t_begin_);
     const auto give_up = [&] {
         obstacles_.clear();
@@ -157,23 +164,10 @@ bool EventBake::gas_from_scene() {
         region.lo = glm::min(region.lo, st.p);
         region.hi = glm::max(region.hi, st.p);
     }
-    std::vector<GasLane::Triangle> triangles;
-    triangles.reserve(triangle_count_);
-    for (const Obstacle &o : obstacles_)
-        for (size_t k = 0; k < o.boxes.size(); ++k) {
-            region.lo = glm::min(region.lo, o.boxes[k].lo);
-            region.hi = glm::max(region.hi, o.boxes[k].hi);
-            triangles.push_back({o.corners[3 * k], o.corners[3 * k + 1], o.corners[3 * k + 2],
-                                 o.normals[k], o.offsets[k], o.boxes[k], o.model});
-        }
-    const double cell = 2.0 * r * (1.0 + 1e-6);
-    region.lo -= glm::dvec3(cell);
-    region.hi += glm::dvec3(cell);
-    auto grid = std::make_unique<UniformGrid>(region, cell);
+    auto grid = grid_over(region, 2.0 * r);
     if (!grid->dense()) return give_up();
     const GasLane::Grid geometry{grid->origin(), grid->cell_size(), grid->counts()};
-    auto lane =
-        std::make_unique<GasLane>(r, geometry, std::move(triangles), starts, t_begin_, true);
+    auto lane = std::make_unique<GasLane>(r, geometry, lane_triangles(), starts, t_begin_, true);
     if (!lane->admissible()) return give_up();
     // Taken: every other model is reported as classify reports it.
     materials_ = std::move(materials);

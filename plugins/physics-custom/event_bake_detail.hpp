@@ -402,6 +402,7 @@ class EventBake {
 
     // The broad phase (bake_broad_phase.cpp; for_candidates, a template, below the class).
     void build_broad_phase();
+    std::unique_ptr<UniformGrid> grid_over(Box region, double widest) const;
     void file(int i, double t);
     void unfile(int i);
     template <class F> void for_candidates(int i, F &&f) const;
@@ -486,6 +487,7 @@ class EventBake {
     // The gas lane: a scene of plain free spheres baked by the compact engine (bake_gas.cpp).
     class GasSink;
     bool gas_from_scene();
+    std::vector<GasLane::Triangle> lane_triangles() const;
     bool enter_gas_lane();
     bool run_gas_lane();
     void leave_gas_lane(double t);

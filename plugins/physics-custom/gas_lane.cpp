@@ -66,32 +66,28 @@ GasLane::GasLane(double radius, const Grid &grid, std::vector<Triangle> triangle
                     beyond_[2 * a + d][q++] = (d ? 1 : -1) * stride_[a] + d1 * s1 + d2 * s2;
         }
     // Each cell's triangles: those whose box reaches the cell's widened by the radius (and a
-    // little more, for rounding), in the general engine's order.
-    std::vector<std::vector<uint32_t>> lists(static_cast<std::size_t>(cells));
+    // little more, for rounding), in the general engine's order; counted, then listed.
     const double pad = r_ * (1.0 + 1e-6);
-    for (uint32_t k = 0; k < triangles_.size(); ++k) {
-        const Box &box = triangles_[k].box;
+    const auto each_cell = [&](const Box &box, auto &&f) {
         std::array<int64_t, 3> lo{}, hi{};
         for (int a = 0; a < 3; ++a) {
-            const auto index = [&](double x) {
-                return static_cast<int64_t>(
-                    std::clamp(std::floor((x - grid_.origin[a]) / grid_.cell), -1.0,
-                               static_cast<double>(grid_.counts[a])));
-            };
-            lo[a] = index(box.lo[a] - pad);
-            hi[a] = index(box.hi[a] + pad);
+            lo[a] = coordinate(box.lo[a] - pad, a);
+            hi[a] = coordinate(box.hi[a] + pad, a);
         }
         for (int64_t z = lo[2]; z <= hi[2]; ++z)
             for (int64_t y = lo[1]; y <= hi[1]; ++y)
                 for (int64_t x = lo[0]; x <= hi[0]; ++x)
-                    lists[static_cast<std::size_t>(cell_index({x, y, z}))].push_back(k);
-    }
-    near_from_.resize(static_cast<std::size_t>(cells) + 1);
-    for (std::size_t c = 0; c < lists.size(); ++c) {
-        near_from_[c] = static_cast<uint32_t>(near_.size());
-        near_.insert(near_.end(), lists[c].begin(), lists[c].end());
-    }
-    near_from_.back() = static_cast<uint32_t>(near_.size());
+                    f(static_cast<std::size_t>(cell_index({x, y, z})));
+    };
+    near_from_.assign(static_cast<std::size_t>(cells) + 1, 0);
+    for (const Triangle &tri : triangles_)
+        each_cell(tri.box, [&](std::size_t c) { ++near_from_[c + 1]; });
+    for (std::size_t c = 0; c < static_cast<std::size_t>(cells); ++c)
+        near_from_[c + 1] += near_from_[c];
+    near_.resize(near_from_.back());
+    std::vector<uint32_t> filled(near_from_.begin(), near_from_.end() - 1);
+    for (uint32_t k = 0; k < triangles_.size(); ++k)
+        each_cell(triangles_[k].box, [&](std::size_t c) { near_[filled[c]++] = k; });
     for (std::size_t i = 0; i < n; ++i) {
         const Start &st = spheres[i];
         Sphere &p = s_[i];
@@ -103,12 +99,8 @@ GasLane::GasLane(double radius, const Grid &grid, std::vector<Triangle> triangle
         model_[i] = st.model;
         motion_[i] = st.motion;
         const glm::dvec3 c = at(p, now);
-        std::array<int64_t, 3> cell{};
-        for (int a = 0; a < 3; ++a)
-            cell[a] =
-                static_cast<int64_t>(std::clamp(std::floor((c[a] - grid_.origin[a]) / grid_.cell),
-                                                -1.0, static_cast<double>(grid_.counts[a])));
-        place(static_cast<uint32_t>(i), cell);
+        place(static_cast<uint32_t>(i),
+              {coordinate(c.x, 0), coordinate(c.y, 1), coordinate(c.z, 2)});
         link(static_cast<uint32_t>(i));
     }
     if (check && !apart(now)) {
@@ -150,6 +142,13 @@ bool GasLane::apart(double now) const {
 glm::dvec3 GasLane::at(const Sphere &p, double t) const {
     const double dt = t - p.t0;
     return {p.x[0] + p.v[0] * dt, p.x[1] + p.v[1] * dt, p.x[2] + p.v[2] * dt};
+}
+
+// The cell along axis a of coordinate x (grid.hpp's cell_of): clamped to the layer of empty cells
+// around the grid's.
+int64_t GasLane::coordinate(double x, int a) const {
+    return static_cast<int64_t>(std::clamp(std::floor((x - grid_.origin[a]) / grid_.cell), -1.0,
+                                           static_cast<double>(grid_.counts[a])));
 }
 
 int64_t GasLane::cell_index(const std::array<int64_t, 3> &c) const {
@@ -577,7 +576,7 @@ bool GasLane::run(double t_begin, double t_end, Sink &sink) {
                                                    " s without moving apart");
         if (e.pair_time <= e.move_time) {
             const uint32_t j = e.partner;
-            __builtin_prefetch(&e_[j]); // (read after the collision: fetched meanwhile)
+            __builtin_prefetch(&e_[j]);           // (read after the collision: fetched meanwhile)
             if (s_[j].count != e.partner_count) { // j changed course since: predict i anew
                 ++counts_.stale;
                 predict_pairs(i, t);

@@ -11,9 +11,12 @@
 // - one event per sphere (its earliest pair collision, and its next move: a cell crossing or a
 //   static model), made stale lazily by the partner's counter; a crossing keeps the pair part
 //   and scans only the 9 cells newly in reach;
+// - a scan's candidates gathered and their roots computed four at a time with AVX2 where the
+//   processor has it (the same operations in the same order as one at a time);
 // - the static models' triangles listed per cell once, so a sphere far from every wall tests
-//   none;
-// - a calendar queue of the event times; nothing allocated in the loop.
+//   none, and a face met inside its triangle solved directly;
+// - a calendar queue of the event times (calendar_queue.hpp); the next event's records fetched
+//   ahead; nothing allocated in the loop.
 // When an event is one it does not take (a grazing contact, a sphere left touching a face
 // without speed along it, a sphere leaving the grid), it stops before it, and the general engine
 // goes on from there with every sphere where the lane left it (EventBake::leave_gas_lane).
@@ -27,7 +30,6 @@
 #include <array>
 #include <cstdint>
 #include <limits>
-#include <optional>
 #include <vector>
 
 namespace physics_custom {
@@ -115,6 +117,7 @@ class GasLane {
     };
 
     glm::dvec3 at(const Sphere &p, double t) const;
+    int64_t coordinate(double x, int a) const;
     int64_t cell_index(const std::array<int64_t, 3> &c) const;
     void place(uint32_t i, const std::array<int64_t, 3> &c); // in cell c (its Event's fields)
     void scan(uint32_t i, double now, const int64_t *offsets, int count, bool all);
