@@ -64,21 +64,21 @@ std::vector<GasLane::Triangle> EventBake::lane_triangles() const {
 }
 
 // Whether every body is a sphere the lane takes, as they are at the bake's start: free with
-// Dynamics and no acceleration, one radius, not turning, resting, carried, overlapping or left
-// alone with anything; and the seed's elastic frictionless response between every pair of them
-// and with every static model. Then the lane bakes them (from t_begin).
+// Dynamics and one acceleration for all (gravity, or none), one radius, not turning, resting,
+// carried, overlapping or left alone with anything; and the seed's elastic frictionless response
+// between every pair of them and with every static model. Then the lane bakes them (from t_begin).
 bool EventBake::enter_gas_lane() {
     if (!options_.gas_lane || !grid_ || !grid_->dense() || bodies_.empty() || t_begin_ < 0.0 ||
         !ignored_.empty() || !overlaps_.empty() || sleepers_ > 0 || riders_ > 0)
         return false;
     const double r = bodies_[0].radius;
+    const glm::dvec3 a = bodies_[0].free_a;
     std::vector<const Material *> balls, walls;
     for (const Body &b : bodies_) {
         if (!b.active || !b.free_sphere() || !b.in_grid || !b.dynamics || b.spin.on ||
             b.supported() || b.on_body >= 0 || b.hinge || b.settles_at < kNever ||
-            b.resume_at < kNever || b.keys_end > t_begin_ || b.radius != r ||
-            b.path.a != glm::dvec3(0.0) || b.free_a != glm::dvec3(0.0) || b.ignored_obstacles > 0 ||
-            b.overlapped_obstacles > 0)
+            b.resume_at < kNever || b.keys_end > t_begin_ || b.radius != r || b.path.a != a ||
+            b.free_a != a || b.ignored_obstacles > 0 || b.overlapped_obstacles > 0)
             return false;
         balls.push_back(&b.material);
     }
@@ -95,13 +95,14 @@ bool EventBake::enter_gas_lane() {
     grid.counts = grid_->counts();
     // The lane keeps its own cells: the general grid is emptied until the lane hands back.
     for (size_t i = 0; i < bodies_.size(); ++i) unfile(static_cast<int>(i));
-    gas_ = std::make_unique<GasLane>(r, grid, lane_triangles(), spheres, t_begin_);
+    gas_ = std::make_unique<GasLane>(r, a, grid, lane_triangles(), spheres, t_begin_);
     return true;
 }
 
 // The gas lane taken straight from the scene, before any body is made (a gas of a million balls
 // needs no 1 KB body record each, nor the general engine's checks of every ball): every model
-// that moves is a free sphere with Dynamics, no acceleration and no turning, of one radius; every
+// that moves is a free sphere with Dynamics, one acceleration for all and no turning, of one
+// radius; every
 // model with triangles that does not move is free of its keys (a static model); the seed's
 // response between them all; enough spheres for the grid; and, the lane checks, every ball apart
 // from the others and from the static models (not even touching them). Any of it missing: false,
@@ -145,10 +146,12 @@ bool EventBake::gas_from_scene() {
     if (!elastic(balls, wall_materials)) return false;
     std::vector<GasLane::Start> starts;
     starts.reserve(spheres.size());
+    glm::dvec3 a(0.0); // one for all: gravity (Gravity on), or none
     for (uint32_t i : spheres) {
         const ani_motion_segment s = free_segment(i, *scene_->models[i].desc, start_of(i, t_begin_),
                                                   t_begin_, t_end_, ani(gravity_));
-        if (!(s.a.x == 0.0 && s.a.y == 0.0 && s.a.z == 0.0)) return false;
+        if (starts.empty()) a = vec(s.a);
+        if (vec(s.a) != a) return false;
         starts.push_back(
             {i, scene_->models[i].desc->mass, s.motion, t_begin_, vec(s.p0), vec(s.v0)});
     }
@@ -167,7 +170,7 @@ bool EventBake::gas_from_scene() {
     auto grid = grid_over(region, 2.0 * r);
     if (!grid->dense()) return give_up();
     const GasLane::Grid geometry{grid->origin(), grid->cell_size(), grid->counts()};
-    auto lane = std::make_unique<GasLane>(r, geometry, lane_triangles(), starts, t_begin_, true);
+    auto lane = std::make_unique<GasLane>(r, a, geometry, lane_triangles(), starts, t_begin_, true);
     if (!lane->admissible()) return give_up();
     // Taken: every other model is reported as classify reports it.
     materials_ = std::move(materials);
@@ -214,6 +217,7 @@ void EventBake::leave_gas_lane(double t) {
             b.mass = m.desc->mass;
             b.material = materials_[b.model];
             b.keys_end = t_begin_;
+            b.free_a = gas_->acceleration();
             b.mode = Body::Mode::kFree;
             b.active = true;
         }
@@ -224,7 +228,7 @@ void EventBake::leave_gas_lane(double t) {
         Body &b = bodies_[i];
         const GasLane::Start st = gas_->state(i);
         b.t0 = st.t0;
-        b.path = Path{st.p, st.v, glm::dvec3(0.0)};
+        b.path = Path{st.p, st.v, gas_->acceleration()};
         b.motion = st.motion;
         ++b.version;
         file(static_cast<int>(i), t);

@@ -33,10 +33,11 @@ ani_vec3 ani(const glm::dvec3 &v) {
 }
 } // namespace
 
-GasLane::GasLane(double radius, const Grid &grid, std::vector<Triangle> triangles,
-                 const std::vector<Start> &spheres, double now, bool check)
-    : r_(radius), reach2_((radius + radius) * (radius + radius)), grid_(grid),
-      triangles_(std::move(triangles)) {
+GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid,
+                 std::vector<Triangle> triangles, const std::vector<Start> &spheres, double now,
+                 bool check)
+    : r_(radius), reach2_((radius + radius) * (radius + radius)), a_(acceleration),
+      falls_(acceleration != glm::dvec3(0.0)), grid_(grid), triangles_(std::move(triangles)) {
     const std::size_t n = spheres.size();
     s_.resize(n);
     e_.assign(n, Event{});
@@ -139,9 +140,17 @@ bool GasLane::apart(double now) const {
     return true;
 }
 
+// Where a sphere is at t, and how fast it moves: Path::at and Path::velocity, the same operations
+// in the same order (without acceleration, the term that would add 0 is left out).
 glm::dvec3 GasLane::at(const Sphere &p, double t) const {
     const double dt = t - p.t0;
+    if (falls_) return Path{vec(p.x), vec(p.v), a_}.at(dt);
     return {p.x[0] + p.v[0] * dt, p.x[1] + p.v[1] * dt, p.x[2] + p.v[2] * dt};
+}
+
+glm::dvec3 GasLane::velocity(const Sphere &p, double t) const {
+    if (falls_) return Path{vec(p.x), vec(p.v), a_}.velocity(t - p.t0);
+    return vec(p.v);
 }
 
 // The cell along axis a of coordinate x (grid.hpp's cell_of): clamped to the layer of empty cells
@@ -284,8 +293,8 @@ void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bo
         e.pair_time = kInf;
         e.partner = kNone;
     }
-    const glm::dvec3 here = at(a, now);
-    Scanner s{now, here.x, here.y, here.z, a.v[0], a.v[1], a.v[2], reach2_, e.pair_time - now};
+    const glm::dvec3 here = at(a, now), v = velocity(a, now);
+    Scanner s{now, here.x, here.y, here.z, v.x, v.y, v.z, reach2_, e.pair_time - now};
     uint32_t partner = kNone, partner_count = 0;
     std::size_t tests = 0;
     Batch batch;
@@ -328,13 +337,24 @@ void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bo
             if (k == i) continue;
             const Sphere &o = s_[k];
             const int n = batch.n++;
-            batch.x[n] = o.x[0];
-            batch.y[n] = o.x[1];
-            batch.z[n] = o.x[2];
-            batch.vx[n] = o.v[0];
-            batch.vy[n] = o.v[1];
-            batch.vz[n] = o.v[2];
-            batch.t0[n] = o.t0;
+            if (falls_) { // moved to now here (the roots then move it by 0 s)
+                const glm::dvec3 p = at(o, now), w = velocity(o, now);
+                batch.x[n] = p.x;
+                batch.y[n] = p.y;
+                batch.z[n] = p.z;
+                batch.vx[n] = w.x;
+                batch.vy[n] = w.y;
+                batch.vz[n] = w.z;
+                batch.t0[n] = now;
+            } else {
+                batch.x[n] = o.x[0];
+                batch.y[n] = o.x[1];
+                batch.z[n] = o.x[2];
+                batch.vx[n] = o.v[0];
+                batch.vy[n] = o.v[1];
+                batch.vz[n] = o.v[2];
+                batch.t0[n] = o.t0;
+            }
             batch.sphere[n] = k;
             batch.count[n] = o.count;
             if (batch.n == Batch::kSize) take();
@@ -364,7 +384,8 @@ void GasLane::predict_move(uint32_t i, double now) {
     Event &e = e_[i];
     e.move_time = kInf;
     e.triangle = kNone;
-    const glm::dvec3 c = at(p, now), v = vec(p.v);
+    const glm::dvec3 c = at(p, now), v = velocity(p, now);
+    if (falls_) return predict_fall(i, now, Path{c, v, a_});
     if (v == glm::dvec3(0.0)) return; // still: it moves nowhere (the movers meet it)
     double limit = kInf;
     for (int a = 0; a < 3; ++a) {
@@ -453,6 +474,39 @@ void GasLane::predict_move(uint32_t i, double now) {
     }
 }
 
+// predict_move for a sphere under gravity: its cell's walls by first_exit, and the triangles of
+// its cell by sphere_triangle, on its parabola (`here`, from now).
+void GasLane::predict_fall(uint32_t i, double now, const Path &here) {
+    Event &e = e_[i];
+    Box bounds;
+    for (int a = 0; a < 3; ++a) {
+        bounds.lo[a] = grid_.origin[a] + static_cast<double>(e.cell[a]) * grid_.cell;
+        bounds.hi[a] = grid_.origin[a] + static_cast<double>(e.cell[a] + 1) * grid_.cell;
+    }
+    // (A parabola leaves every box: there is an exit.)
+    const std::optional<Exit> exit = first_exit(here, bounds, kInf);
+    if (!exit) return;
+    double limit = exit->t;
+    e.move_time = now + limit;
+    e.axis = static_cast<int8_t>(exit->axis);
+    e.direction = static_cast<int8_t>(exit->direction);
+    if (e.near_from == e.near_to) return;
+    Box reach = swept_box(here, limit);
+    reach.lo -= glm::dvec3(r_);
+    reach.hi += glm::dvec3(r_);
+    for (uint32_t k = e.near_from; k < e.near_to; ++k) {
+        const Triangle &tri = triangles_[near_[k]];
+        if (!reach.overlaps(tri.box)) continue;
+        ++counts_.done;
+        if (auto hit = sphere_triangle(here, r_, tri.a, tri.b, tri.c, limit)) {
+            limit = hit->t;
+            e.move_time = now + hit->t;
+            e.triangle = near_[k];
+            contact_[i] = *hit;
+        }
+    }
+}
+
 void GasLane::schedule(uint32_t i) {
     queue_.update(i, std::min(e_[i].pair_time, e_[i].move_time));
 }
@@ -491,7 +545,8 @@ void GasLane::emit(uint32_t i, double t, Sink &sink) const {
     s.t0 = from;
     s.t1 = t;
     s.p0 = ani(from == p.t0 ? vec(p.x) : at(p, from));
-    s.v0 = ani(vec(p.v));
+    s.v0 = ani(from == p.t0 ? vec(p.v) : velocity(p, from));
+    s.a = ani(a_);
     sink.segment(s);
 }
 
@@ -510,7 +565,7 @@ void GasLane::restart(uint32_t i, double t, const glm::dvec3 &v, Sink &sink) {
 bool GasLane::collide(uint32_t i, uint32_t j, double t, Sink &sink) {
     const glm::dvec3 ci = at(s_[i], t), cj = at(s_[j], t), between = ci - cj;
     const glm::dvec3 n = glm::length(between) > 0.0 ? glm::normalize(between) : glm::dvec3(0, 1, 0);
-    const glm::dvec3 v = vec(s_[i].v), vo = vec(s_[j].v);
+    const glm::dvec3 v = velocity(s_[i], t), vo = velocity(s_[j], t);
     if (grazing(v - vo, n)) return false;
     const auto [va, vb] = elastic_exchange(mass_[i], v, mass_[j], vo, n);
     if (left_touching(i, ci, va) || left_touching(j, cj, vb)) return false;
@@ -531,7 +586,7 @@ bool GasLane::collide(uint32_t i, uint32_t j, double t, Sink &sink) {
 bool GasLane::bounce(uint32_t i, double t, Sink &sink) {
     const Event &e = e_[i];
     const Contact &contact = contact_[i];
-    const glm::dvec3 v = vec(s_[i].v), n = contact.normal;
+    const glm::dvec3 v = velocity(s_[i], t), n = contact.normal;
     if (grazing(v, n)) return false;
     const glm::dvec3 v1 = reflect(v, n);
     if (left_touching(i, at(s_[i], t), v1)) return false;

@@ -1,7 +1,8 @@
 // The gas lane of the event-driven bake (physics.md, "The gas lane"; docs/performance.md, the
-// gas): a scene whose moving bodies are all plain free spheres (Dynamics on, no gravity, one
-// radius, the seed's elastic frictionless response with each other and with the static models,
-// no spin, nothing resting, overlapping or ignored) is baked by this compact engine instead of
+// gas): a scene whose moving bodies are all plain free spheres (Dynamics on, one acceleration
+// for all: gravity or none, one radius, the seed's elastic frictionless response with each other
+// and with the static models, no spin, nothing resting, overlapping or ignored) is baked by this
+// compact engine instead of
 // the general one. It does the same exact mathematics (the same time-of-impact and response
 // functions, the same grid cells and cell-crossing times), so it finds the same events to
 // rounding, but with the techniques of the fast event-driven codes (Rapaport, "The Art of
@@ -37,7 +38,8 @@ namespace physics_custom {
 class GasLane {
   public:
     // A sphere as the lane takes it: its model, mass, how it reports its motion (FREE, or REST
-    // while it has not moved), and its segment (centre p at t0, velocity v).
+    // while it has not moved), and its segment (centre p and velocity v at t0; the acceleration
+    // is every sphere's).
     struct Start {
         uint32_t model = 0;
         double mass = 1.0;
@@ -74,8 +76,9 @@ class GasLane {
     // Every sphere must start inside the grid's cells and apart from the others and the
     // triangles: the general engine's checks have run, or `check` asks the lane to see to it
     // (admissible() says whether they are; if not, the lane must not be run).
-    GasLane(double radius, const Grid &grid, std::vector<Triangle> triangles,
-            const std::vector<Start> &spheres, double now, bool check = false);
+    GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid,
+            std::vector<Triangle> triangles, const std::vector<Start> &spheres, double now,
+            bool check = false);
     bool admissible() const { return admissible_; }
 
     // Runs the events up to t_end (the segments from t_begin, where this slice starts). False
@@ -89,6 +92,7 @@ class GasLane {
     Start state(std::size_t k) const;
     std::size_t size() const { return s_.size(); }
     double radius() const { return r_; }
+    const glm::dvec3 &acceleration() const { return a_; }
     const Counts &counts() const { return counts_; }
 
   private:
@@ -117,12 +121,14 @@ class GasLane {
     };
 
     glm::dvec3 at(const Sphere &p, double t) const;
+    glm::dvec3 velocity(const Sphere &p, double t) const;
     int64_t coordinate(double x, int a) const;
     int64_t cell_index(const std::array<int64_t, 3> &c) const;
     void place(uint32_t i, const std::array<int64_t, 3> &c); // in cell c (its Event's fields)
     void scan(uint32_t i, double now, const int64_t *offsets, int count, bool all);
     void predict_pairs(uint32_t i, double now);
     void predict_move(uint32_t i, double now);
+    void predict_fall(uint32_t i, double now, const Path &here);
     void schedule(uint32_t i);
     bool left_touching(uint32_t i, const glm::dvec3 &c, const glm::dvec3 &v) const;
     bool grazing(const glm::dvec3 &relative, const glm::dvec3 &n) const;
@@ -135,6 +141,8 @@ class GasLane {
     void link(uint32_t i);
 
     double r_, reach2_; // the radius, and (r + r)^2
+    glm::dvec3 a_;      // every sphere's acceleration (gravity, or none)
+    bool falls_;        // a_ is not 0: paths are parabolas
     Grid grid_;
     std::vector<Triangle> triangles_;
     std::vector<Sphere> s_;
