@@ -46,6 +46,64 @@ def case_stairs_tumble(c):
     e.quit()
 
 
+def case_gas_lane(c):
+    """assets/animations/gas.ani (125 balls bouncing under gravity in a box) opened as a user
+    would: physics.custom's gas lane bakes it in the editor's slices (physics.md, "The gas lane")
+    to the end, and the balls are seen to move: the frames at 0, 10 and 20 s differ in many pixels,
+    while two shots of the same time are the same. Then Gas lane is turned off in the backend's
+    parameters: the general engine bakes it again, and half a second in (before the gas's chaos
+    has grown the rounding) the frame is the lane's, pixel for pixel."""
+    with open(os.path.join(c.source, 'assets/animations/gas.ani')) as f:
+        c.write('gas.ani', f.read())
+    e = c.start('gas.ani')
+    e.wait_baked()
+    check(re.search(r'^animator: physics\.custom: baked, 30 s$', e.stdout(), re.M),
+          'no "baked, 30 s" line in the log:\n' + e.stdout())
+    shots = {}
+    for ms in (0, 10000, 20000, 10000):
+        e.set_time(ms)
+        e.mouse_away()
+        shot = e.screenshot('t%d' % ms)
+        if ms in shots:
+            same = changed_pixels(shots[ms], shot)
+            check(same == 0, 'the frame at %d ms changed when shown again: %d pixels' % (ms, same))
+        shots[ms] = shot
+    for a, b in ((0, 10000), (10000, 20000)):
+        n = changed_pixels(shots[a], shots[b])
+        c.log('pixels changed from %d to %d ms: %d' % (a, b, n))
+        check(n > 2000, 'the balls did not move from %d to %d ms (%d pixels changed)' % (a, b, n))
+    e.set_time(500)
+    e.mouse_away()
+    lane = e.screenshot('lane-t500')
+    e.click(*BACKEND_PARAMETERS)
+    e.click(*GAS_LANE_BOX)
+    e.wait_baked()
+    check(len(re.findall(r'^animator: physics\.custom: baked, 30 s$', e.stdout(), re.M)) == 2,
+          'turning Gas lane off did not bake again:\n' + e.stdout())
+    e.mouse_away()
+    general = e.screenshot('general-t500')
+    n = changed_pixels(lane, general)
+    c.log('pixels changed at 500 ms, the lane against the general engine: %d' % n)
+    check(n == 0, 'the general engine\'s frame at 500 ms is not the lane\'s: %d pixels' % n)
+    e.quit(dirty=True)
+
+
+BACKEND_PARAMETERS = (100, 463)  # the header under the bake bar (physics.custom's parameters)
+GAS_LANE_BOX = (48, 506)         # its second parameter, once open: Gas lane's checkbox
+
+
+def changed_pixels(a, b):
+    """How many pixels of the 3D view (right of the side panel) differ between two screenshots,
+    one in four looked at."""
+    n = 0
+    for y in range(0, VIEW_HEIGHT, 2):
+        for x in range(PANEL_RIGHT, WIDTH, 2):
+            pa, pb = a.at(x, y), b.at(x, y)
+            if max(abs(pa[k] - pb[k]) for k in range(3)) > 24:
+                n += 1
+    return n
+
+
 def box_shots(c, e, times):
     """The red box at each time (ms): moved there, a screenshot, and its (pixels, x, y) on it; it
     must be on screen at each."""
