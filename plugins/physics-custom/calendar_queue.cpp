@@ -17,38 +17,35 @@ void CalendarQueue::init(const std::vector<double> &times, double now, double pe
     ring_ = std::max<std::size_t>(
         16, static_cast<std::size_t>(8.0 * static_cast<double>(n) / per_bucket));
     heap_.reserve(n);
-    time_.assign(n, std::numeric_limits<double>::infinity());
-    where_.assign(n, 0);
+    slot_.assign(n, Slot{std::numeric_limits<double>::infinity(), 0, kNone, kNone});
     head_.assign(ring_ + 1, kNone);
-    prev_.assign(n, kNone);
-    next_.assign(n, kNone);
     base_ = std::max<std::int64_t>(bucket(now), 0);
     for (std::uint32_t i = 0; i < n; ++i) insert(i, times[i]);
 }
 
 void CalendarQueue::link(std::uint32_t i, std::size_t list) {
-    where_[i] = -1 - static_cast<std::int32_t>(list);
-    prev_[i] = kNone;
-    next_[i] = head_[list];
-    if (next_[i] != kNone) prev_[next_[i]] = i;
+    slot_[i].where = -1 - static_cast<std::int32_t>(list);
+    slot_[i].prev = kNone;
+    slot_[i].next = head_[list];
+    if (slot_[i].next != kNone) slot_[slot_[i].next].prev = i;
     head_[list] = i;
     ++listed_;
     far_ += list == ring_;
 }
 
 void CalendarQueue::unlink(std::uint32_t i) {
-    const std::size_t list = static_cast<std::size_t>(-1 - where_[i]);
-    if (prev_[i] != kNone)
-        next_[prev_[i]] = next_[i];
+    const std::size_t list = static_cast<std::size_t>(-1 - slot_[i].where);
+    if (slot_[i].prev != kNone)
+        slot_[slot_[i].prev].next = slot_[i].next;
     else
-        head_[list] = next_[i];
-    if (next_[i] != kNone) prev_[next_[i]] = prev_[i];
+        head_[list] = slot_[i].next;
+    if (slot_[i].next != kNone) slot_[slot_[i].next].prev = slot_[i].prev;
     --listed_;
     far_ -= list == ring_;
 }
 
 void CalendarQueue::insert(std::uint32_t i, double time) {
-    time_[i] = time;
+    slot_[i].time = time;
     const std::int64_t b = bucket(time);
     if (b <= base_) {
         heap_.emplace_back();
@@ -61,10 +58,10 @@ void CalendarQueue::insert(std::uint32_t i, double time) {
 }
 
 void CalendarQueue::update(std::uint32_t i, double time) {
-    if (where_[i] >= 0) { // in the heap: take it out (the last entry fills its place)
-        const std::size_t k = static_cast<std::size_t>(where_[i]);
+    if (slot_[i].where >= 0) { // in the heap: take it out (the last entry fills its place)
+        const std::size_t k = static_cast<std::size_t>(slot_[i].where);
         if (bucket(time) <= base_) {
-            time_[i] = time;
+            slot_[i].time = time;
             sift(k, {time, i});
             return;
         }
@@ -83,8 +80,8 @@ bool CalendarQueue::next_bucket() {
     const auto ring = static_cast<std::int64_t>(ring_);
     if (listed_ == far_) { // the ring is empty: on to the turn of the far list's earliest
         std::int64_t first = kNever;
-        for (std::uint32_t k = head_[ring_]; k != kNone; k = next_[k])
-            first = std::min(first, bucket(time_[k]));
+        for (std::uint32_t k = head_[ring_]; k != kNone; k = slot_[k].next)
+            first = std::min(first, bucket(slot_[k].time));
         if (first >= kNever) return false;
         base_ = std::max(base_, first / ring * ring - 1);
     }
@@ -95,8 +92,8 @@ bool CalendarQueue::next_bucket() {
         listed_ -= far_;
         far_ = 0;
         while (k != kNone) {
-            const std::uint32_t next = next_[k];
-            insert(k, time_[k]);
+            const std::uint32_t next = slot_[k].next;
+            insert(k, slot_[k].time);
             k = next;
         }
     }
@@ -104,10 +101,10 @@ bool CalendarQueue::next_bucket() {
     std::uint32_t k = head_[list];
     head_[list] = kNone;
     while (k != kNone) {
-        const std::uint32_t next = next_[k];
+        const std::uint32_t next = slot_[k].next;
         --listed_;
         heap_.emplace_back();
-        sift(heap_.size() - 1, {time_[k], k});
+        sift(heap_.size() - 1, {slot_[k].time, k});
         k = next;
     }
     return true;
@@ -119,7 +116,7 @@ void CalendarQueue::sift(std::size_t k, Entry moved) {
         const std::size_t up = (k - 1) / 2;
         if (!moved.before(heap_[up])) break;
         heap_[k] = heap_[up];
-        where_[heap_[k].item] = static_cast<std::int32_t>(k);
+        slot_[heap_[k].item].where = static_cast<std::int32_t>(k);
         k = up;
     }
     const std::size_t size = heap_.size();
@@ -129,11 +126,11 @@ void CalendarQueue::sift(std::size_t k, Entry moved) {
         if (down + 1 < size && heap_[down + 1].before(heap_[down])) ++down;
         if (!heap_[down].before(moved)) break;
         heap_[k] = heap_[down];
-        where_[heap_[k].item] = static_cast<std::int32_t>(k);
+        slot_[heap_[k].item].where = static_cast<std::int32_t>(k);
         k = down;
     }
     heap_[k] = moved;
-    where_[moved.item] = static_cast<std::int32_t>(k);
+    slot_[moved.item].where = static_cast<std::int32_t>(k);
 }
 
 } // namespace physics_custom

@@ -53,9 +53,15 @@ class CalendarQueue {
     std::size_t ring_ = 1;             // buckets in the ring
     std::size_t listed_ = 0, far_ = 0; // items in lists, in the far list
     std::vector<Entry> heap_;          // room for every item reserved: it never allocates
-    std::vector<double> time_;         // each item's time
-    std::vector<std::int32_t> where_;  // its heap slot; or -1 - its list (ring_: far)
-    std::vector<std::uint32_t> head_, prev_, next_; // the lists
+    // Each item's time, where it is (its heap slot, or -1 - its list; ring_: the far list), and
+    // its neighbours in its list: together, one cache miss per item touched, not four.
+    struct Slot {
+        double time;
+        std::int32_t where;
+        std::uint32_t prev, next;
+    };
+    std::vector<Slot> slot_;
+    std::vector<std::uint32_t> head_; // each list's first item
 };
 
 } // namespace physics_custom
