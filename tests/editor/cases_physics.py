@@ -65,11 +65,11 @@ def case_gas_lane(c):
         e.mouse_away()
         shot = e.screenshot('t%d' % ms)
         if ms in shots:
-            same = changed_pixels(shots[ms], shot)
+            same = view_changes(shots[ms], shot)
             check(same == 0, 'the frame at %d ms changed when shown again: %d pixels' % (ms, same))
         shots[ms] = shot
     for a, b in ((0, 10000), (10000, 20000)):
-        n = changed_pixels(shots[a], shots[b])
+        n = view_changes(shots[a], shots[b])
         c.log('pixels changed from %d to %d ms: %d' % (a, b, n))
         check(n > 2000, 'the balls did not move from %d to %d ms (%d pixels changed)' % (a, b, n))
     e.set_time(500)
@@ -82,7 +82,7 @@ def case_gas_lane(c):
           'turning Gas lane off did not bake again:\n' + e.stdout())
     e.mouse_away()
     general = e.screenshot('general-t500')
-    n = changed_pixels(lane, general)
+    n = view_changes(lane, general)
     c.log('pixels changed at 500 ms, the lane against the general engine: %d' % n)
     check(n == 0, 'the general engine\'s frame at 500 ms is not the lane\'s: %d pixels' % n)
     e.quit(dirty=True)
@@ -92,7 +92,7 @@ BACKEND_PARAMETERS = (100, 463)  # the header under the bake bar (physics.custom
 GAS_LANE_BOX = (48, 506)         # its second parameter, once open: Gas lane's checkbox
 
 
-def changed_pixels(a, b):
+def view_changes(a, b):
     """How many pixels of the 3D view (right of the side panel) differ between two screenshots,
     one in four looked at."""
     n = 0
