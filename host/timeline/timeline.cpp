@@ -58,28 +58,6 @@ struct BakeContext {
     std::vector<std::vector<ani_carried_segment>> *carried;
     const std::vector<Model> *models;
     std::string refused = {}; // a free-rotation segment the host cannot evaluate
-    // The motion segments, in the order they came, in chunks (never copied as it grows).
-    std::vector<std::vector<ani_motion_segment>> log = {};
-    void log_segment(const ani_motion_segment &s) {
-        constexpr std::size_t kChunk = 4096;
-        if (log.empty() || log.back().size() == kChunk) {
-            log.emplace_back();
-            log.back().reserve(kChunk);
-        }
-        log.back().push_back(s);
-    }
-
-    // The logged segments appended to their models' lists, each list grown once.
-    void file_segments() {
-        std::vector<std::size_t> more(segments->size(), 0);
-        for (const auto &chunk : log)
-            for (const ani_motion_segment &s : chunk) ++more[s.model];
-        for (std::size_t m = 0; m < more.size(); ++m)
-            if (more[m] > 0) (*segments)[m].reserve((*segments)[m].size() + more[m]);
-        for (const auto &chunk : log)
-            for (const ani_motion_segment &s : chunk) (*segments)[s.model].push_back(s);
-        log.clear();
-    }
 
     // Refuses the bake for model `model`'s segment of `kind` at t0 when `why` says something.
     bool refuse(uint32_t model, const char *kind, double t0, const std::string &why) {
@@ -417,9 +395,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     sink.context = &context;
     sink.segment = [](void *c, const ani_motion_segment *s) {
         auto *ctx = static_cast<BakeContext *>(c);
-        // Logged in the order they come, and filed per model once the bake is done: a gas's
-        // balls send a segment per collision, each to another model's list (docs/performance.md).
-        if (s->model < ctx->segments->size()) ctx->log_segment(*s);
+        if (s->model < ctx->segments->size()) (*ctx->segments)[s->model].push_back(*s);
     };
     sink.event = [](void *c, const ani_collision_event *e) { static_cast<BakeContext *>(c)->events->push_back(*e); };
     sink.progress = [](void *c, double fraction) -> int32_t {
@@ -522,7 +498,6 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     const auto &api = physics_->api<ani_physics_api>();
     const ani_status_code code = api.bake(physics_->handle(), &scene, from, until, &sink, &status);
     ++stats_.bake_calls;
-    context.file_segments();
     if (code == ANI_ERR_CANCELLED) {
         truncate(from);
         throw BakeCancelled();
