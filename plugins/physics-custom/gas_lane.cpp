@@ -200,6 +200,16 @@ struct Batch {
     alignas(32) double t[kSize]; // out: the time from now of each one's contact, or infinity
     uint32_t sphere[kSize], count[kSize];
     int n = 0;
+    // Candidate k: centre p and velocity v at t0.
+    void set(int k, const glm::dvec3 &p, const glm::dvec3 &v, double at) {
+        x[k] = p.x;
+        y[k] = p.y;
+        z[k] = p.z;
+        vx[k] = v.x;
+        vy[k] = v.y;
+        vz[k] = v.z;
+        t0[k] = at;
+    }
 };
 struct Scanner {
     double now, x, y, z, vx, vy, vz, reach2, horizon;
@@ -300,15 +310,7 @@ void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bo
     Batch batch;
     const auto take = [&] {
         // (Filled to a whole number of fours with itself: not approaching, never earlier.)
-        for (int n = batch.n; n % 4 != 0; ++n) {
-            batch.x[n] = s.x;
-            batch.y[n] = s.y;
-            batch.z[n] = s.z;
-            batch.vx[n] = s.vx;
-            batch.vy[n] = s.vy;
-            batch.vz[n] = s.vz;
-            batch.t0[n] = now;
-        }
+        for (int n = batch.n; n % 4 != 0; ++n) batch.set(n, here, v, now);
         const int found = batch.n;
         batch.n = (batch.n + 3) / 4 * 4;
         roots(batch, s);
@@ -337,24 +339,10 @@ void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bo
             if (k == i) continue;
             const Sphere &o = s_[k];
             const int n = batch.n++;
-            if (falls_) { // moved to now here (the roots then move it by 0 s)
-                const glm::dvec3 p = at(o, now), w = velocity(o, now);
-                batch.x[n] = p.x;
-                batch.y[n] = p.y;
-                batch.z[n] = p.z;
-                batch.vx[n] = w.x;
-                batch.vy[n] = w.y;
-                batch.vz[n] = w.z;
-                batch.t0[n] = now;
-            } else {
-                batch.x[n] = o.x[0];
-                batch.y[n] = o.x[1];
-                batch.z[n] = o.x[2];
-                batch.vx[n] = o.v[0];
-                batch.vy[n] = o.v[1];
-                batch.vz[n] = o.v[2];
-                batch.t0[n] = o.t0;
-            }
+            if (falls_) // moved to now here (the roots then move it by 0 s)
+                batch.set(n, at(o, now), velocity(o, now), now);
+            else
+                batch.set(n, vec(o.x), vec(o.v), o.t0);
             batch.sphere[n] = k;
             batch.count[n] = o.count;
             if (batch.n == Batch::kSize) take();

@@ -74,11 +74,7 @@ Gas make_gas(int n, double scale, double spacing, double speed, double box, int 
 }
 
 std::unique_ptr<Timeline> baked(const Gas &gas, double until) {
-    auto t = std::make_unique<Timeline>(gas.doc, env().plugins);
-    std::vector<std::string> ids, warnings;
-    for (const Model &m : gas.doc.models()) ids.push_back(m.mesh);
-    t->set_meshes(load_meshes(ids, env().assets, {}, warnings));
-    REQUIRE(warnings.empty());
+    auto t = timeline_of(gas.doc);
     t->bake(until);
     return t;
 }
@@ -278,6 +274,16 @@ void same_first_collisions(const Timeline &a, const Timeline &b, size_t n) {
     }
 }
 
+// Every ball (model 1 on) where the other bake has it at t, to 1e-9 (m, m/s).
+void same_places(const Timeline &a, const Timeline &b, double t) {
+    const Frame fa = a.evaluate(t), fb = b.evaluate(t);
+    for (size_t k = 1; k < fa.models.size(); ++k) {
+        CAPTURE(k);
+        CHECK(glm::length(fa.models[k].center - fb.models[k].center) < 1e-9);
+        CHECK(glm::length(fa.models[k].velocity - fb.models[k].velocity) < 1e-9);
+    }
+}
+
 } // namespace
 
 TEST_CASE("the gas lane finds the same collisions as the general engine and as testing all pairs") {
@@ -298,12 +304,7 @@ TEST_CASE("the gas lane finds the same collisions as the general engine and as t
     CHECK(count_of(*b, "gas lane events") == 0.0);
     CHECK(count_of(*c, "gas lane events") == 0.0);
     // Every ball where the general engine has it, to rounding grown by the chaos, early on.
-    const Frame fa = a->evaluate(0.3), fb = b->evaluate(0.3);
-    for (size_t k = 1; k < fa.models.size(); ++k) {
-        CAPTURE(k);
-        CHECK(glm::length(fa.models[k].center - fb.models[k].center) < 1e-9);
-        CHECK(glm::length(fa.models[k].velocity - fb.models[k].velocity) < 1e-9);
-    }
+    same_places(*a, *b, 0.3);
     // Energy kept to rounding, no overlap, all along.
     const Totals start = totals(lane, *a, 0.0);
     for (double t : {0.5, 1.0, 2.0}) {
@@ -322,8 +323,8 @@ TEST_CASE("the gas lane hands the bake to the general engine when a ball leaves 
     auto a = baked(lane, 8.0), b = baked(general, 8.0);
     CHECK(count_of(*a, "gas lane hand-offs") == 1.0);
     CHECK(count_of(*a, "gas lane events") > 100.0);
-    CHECK(count_of(*a, "gas lane events") < static_cast<double>(a->events().size()) +
-                                               count_of(*a, "cell crossings"));
+    CHECK(count_of(*a, "gas lane events") <
+          static_cast<double>(a->events().size()) + count_of(*a, "cell crossings"));
     same_first_collisions(*a, *b, std::min<size_t>(b->events().size(), 600));
     const Totals start = totals(lane, *a, 0.0), end = totals(lane, *a, 8.0);
     CHECK(std::abs(end.energy - start.energy) / start.energy < 1e-12);
@@ -335,10 +336,7 @@ TEST_CASE("the gas lane bakes in slices as in one bake") {
     // The editor bakes in slices, each going on from the last (issue 16): the lane goes on too.
     const Gas gas = make_gas(200, 0.2, 0.6, 1.0, 2.5, 0, 31);
     auto whole = baked(gas, 3.0);
-    auto sliced = std::make_unique<Timeline>(gas.doc, env().plugins);
-    std::vector<std::string> ids, warnings;
-    for (const Model &m : gas.doc.models()) ids.push_back(m.mesh);
-    sliced->set_meshes(load_meshes(ids, env().assets, {}, warnings));
+    auto sliced = timeline_of(gas.doc);
     for (double until : {0.25, 0.5, 1.0, 1.7, 3.0}) sliced->bake(until);
     CHECK(count_of(*sliced, "gas lane events") > 0.0);
     REQUIRE(sliced->events().size() == whole->events().size());
@@ -428,12 +426,7 @@ TEST_CASE("the gas lane under gravity finds the same collisions as the general e
     CHECK(count_of(*a, "gas lane hand-offs") == 0.0);
     CHECK(count_of(*b, "gas lane events") == 0.0);
     same_first_collisions(*a, *b, 300);
-    const Frame fa = a->evaluate(0.2), fb = b->evaluate(0.2);
-    for (size_t k = 1; k < fa.models.size(); ++k) {
-        CAPTURE(k);
-        CHECK(glm::length(fa.models[k].center - fb.models[k].center) < 1e-9);
-        CHECK(glm::length(fa.models[k].velocity - fb.models[k].velocity) < 1e-9);
-    }
+    same_places(*a, *b, 0.2);
     // Kinetic and potential energy (y is up) kept to rounding, no overlap, all inside the box.
     const auto energy = [&](double t) {
         const Frame f = a->evaluate(t);
@@ -466,10 +459,7 @@ TEST_CASE("gas.ani, the example gas, is baked by the gas lane") {
     s.params["physics.custom"]["gas_lane"] = {0.0, 0, 0, 0};
     off.set_settings(s);
     const auto bake = [](const Document &d) {
-        auto t = std::make_unique<Timeline>(d, env().plugins);
-        std::vector<std::string> ids, warnings;
-        for (const Model &m : d.models()) ids.push_back(m.mesh);
-        t->set_meshes(load_meshes(ids, env().assets, {}, warnings));
+        auto t = timeline_of(d);
         t->bake(10.0);
         return t;
     };
