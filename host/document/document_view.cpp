@@ -36,6 +36,7 @@ std::string str(const char *s) { return s ? std::string(s) : std::string(); }
 } // namespace
 
 DocumentView::DocumentView(const Document &doc) {
+    models_.reserve(doc.models().size());
     for (const Model &m : doc.models()) {
         ani_model_desc d{};
         d.struct_size = sizeof d;
@@ -69,9 +70,14 @@ DocumentView::DocumentView(const Document &doc) {
         }
         models_.push_back(d);
     }
+    states_.reserve(doc.keyframes().size());
+    keyed_.reserve(doc.keyframes().size());
+    keyframes_.reserve(doc.keyframes().size());
     for (const Keyframe &k : doc.keyframes()) {
         std::vector<ani_model_state> states;
         std::vector<int32_t> keyed;
+        states.reserve(k.states.size());
+        keyed.reserve(k.states.size());
         for (const auto &s : k.states) {
             states.push_back(to_ani(s.value_or(ModelState{})));
             keyed.push_back(s ? 1 : 0);

@@ -17,6 +17,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace animator {
@@ -166,7 +167,9 @@ class Timeline {
 
   private:
     void truncate(double from);
-    ani_body_state state_at(int model, double t) const;
+    // The state the backend starts model `model` in at t; `keyed_pose`, when given, gets its
+    // keyed pose when the state comes from its keys.
+    ani_body_state state_at(int model, double t, std::optional<ModelPose> *keyed_pose = nullptr) const;
     // Where the model's origin is and how fast it moves at t from its free motion segment s: a
     // model turned about a pivot has the pivot's motion in s.
     void origin_at(int model, const ani_motion_segment &s, double t, glm::dvec3 &center,
