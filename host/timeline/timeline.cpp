@@ -58,21 +58,35 @@ struct BakeContext {
     std::vector<std::vector<ani_carried_segment>> *carried;
     const std::vector<Model> *models;
     std::string refused = {}; // a free-rotation segment the host cannot evaluate
-    // The motion segments of this bake call in the order reported, filed by model at its end
-    // (file_segments): each model's list then grows once per call, not at every segment (at
-    // 100,000 balls growing them one by one took a sixth of the bake).
-    std::vector<ani_motion_segment> log = {};
+    // The motion segments of this bake call in the order reported, in chunks (never moved as
+    // they grow), filed by model at its end (file_segments): each model's list then grows once
+    // per call, not at every segment (at 100,000 balls growing them one by one took a sixth of
+    // the bake).
+    static constexpr std::size_t kChunk = 1 << 14;
+    std::vector<std::unique_ptr<ani_motion_segment[]>> log = {};
+    std::size_t logged = 0;
 
+    void log_segment(const ani_motion_segment &s) {
+        if (logged == log.size() * kChunk) log.emplace_back(new ani_motion_segment[kChunk]);
+        log[logged / kChunk][logged % kChunk] = s;
+        ++logged;
+    }
+    template <class F> void each_logged(F &&f) const {
+        for (std::size_t k = 0; k < logged; k += kChunk) {
+            const ani_motion_segment *chunk = log[k / kChunk].get();
+            for (std::size_t i = 0, n = std::min(kChunk, logged - k); i < n; ++i) f(chunk[i]);
+        }
+    }
     void file_segments() {
         std::vector<uint32_t> count(segments->size(), 0);
-        for (const ani_motion_segment &s : log) ++count[s.model];
+        each_logged([&](const ani_motion_segment &s) { ++count[s.model]; });
         for (std::size_t m = 0; m < count.size(); ++m) {
             auto &list = (*segments)[m];
             const std::size_t need = list.size() + count[m];
             if (count[m] > 0 && list.capacity() < need) list.reserve(std::max(need, 2 * list.capacity()));
         }
-        for (const ani_motion_segment &s : log) (*segments)[s.model].push_back(s);
-        log.clear();
+        each_logged([&](const ani_motion_segment &s) { (*segments)[s.model].push_back(s); });
+        logged = 0;
     }
 
     // Refuses the bake for model `model`'s segment of `kind` at t0 when `why` says something.
@@ -426,7 +440,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     sink.context = &context;
     sink.segment = [](void *c, const ani_motion_segment *s) {
         auto *ctx = static_cast<BakeContext *>(c);
-        if (s->model < ctx->segments->size()) ctx->log.push_back(*s);
+        if (s->model < ctx->segments->size()) ctx->log_segment(*s);
     };
     sink.event = [](void *c, const ani_collision_event *e) { static_cast<BakeContext *>(c)->events->push_back(*e); };
     sink.progress = [](void *c, double fraction) -> int32_t {
