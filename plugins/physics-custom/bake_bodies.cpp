@@ -11,8 +11,7 @@ namespace physics_custom::bake {
 // with a mesh that are keyed during the bake are bodies; the rest (jointed parts, models
 // without a mesh, free models that are not spheres) move without collisions.
 void EventBake::classify() {
-    // Models that share a mesh (a gas's balls) share its reach: measured once per mesh.
-    std::unordered_map<const ani_mesh_view *, double> reaches;
+    Reaches reaches;
     bodies_.reserve(scene_->model_count); // at most one per model: never moved as they are added
     materials_.reserve(scene_->model_count);
     for (uint32_t i = 0; i < scene_->model_count; ++i) {
@@ -26,8 +25,7 @@ void EventBake::classify() {
         // left it (the host's cache says so), until its next key.
         const bool released = !free_now && m.start.motion != ANI_MOTION_KEYED;
         const ani_model_desc &d = *m.desc;
-        const Material material = material_of(d); // refuses values out of range
-        materials_.push_back(material);
+        materials_.push_back(material_of(d)); // refuses values out of range
         const bool movable = d.dynamics || d.gravity;
         const bool solid = m.mesh && m.mesh->triangle_count > 0 && m.group == i;
         // Keys that all hold it in the same place (a floor keyed along with the rest of a
@@ -48,18 +46,7 @@ void EventBake::classify() {
             std::optional<TurningShape> turning =
                 check_turning(i, radius.has_value(), free_now ? t_begin_ : span.end);
             is_body_.back() = true;
-            Body b;
-            b.model = i;
-            b.sphere = radius.has_value();
-            b.radius = radius.value_or(0.0);
-            const auto [reach, fresh] = reaches.try_emplace(m.mesh, 0.0);
-            if (fresh) reach->second = mesh_reach(*m.mesh);
-            b.reach = reach->second;
-            if (!b.sphere) b.edges = edges_of(m.mesh->triangles, m.mesh->triangle_count);
-            b.dynamics = d.dynamics != 0;
-            b.mass = d.mass;
-            b.material = material;
-            b.keys_end = free_now ? t_begin_ : span.end;
+            Body b = body_of(i, radius, free_now ? t_begin_ : span.end, reaches);
             if (turning) set_turning(b, std::move(*turning));
             if (!b.sphere) mesh_bodies_.push_back(static_cast<int>(bodies_.size()));
             bodies_.push_back(std::move(b));
@@ -83,6 +70,26 @@ void EventBake::classify() {
         }
         emit_unmoved(i);
     }
+}
+
+// The record of model i as a body (a sphere of `radius`, or its mesh), not yet moving: its shape,
+// mass and material (materials_[i] made), and where its keys end.
+Body EventBake::body_of(uint32_t i, const std::optional<double> &radius, double keys_end,
+                        Reaches &reaches) const {
+    const ani_physics_model &m = scene_->models[i];
+    Body b;
+    b.model = i;
+    b.sphere = radius.has_value();
+    b.radius = radius.value_or(0.0);
+    const auto [reach, fresh] = reaches.try_emplace(m.mesh, 0.0);
+    if (fresh) reach->second = mesh_reach(*m.mesh);
+    b.reach = reach->second;
+    if (!b.sphere) b.edges = edges_of(m.mesh->triangles, m.mesh->triangle_count);
+    b.dynamics = m.desc->dynamics != 0;
+    b.mass = m.desc->mass;
+    b.material = materials_[i];
+    b.keys_end = keys_end;
+    return b;
 }
 
 // The motion of a model that is not a body over [t_begin, t_end] (in every slice of a bake):

@@ -202,21 +202,11 @@ bool EventBake::run_gas_lane() {
 // in the general grid and predicted from t, the time of the event the lane did not take.
 void EventBake::leave_gas_lane(double t) {
     if (bodies_.empty()) { // taken from the scene (gas_from_scene): the bodies are made now
-        std::unordered_map<const ani_mesh_view *, double> reaches;
-        bodies_.resize(gas_->size());
-        for (size_t k = 0; k < bodies_.size(); ++k) {
-            Body &b = bodies_[k];
-            b.model = gas_->state(k).model;
-            const ani_physics_model &m = scene_->models[b.model];
-            b.sphere = true;
-            b.radius = gas_->radius();
-            const auto [reach, fresh] = reaches.try_emplace(m.mesh, 0.0);
-            if (fresh) reach->second = mesh_reach(*m.mesh);
-            b.reach = reach->second;
-            b.dynamics = true;
-            b.mass = m.desc->mass;
-            b.material = materials_[b.model];
-            b.keys_end = t_begin_;
+        Reaches reaches;
+        bodies_.reserve(gas_->size());
+        for (size_t k = 0; k < gas_->size(); ++k) {
+            bodies_.push_back(body_of(gas_->state(k).model, gas_->radius(), t_begin_, reaches));
+            Body &b = bodies_.back();
             b.free_a = gas_->acceleration();
             b.mode = Body::Mode::kFree;
             b.active = true;

@@ -45,6 +45,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace physics_custom::bake {
@@ -329,6 +330,10 @@ class EventBake {
 
     // Bodies, their poses, mass properties and turning; the reported segments (bake_bodies.cpp).
     void classify();
+    // Each mesh's reach (mesh_reach), measured once for the models that share it (a gas's balls).
+    using Reaches = std::unordered_map<const ani_mesh_view *, double>;
+    Body body_of(uint32_t i, const std::optional<double> &radius, double keys_end,
+                 Reaches &reaches) const;
     void emit_unmoved(uint32_t i);
     bool keys_hold_still(uint32_t i, double last) const;
     ani_body_state start_of(uint32_t i, double t);
