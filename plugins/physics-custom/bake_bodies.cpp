@@ -17,17 +17,13 @@ void EventBake::classify() {
     for (uint32_t i = 0; i < scene_->model_count; ++i) {
         const ani_physics_model &m = scene_->models[i];
         if (!m.desc) throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, "a model has no description");
-        const ani_time_span span =
-            m.keyed_span_count ? m.keyed_spans[0] : ani_time_span{t_begin_, t_begin_};
+        const auto [span, free_now, movable, solid] = standing(i);
         const double keyed_until = std::min(std::max(span.end, t_begin_), t_end_);
-        const bool free_now = span.end <= t_begin_;
         // A model released from its keys in an earlier bake is still free where that bake
         // left it (the host's cache says so), until its next key.
         const bool released = !free_now && m.start.motion != ANI_MOTION_KEYED;
         const ani_model_desc &d = *m.desc;
         materials_.push_back(material_of(d)); // refuses values out of range
-        const bool movable = d.dynamics || d.gravity;
-        const bool solid = m.mesh && m.mesh->triangle_count > 0 && m.group == i;
         // Keys that all hold it in the same place (a floor keyed along with the rest of a
         // keyframe) do not make it a moving wall.
         const bool held_still =
@@ -72,6 +68,14 @@ void EventBake::classify() {
     }
 }
 
+EventBake::Standing EventBake::standing(uint32_t i) const {
+    const ani_physics_model &m = scene_->models[i];
+    const ani_time_span span =
+        m.keyed_span_count ? m.keyed_spans[0] : ani_time_span{t_begin_, t_begin_};
+    return {span, span.end <= t_begin_, m.desc->dynamics || m.desc->gravity,
+            m.mesh && m.mesh->triangle_count > 0 && m.group == i};
+}
+
 // The record of model i as a body (a sphere of `radius`, or its mesh), not yet moving: its shape,
 // mass and material (materials_[i] made), and where its keys end.
 Body EventBake::body_of(uint32_t i, const std::optional<double> &radius, double keys_end,
@@ -96,11 +100,8 @@ Body EventBake::body_of(uint32_t i, const std::optional<double> &radius, double 
 // a static model held by its keys, then at rest; any other model keyed, then free without
 // collisions.
 void EventBake::emit_unmoved(uint32_t i) {
-    const ani_physics_model &m = scene_->models[i];
-    const ani_time_span span =
-        m.keyed_span_count ? m.keyed_spans[0] : ani_time_span{t_begin_, t_begin_};
+    const auto [span, free_now, movable, solid] = standing(i);
     const double keyed_until = std::min(std::max(span.end, t_begin_), t_end_);
-    const bool free_now = span.end <= t_begin_;
     if (keyed_until > t_begin_) emit_keyed(i, t_begin_, keyed_until);
     if (!(free_now || span.end < t_end_)) return; // keyed throughout this slice
     emit_free(i, start_of(i, free_now ? t_begin_ : keyed_until), free_now ? t_begin_ : keyed_until);

@@ -120,11 +120,7 @@ bool EventBake::gas_from_scene() {
         const ani_physics_model &m = scene_->models[i];
         if (!m.desc) return false;
         materials.push_back(material_of(*m.desc)); // refuses values out of range, as classify
-        const ani_time_span span =
-            m.keyed_span_count ? m.keyed_spans[0] : ani_time_span{t_begin_, t_begin_};
-        const bool free_now = span.end <= t_begin_;
-        const bool movable = m.desc->dynamics || m.desc->gravity;
-        const bool solid = m.mesh && m.mesh->triangle_count > 0 && m.group == i;
+        const auto [span, free_now, movable, solid] = standing(i);
         if (!solid) continue;        // collides with nothing: reported as it moves (emit_unmoved)
         if (!free_now) return false; // keyed here: a moving wall, or a ball still on its keys
         if (!movable) {

@@ -330,6 +330,14 @@ class EventBake {
 
     // Bodies, their poses, mass properties and turning; the reported segments (bake_bodies.cpp).
     void classify();
+    // How model i stands at the slice's start: its keyed span, whether its keys have ended, whether
+    // it can move (Dynamics or Gravity) and whether it collides (a mesh with triangles, not a
+    // part of a jointed model).
+    struct Standing {
+        ani_time_span span;
+        bool free_now, movable, solid;
+    };
+    Standing standing(uint32_t i) const;
     // Each mesh's reach (mesh_reach), measured once for the models that share it (a gas's balls).
     using Reaches = std::unordered_map<const ani_mesh_view *, double>;
     Body body_of(uint32_t i, const std::optional<double> &radius, double keys_end,
