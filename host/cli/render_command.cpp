@@ -57,6 +57,7 @@ struct RenderCommandOptions {
     std::vector<std::string> params;
     double from = 0.0, to = -1.0, fps = 30.0;
     int compression = 5;
+    int reflections = RenderOptions{}.reflection_size;
     bool progress = false, fps_given = false;
 };
 
@@ -239,6 +240,7 @@ int run_render(const RenderCommandOptions &o) {
         OffscreenContext context;
         RenderOptions options;
         options.shading = o.shading;
+        options.reflection_size = o.reflections;
         Renderer renderer(env.plugins, env.assets, options);
         renderer.set_document(doc, meshes);
         OffscreenFramebuffer framebuffer(width, height);
@@ -319,6 +321,12 @@ void add_render_command(CLI::App &app, std::function<int()> &run) {
     cmd->add_option("--compression", o->compression,
                     "PNG compression 5..9 (default 5, the fastest; higher is smaller and slower)")
         ->check(CLI::Range(5, 9));
+    cmd->add_option("--reflections", o->reflections,
+                    "the side in pixels of the cube map each reflective or transparent model sees "
+                    "the models around it in, drawn every frame (default " +
+                        std::to_string(o->reflections) +
+                        "); 0: they show the skybox only")
+        ->check(CLI::Range(0, 2048));
     cmd->add_option("--video", o->video,
                     "also put the frames and the soundtrack together into this video file "
                     "(PATH.mp4) with ffmpeg, which must be installed");

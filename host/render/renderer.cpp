@@ -201,7 +201,10 @@ void Renderer::draw_model(int m, bool selected, uint32_t without) {
     if (features & (ANI_SHADE_REFLECTION | ANI_SHADE_REFRACTION)) {
         if (!skybox_ && !background_cube_)
             background_cube_ = GpuTexture::solid_cube_map(options_.background);
-        const unsigned environment = skybox_ ? skybox_->name() : background_cube_->name();
+        // Its own view of the models around it, where it has one (not inside another's).
+        const unsigned around = probing_ < 0 ? probes_.texture(m) : 0;
+        const unsigned environment =
+            around ? around : skybox_ ? skybox_->name() : background_cube_->name();
         bind(kSkyboxUnit, GL_TEXTURE_CUBE_MAP, environment, stats_.cube_map_binds);
     }
     const glm::dmat4 &world = world_[static_cast<size_t>(m)];
@@ -243,11 +246,75 @@ void Renderer::draw_transparent(int m, bool selected) {
     draw_model(m, selected, 0);
 }
 
+void Renderer::draw_reflections() {
+    std::vector<std::pair<double, int>> wanted; // (distance to the camera, model)
+    const int count = static_cast<int>(std::min(models_.size(), world_.size()));
+    if (options_.reflection_size > 0)
+        for (int m = 0; m < count; ++m) {
+            const Model &model = models_[static_cast<size_t>(m)];
+            const auto &mesh = meshes_[static_cast<size_t>(m)];
+            if (!gpu_meshes_[static_cast<size_t>(m)] || mesh->stand_in || !visible(m) ||
+                (model.reflectivity <= 0.0 && model.transparency <= 0.0))
+                continue;
+            const glm::dvec3 eye(frame_uniforms_.camera_position);
+            wanted.emplace_back(glm::length(glm::dvec3(world_[static_cast<size_t>(m)][3]) - eye), m);
+        }
+    std::sort(wanted.begin(), wanted.end());
+    const auto most = static_cast<std::size_t>(std::max(options_.reflection_models, 0));
+    if (wanted.size() > most) {
+        if (!told_reflection_limit_)
+            log_(std::to_string(wanted.size()) + " models reflect or refract: the " +
+                 std::to_string(most) +
+                 " nearest the camera show the models around them, the others the skybox only");
+        told_reflection_limit_ = true;
+        wanted.resize(most);
+    }
+    std::set<int> drawn;
+    for (const auto &[distance, m] : wanted) drawn.insert(m);
+    probes_.keep_only(drawn);
+    if (drawn.empty()) return;
+    // The frame as the camera sees it, put back after.
+    const FrameUniforms camera = frame_uniforms_;
+    const glm::dmat4 view = view_, view_projection = view_projection_;
+    const Frustum frustum = frustum_;
+    for (const auto &[distance, m] : wanted) {
+        glm::dvec3 centre;
+        double radius = 0.0;
+        const Mesh &mesh = *meshes_[static_cast<size_t>(m)];
+        transform_bounding_sphere(world_[static_cast<size_t>(m)], mesh.bound_center,
+                                  mesh.bound_radius, centre, radius);
+        probing_ = m;
+        probes_.draw(m, options_.reflection_size, centre, options_.background,
+                     [&](const glm::dmat4 &face_view, const glm::dmat4 &projection) {
+                         frame_uniforms_.view = glm::mat4(face_view);
+                         frame_uniforms_.projection = glm::mat4(projection);
+                         frame_uniforms_.camera_position = glm::vec3(centre);
+                         view_ = face_view;
+                         view_projection_ = projection * face_view;
+                         frustum_ = Frustum(view_projection_);
+                         if (skybox_) draw_skybox();
+                         glEnable(GL_DEPTH_TEST);
+                         glDepthFunc(GL_LESS);
+                         for (int o = 0; o < count; ++o)
+                             if (o != m && gpu_meshes_[static_cast<size_t>(o)] && visible(o))
+                                 draw_model(o, false, 0);
+                     });
+        ++stats_.reflection_maps;
+    }
+    probing_ = -1;
+    frame_uniforms_ = camera;
+    view_ = view;
+    view_projection_ = view_projection;
+    frustum_ = frustum;
+}
+
 void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::set<int> &selected,
                     const std::set<int> &flagged) {
     stats_ = RenderStats{};
     bound_[0] = bound_[1] = 0;
     current_program_ = nullptr;
+    prepare_frame(frame, target.width, target.height);
+    draw_reflections();
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     glViewport(target.x, target.y, target.width, target.height);
     glEnable(GL_SCISSOR_TEST); // the clear keeps to the viewport
@@ -260,7 +327,6 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glDisable(GL_SCISSOR_TEST);
-    prepare_frame(frame, target.width, target.height);
     if (skybox_) draw_skybox();
 
     glEnable(GL_DEPTH_TEST);

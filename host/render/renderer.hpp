@@ -9,6 +9,10 @@
 // the skybox is behind them, and beyond the seed let the models behind them show through: they
 // are drawn after the opaque ones, farthest first, and the stencil buffer says which pixels have
 // a model behind. A target without a stencil buffer gets the seed's look only.
+//
+// Reflective and transparent models see the models around them (the seed's "Reflecting Other
+// Models"): each has a cube map drawn from its centre every frame (reflection_probes.hpp), in
+// which the other models reflect and refract the skybox only (one bounce).
 #pragma once
 
 #include "assets/asset_paths.hpp"
@@ -19,6 +23,7 @@
 #include "render/gpu_mesh.hpp"
 #include "render/gpu_texture.hpp"
 #include "render/picking_pass.hpp"
+#include "render/reflection_probes.hpp"
 #include "render/motion_path_overlay.hpp"
 #include "render/selection_outline.hpp"
 #include "render/shading_programs.hpp"
@@ -52,6 +57,13 @@ struct RenderOptions {
     // edged in white; a flagged model that is also selected shows both rings.
     OutlineStyle flagged_style{{0.95f, 0.1f, 0.1f}, {1.0f, 1.0f, 1.0f}, 7.0f, 9.0f};
     double near_plane = 0.1, far_plane = 1000.0;
+    // Reflections of other models (reflection_probes.hpp): the side in pixels of the cube map
+    // each reflective or transparent model sees the others in, drawn every frame; 0 turns them
+    // off (such models then show the skybox only, as the seed's did).
+    int reflection_size = 128;
+    // At most this many such models get one in a frame, the nearest the camera first; the
+    // others show the skybox only (said once in the log).
+    int reflection_models = 8;
 };
 
 // What the last draw did, counted: the observable seam for tests (and a debug overlay) that a
@@ -63,6 +75,7 @@ struct RenderStats {
     std::size_t texture_binds = 0;  // 2D textures bound
     std::size_t cube_map_binds = 0; // skybox cube maps bound (the skybox, or reflection's)
     bool skybox_drawn = false;
+    std::size_t reflection_maps = 0; // cube maps of the models around drawn (six faces each)
     std::uint32_t features_used = 0; // the union of the feature sets asked of the shading plugin
 };
 
@@ -112,6 +125,8 @@ class Renderer {
     // Draws model m with the features it uses, less `without`.
     void draw_model(int m, bool selected, uint32_t without);
     void draw_transparent(int m, bool selected);
+    // Each reflective or transparent model's view of the others, drawn into its cube map.
+    void draw_reflections();
     void bind(unsigned unit, unsigned target, unsigned name, std::size_t &counter);
 
     const AssetPaths &assets_;
@@ -133,6 +148,9 @@ class Renderer {
     std::unique_ptr<SelectionOutline> outline_;
     std::unique_ptr<MotionPathOverlay> paths_;
     std::set<int> hidden_;
+    ReflectionProbes probes_;
+    int probing_ = -1; // the model whose cube map is being drawn, or -1
+    bool told_reflection_limit_ = false;
     void draw_outlines(const std::set<int> &selected, const std::set<int> &flagged, int width, int height);
 
     // Per frame, kept to reuse their storage.

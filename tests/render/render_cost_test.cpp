@@ -57,10 +57,24 @@ TEST_CASE("each effect binds what it needs, once") {
         s.skybox = "night";
         doc.set_settings(s);
         set_model(doc, "a", [](Model &m) { m.reflectivity = 0.7; });
-        const Rendered r = render_document(doc);
+        RenderOptions skybox_only;
+        skybox_only.reflection_size = 0;
+        const Rendered r = render_document(doc, 160, 120, {}, skybox_only);
         CHECK(r.stats.skybox_drawn);
         CHECK(r.stats.features_used == uint32_t(ANI_SHADE_SKYBOX_PASS | ANI_SHADE_REFLECTION));
         CHECK(r.stats.cube_map_binds == 1);
+        CHECK(r.stats.texture_binds == 0);
+        CHECK(r.stats.reflection_maps == 0);
+    }
+    SECTION("a reflective model's view of the others: one cube map, bound once") {
+        Document doc = plain_scene();
+        Settings s = doc.settings();
+        s.skybox = "night";
+        doc.set_settings(s);
+        set_model(doc, "a", [](Model &m) { m.reflectivity = 0.7; });
+        const Rendered r = render_document(doc);
+        CHECK(r.stats.reflection_maps == 1);
+        CHECK(r.stats.cube_map_binds == 2); // the skybox (in its cube map and behind), then its own
         CHECK(r.stats.texture_binds == 0);
     }
     SECTION("cel shading and a selection") {

@@ -1,0 +1,204 @@
+// Reflections and refractions of other models (reflection_probes.hpp): a mirror shows the model
+// beside it where the law of reflection puts it, a glass ball shows what is behind and above it
+// in its lower half (Snell's law at its front surface), only with reflections on; golden images
+// of orbs seeing each other.
+#include "image_compare.hpp"
+#include "render_support.hpp"
+#include "support.hpp"
+
+#include "render/reflection_probes.hpp"
+#include "render/scene_math.hpp"
+
+#include <catch2/catch.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+using namespace animator;
+using namespace animator::test;
+
+namespace {
+
+constexpr int kWidth = 320, kHeight = 240;
+
+RenderOptions with_reflections(int size) {
+    RenderOptions o;
+    o.reflection_size = size;
+    return o;
+}
+
+// Where a world point is drawn, from the top left.
+glm::dvec2 pixel_of(const Document &doc, const glm::dvec3 &point) {
+    const Frame frame = first_frame(doc);
+    const auto at = project_to_pixel(
+        projection_matrix(frame.camera.fov_degrees, double(kWidth) / kHeight, 0.1, 1000.0) *
+            view_matrix(frame.camera),
+        point, kWidth, kHeight);
+    REQUIRE(at);
+    return *at;
+}
+
+bool red(const glm::ivec3 &c) {
+    return c.r > 90 && c.r > 2 * c.g + 20 && c.r > 2 * c.b + 20;
+}
+
+} // namespace
+
+TEST_CASE("a face's camera sees what a cube map lookup along that direction finds") {
+    // GL's cube-map faces (the OpenGL specification, "Cube Map Texture Selection"): a direction
+    // d with major axis +X is looked up on face 0 at s = (-d.z / |d.x| + 1) / 2,
+    // t = (-d.y / |d.x| + 1) / 2, t = 0 being the first row, which a framebuffer draws at its
+    // bottom (window y = 0). So the face's camera must draw d at x = s, y = t in [0, 1]^2.
+    const glm::dvec3 c(1.0, 2.0, 3.0);
+    const glm::dmat4 projection = ReflectionProbes::face_projection(0.1, 100.0);
+    const glm::dvec3 directions[] = {{1, 0.3, -0.2},  {-1, -0.4, 0.5}, {0.2, 1, 0.6},
+                                     {-0.3, -1, 0.1}, {0.5, 0.25, 1},  {-0.6, 0.1, -1}};
+    for (int f = 0; f < 6; ++f) {
+        const glm::dvec3 d = directions[f];
+        const int axis = f / 2;
+        const double ma = std::abs(d[axis]);
+        // sc, tc per face (Table 8.19 of the GL 4.5 specification).
+        double sc = 0, tc = 0;
+        switch (f) {
+        case 0:
+            sc = -d.z;
+            tc = -d.y;
+            break;
+        case 1:
+            sc = d.z;
+            tc = -d.y;
+            break;
+        case 2:
+            sc = d.x;
+            tc = d.z;
+            break;
+        case 3:
+            sc = d.x;
+            tc = -d.z;
+            break;
+        case 4:
+            sc = d.x;
+            tc = -d.y;
+            break;
+        case 5:
+            sc = -d.x;
+            tc = -d.y;
+            break;
+        }
+        const double s = (sc / ma + 1) / 2, t = (tc / ma + 1) / 2;
+        const glm::dvec4 clip =
+            projection * ReflectionProbes::face_view(f, c) * glm::dvec4(c + 5.0 * d, 1.0);
+        CAPTURE(f);
+        REQUIRE(clip.w > 0.0);
+        CHECK(clip.x / clip.w * 0.5 + 0.5 == Approx(s).margin(1e-12));
+        CHECK(clip.y / clip.w * 0.5 + 0.5 == Approx(t).margin(1e-12));
+    }
+}
+
+TEST_CASE("a mirror shows the model beside it where the law of reflection says") {
+    // A mirror ball of radius 1 at the origin, the camera on +Z, a red cube on +X. The point of
+    // the ball that reflects the cube to the camera has the normal halfway between them.
+    Document doc = make_document(make_camera({0, 0, 6}, 0, 0));
+    Model mirror = make_model("mirror", "sphere", {0.5, 0.5, 0.5});
+    mirror.reflectivity = 1.0;
+    doc.add_model(mirror, make_state({0, 0, 0}));
+    doc.add_model(make_model("cube", "cube", {1.0, 0.05, 0.05}),
+                  make_state({3.5, 0, 0}, glm::dvec3(1.5)));
+    REQUIRE(meshes_of(doc)[0]->bound_radius == Approx(1.0).margin(0.01));
+    const glm::dvec3 n = glm::normalize(glm::dvec3(0, 0, 1) + glm::dvec3(1, 0, 0));
+    const glm::dvec2 at = pixel_of(doc, n); // the point of the ball with that normal
+    // Its reflected ray, from the exact eye direction, points at the cube (within 37 degrees of
+    // +X, which the cube, 1.5 across from 2 away, covers).
+    const glm::dvec3 reflected = glm::reflect(glm::normalize(n - glm::dvec3(0, 0, 6)), n);
+    REQUIRE(glm::dot(glm::normalize(reflected), glm::dvec3(1, 0, 0)) >
+            std::cos(glm::radians(30.0)));
+
+    const Rendered on = render_document(doc, kWidth, kHeight);
+    const Rendered off = render_document(doc, kWidth, kHeight, {}, with_reflections(0));
+    CHECK(on.stats.reflection_maps == 1);
+    CHECK(off.stats.reflection_maps == 0);
+    const glm::ivec3 seen = pixel(on.image, int(at.x), int(at.y)),
+                     skybox_only = pixel(off.image, int(at.x), int(at.y));
+    CAPTURE(at.x, at.y, seen, skybox_only);
+    CHECK(red(seen));
+    CHECK_FALSE(red(skybox_only));
+    // The centre reflects the camera's own direction: no cube there, on or off.
+    const glm::dvec2 centre = pixel_of(doc, {0, 0, 1});
+    CHECK_FALSE(red(pixel(on.image, int(centre.x), int(centre.y))));
+    // Mirrored: the cube is on the right, so the left half of the ball shows none of it.
+    const glm::dvec2 left = pixel_of(doc, glm::normalize(glm::dvec3(-1, 0, 1)));
+    CHECK_FALSE(red(pixel(on.image, int(left.x), int(left.y))));
+}
+
+TEST_CASE("a glass ball refracts what is behind and above it into its lower half") {
+    // A clear ball (index 1.5) at the origin, a red cube far behind it and above (not behind it
+    // on screen: nothing shows through it directly), the camera on +Z. At a point of the lower
+    // half whose normal is 55 degrees below the view axis, the ray refracted into the ball
+    // (Snell, 1 / 1.5) turns upward, to the cube.
+    Document doc = make_document(make_camera({0, 0, 6}, 0, 0));
+    Model glass = make_model("glass", "sphere", {0.5, 0.5, 0.5});
+    glass.transparency = 1.0;
+    glass.refractive_index = 1.5;
+    doc.add_model(glass, make_state({0, 0, 0}));
+    const glm::dvec3 cube_at(0, 7.46, -18.56);
+    const double half = 3.0;
+    doc.add_model(make_model("cube", "cube", {1.0, 0.05, 0.05}),
+                  make_state(cube_at, glm::dvec3(half)));
+    const double a = glm::radians(55.0);
+    const glm::dvec3 n(0, -std::sin(a), std::cos(a));
+    const glm::dvec3 in = glm::normalize(n - glm::dvec3(0, 0, 6));
+    const glm::dvec3 refracted = glm::refract(in, n, 1.0 / 1.5);
+    REQUIRE(glm::length(refracted) > 0.5);
+    // The refracted ray from the ball's centre meets the cube (half across about cube_at): where
+    // it reaches the cube's depth it is within its height. And the cube's lowest front edge is
+    // seen above the ball's top.
+    const double reach = (cube_at.z - 0.0) / refracted.z;
+    const glm::dvec3 hit = reach * refracted;
+    REQUIRE(std::abs(hit.y - cube_at.y) < half);
+    REQUIRE(std::abs(hit.x - cube_at.x) < half);
+    REQUIRE(pixel_of(doc, cube_at + glm::dvec3(0, -half, half)).y < pixel_of(doc, {0, 1, 0}).y - 3);
+
+    const Rendered on = render_document(doc, kWidth, kHeight);
+    const Rendered off = render_document(doc, kWidth, kHeight, {}, with_reflections(0));
+    const glm::dvec2 at = pixel_of(doc, n);
+    const glm::ivec3 seen = pixel(on.image, int(at.x), int(at.y)),
+                     skybox_only = pixel(off.image, int(at.x), int(at.y));
+    CAPTURE(at.x, at.y, seen, skybox_only);
+    CHECK(red(seen));
+    CHECK_FALSE(red(skybox_only));
+    // Upside down: the upper half's rays turn downward, away from the cube.
+    const glm::dvec2 upper = pixel_of(doc, glm::dvec3(0, std::sin(a), std::cos(a)));
+    CHECK_FALSE(red(pixel(on.image, int(upper.x), int(upper.y))));
+}
+
+TEST_CASE("golden: the orbs reflect and refract each other") {
+    Document doc = make_document(make_camera({0, 0.3, 5}, 0, -3), false, "sunset");
+    Model mirror = make_model("mirror", "sphere", {0.5, 0.5, 0.5});
+    mirror.reflectivity = 1.0;
+    Model glass = make_model("glass", "sphere", {0.2, 0.3, 0.8}, {1, 1, 1}, 60);
+    glass.transparency = 0.8;
+    glass.refractive_index = 1.5;
+    doc.add_model(mirror, make_state({-1.05, 0, 0}));
+    doc.add_model(glass, make_state({1.05, 0, 0}));
+    doc.add_model(make_model("red", "cube", {0.9, 0.1, 0.1}),
+                  make_state({0, 0, -2.5}, glm::dvec3(0.6)));
+    const Rendered r = render_document(doc, 160, 120);
+    CHECK(r.stats.reflection_maps == 2);
+    const std::string problem =
+        check_golden("reflections_of_models", r.image, Tolerance{48.0, 0.005, 1.0});
+    INFO(problem);
+    CHECK(problem.empty());
+}
+
+TEST_CASE("reflections of other models are kept to the nearest few, said once") {
+    Document doc = make_document(make_camera({0, 0, 12}, 0, 0));
+    for (int k = 0; k < 5; ++k) {
+        Model m = make_model("m" + std::to_string(k), "sphere", {0.5, 0.5, 0.5});
+        m.reflectivity = 1.0;
+        doc.add_model(m, make_state({2.5 * k - 5.0, 0, -k}));
+    }
+    RenderOptions options;
+    options.reflection_models = 3;
+    const Rendered r = render_document(doc, 160, 120, {}, options);
+    CHECK(r.stats.reflection_maps == 3);
+    REQUIRE(r.log.size() == 1);
+    CHECK(r.log[0].find("the 3 nearest the camera") != std::string::npos);
+}
