@@ -58,6 +58,7 @@ struct RenderCommandOptions {
     double from = 0.0, to = -1.0, fps = 30.0;
     int compression = 5;
     int msaa = 4; // samples a pixel (multisample anti-aliasing); 1 is none
+    bool no_shadows = false;
     bool progress = false, fps_given = false;
 };
 
@@ -250,6 +251,7 @@ int run_render(const RenderCommandOptions &o) {
         OffscreenContext context;
         RenderOptions options;
         options.shading = o.shading;
+        options.shadows = !o.no_shadows;
         Renderer renderer(env.plugins, env.assets, options);
         renderer.set_document(doc, meshes);
         std::string fewer_samples;
@@ -326,6 +328,8 @@ void add_render_command(CLI::App &app, std::function<int()> &run) {
     cmd->add_option("--msaa", o->msaa,
                     "anti-aliasing: samples per pixel, 1, 2, 4 or 8 (default 4; 1 turns it off)")
         ->check(check_msaa);
+    cmd->add_flag("--no-shadows", o->no_shadows,
+                  "draw without the shadows the scene's lights cast (shadow maps; on by default)");
     cmd->add_option("--backend", o->backend,
                     "physics backend plugin id (default: the animation's)");
     cmd->add_option("--shading", o->shading, "shading plugin id (default shading.phong)");

@@ -223,6 +223,8 @@ void Panels::load_view_settings() {
 void Panels::view_menu() {
     if (!ImGui::BeginMenu("View")) return;
     const ViewSettings before = view_;
+    if (ImGui::MenuItem("Shadows", nullptr, view_.shadows)) view_.shadows = !view_.shadows;
+    tip("Shadows cast by the scene's lights (shadow maps with soft edges); off draws faster");
     if (ImGui::BeginMenu("Anti-aliasing")) {
         for (const int samples : {1, 2, 4, 8}) {
             const std::string label =
@@ -234,7 +236,7 @@ void Panels::view_menu() {
     }
     tip("Smooth edges in the 3D view: samples per pixel (multisampling); Off draws faster");
     ImGui::EndMenu();
-    if (view_.msaa != before.msaa) {
+    if (view_.msaa != before.msaa || view_.shadows != before.shadows) {
         std::string error;
         if (!save_view_settings(view_settings_path(), view_, &error)) say(error, true);
     }

@@ -1,4 +1,4 @@
-// The editor's View settings (anti-aliasing): how the 3D view is drawn, not part of
+// The editor's View settings (anti-aliasing and shadows): how the 3D view is drawn, not part of
 // any animation. Kept beside the recent files list, in $XDG_STATE_HOME/animator/view
 // (~/.local/state/animator/view without it), one "name value" line each.
 #pragma once
@@ -9,7 +9,8 @@
 namespace animator {
 
 struct ViewSettings {
-    int msaa = 4; // samples per pixel of the 3D view, 1, 2, 4 or 8 (1: no anti-aliasing)
+    int msaa = 4;        // samples per pixel of the 3D view, 1, 2, 4 or 8 (1: no anti-aliasing)
+    bool shadows = true; // shadow maps from the scene's lights
 };
 
 // Where the View settings are kept; empty without XDG_STATE_HOME or HOME.
