@@ -58,8 +58,20 @@ struct RenderCommandOptions {
     double from = 0.0, to = -1.0, fps = 30.0;
     int compression = 5;
     int reflections = RenderOptions{}.reflection_size;
+    int msaa = 4; // samples a pixel (multisample anti-aliasing); 1 is none
+    bool no_shadows = false;
     bool progress = false, fps_given = false;
 };
+
+// "N" samples for --msaa; "" when valid, else what is wrong (CLI11's check convention).
+std::string check_msaa(const std::string &text) {
+    char rest = 0;
+    int n = 0;
+    if (std::sscanf(text.c_str(), "%d%c", &n, &rest) != 1 || !valid_sample_count(n))
+        return std::string("--msaa takes the samples per pixel, ") + sample_counts_text() +
+               " (1 turns anti-aliasing off), got '" + text + "'";
+    return "";
+}
 
 // "WxH" into width and height; "" when valid, else what is wrong (CLI11's check convention).
 std::string parse_size(const std::string &text, int *width = nullptr, int *height = nullptr) {
@@ -241,9 +253,12 @@ int run_render(const RenderCommandOptions &o) {
         RenderOptions options;
         options.shading = o.shading;
         options.reflection_size = o.reflections;
+        options.shadows = !o.no_shadows;
         Renderer renderer(env.plugins, env.assets, options);
         renderer.set_document(doc, meshes);
-        OffscreenFramebuffer framebuffer(width, height);
+        std::string fewer_samples;
+        OffscreenFramebuffer framebuffer(width, height, supported_samples(o.msaa, &fewer_samples));
+        if (!fewer_samples.empty()) std::cerr << "animator: " << fewer_samples << "\n";
         if (still) {
             std::vector<std::uint8_t> pixels;
             renderer.draw(timeline.evaluate(o.from), framebuffer.target());
@@ -312,6 +327,11 @@ void add_render_command(CLI::App &app, std::function<int()> &run) {
                     "WIDTHxHEIGHT in pixels (default: the document's render size, a course scene's "
                     "gr.render, else 1280x720)")
         ->check([](const std::string &s) { return parse_size(s); });
+    cmd->add_option("--msaa", o->msaa,
+                    "anti-aliasing: samples per pixel, 1, 2, 4 or 8 (default 4; 1 turns it off)")
+        ->check(check_msaa);
+    cmd->add_flag("--no-shadows", o->no_shadows,
+                  "draw without the shadows the scene's lights cast (shadow maps; on by default)");
     cmd->add_option("--backend", o->backend,
                     "physics backend plugin id (default: the animation's)");
     cmd->add_option("--shading", o->shading, "shading plugin id (default shading.phong)");

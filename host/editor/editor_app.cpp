@@ -425,6 +425,7 @@ int run_editor(const EditorOptions &options) {
     {
         Environment env;
         Panels panels(env);
+        panels.load_view_settings();
         EditorSession session(env);
         RenderOptions render_options;
         Renderer renderer(env.plugins, env.assets, render_options,
@@ -454,6 +455,9 @@ int run_editor(const EditorOptions &options) {
                                       (file.empty() ? std::string("an untitled animation") : file.filename().string()) +
                                       "; Discard sets it aside.\nAutosaved in " + home_path(offer->file));
 
+        std::unique_ptr<OffscreenFramebuffer>
+            view_buffer;                           // the multisampled 3D view, when anti-aliased
+        int asked_samples = 0, usable_samples = 1; // the View menu's, and what GL gives of it
         std::uint64_t drawn_version = ~std::uint64_t{0};
         std::string title;
         // The 3D view: the space the panels left in the last frame drawn, where clicks pick.
@@ -754,8 +758,35 @@ int run_editor(const EditorOptions &options) {
             target.y = fb_h - static_cast<int>(std::lround(view.y * to_fb)) - target.height; // GL's rows go up
             renderer.set_hidden(session.hidden_models()); // the Outliner's eyes (not drawn, not picked)
             if (target.width > 0 && target.height > 0) {
-                renderer.draw(session.shown_frame(), target, session.selection(), session.overlapping_models());
-                renderer.draw_paths(path_lines.get(session), target);
+                // Anti-aliased: the scene drawn into a multisampled framebuffer of the view's size,
+                // resolved onto the window (which needs no multisampled visual of its own).
+                if (panels.view_settings().msaa != asked_samples) { // the View menu changed it
+                    asked_samples = panels.view_settings().msaa;
+                    std::string fewer;
+                    usable_samples = supported_samples(asked_samples, &fewer);
+                    if (!fewer.empty()) panels.say(fewer, true);
+                }
+                const int samples = usable_samples;
+                if (samples > 1 &&
+                    (!view_buffer || view_buffer->width() != target.width ||
+                     view_buffer->height() != target.height || view_buffer->samples() != samples)) {
+                    view_buffer.reset();
+                    try {
+                        view_buffer = std::make_unique<OffscreenFramebuffer>(
+                            target.width, target.height, samples);
+                    } catch (const std::exception &e) {
+                        panels.say(std::string(e.what()) + "; drawing without anti-aliasing", true);
+                        usable_samples = 1; // said once, not every frame
+                    }
+                }
+                if (samples <= 1) view_buffer.reset();
+                const RenderTarget scene_target = view_buffer ? view_buffer->target() : target;
+                renderer.set_shadows(panels.view_settings().shadows,
+                                     renderer.options().shadow_map_size);
+                renderer.draw(session.shown_frame(), scene_target, session.selection(),
+                              session.overlapping_models());
+                renderer.draw_paths(path_lines.get(session), scene_target);
+                if (view_buffer) view_buffer->copy_to(target);
                 // The gizmo over everything, its handle under the cursor (or dragged) highlighted.
                 const GizmoView gizmo_view = session.gizmo_view(static_cast<int>(std::lround(view.width)),
                                                                 static_cast<int>(std::lround(view.height)));

@@ -214,6 +214,34 @@ void Panels::ask_delete_models(const EditorSession &session) {
 
 void Panels::paste_keys(EditorSession &session) { say(dope_sheet_.paste(session)); }
 
+void Panels::load_view_settings() {
+    std::string warning;
+    view_ = animator::load_view_settings(view_settings_path(), &warning);
+    if (!warning.empty()) say(warning, true);
+}
+
+void Panels::view_menu() {
+    if (!ImGui::BeginMenu("View")) return;
+    const ViewSettings before = view_;
+    if (ImGui::MenuItem("Shadows", nullptr, view_.shadows)) view_.shadows = !view_.shadows;
+    tip("Shadows cast by the scene's lights (shadow maps with soft edges); off draws faster");
+    if (ImGui::BeginMenu("Anti-aliasing")) {
+        for (const int samples : {1, 2, 4, 8}) {
+            const std::string label =
+                samples == 1 ? std::string("Off") : std::to_string(samples) + "x";
+            if (ImGui::MenuItem(label.c_str(), nullptr, view_.msaa == samples))
+                view_.msaa = samples;
+        }
+        ImGui::EndMenu();
+    }
+    tip("Smooth edges in the 3D view: samples per pixel (multisampling); Off draws faster");
+    ImGui::EndMenu();
+    if (view_.msaa != before.msaa || view_.shadows != before.shadows) {
+        std::string error;
+        if (!save_view_settings(view_settings_path(), view_, &error)) say(error, true);
+    }
+}
+
 void Panels::animator_panel(EditorSession &session, float height, double wall) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(340, std::min(height - 20.0f, 760.0f)), ImGuiCond_FirstUseEver);
@@ -242,6 +270,7 @@ void Panels::animator_panel(EditorSession &session, float height, double wall) {
         });
         if (ImGui::MenuItem("Lights", nullptr, lights_open_)) lights_open_ = !lights_open_;
         tip("The scene's lights and its ambient light (saved in the animation): opens or closes their window");
+        view_menu();
         const char *name = "Animator Interface";
         const float right = ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize(name).x;
         if (right > ImGui::GetCursorPosX() + 8.0f) {

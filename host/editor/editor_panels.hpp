@@ -8,10 +8,11 @@
 #include "editor/dope_sheet.hpp"
 #include "editor/editor_session.hpp"
 #include "editor/file_menu.hpp"
+#include "editor/model_commands.hpp"
 #include "editor/output_dialogs.hpp"
 #include "editor/transform_panel.hpp"
-#include "editor/model_commands.hpp"
 #include "editor/view_layout.hpp"
+#include "editor/view_settings.hpp"
 
 #include <functional>
 #include <optional>
@@ -71,6 +72,9 @@ class Panels {
 
     // The File menu (the Animator Interface's menu bar) and its keys.
     FileMenu &files() { return files_; }
+    // The View menu's settings (anti-aliasing, shadows), loaded at the start and saved on change.
+    const ViewSettings &view_settings() const { return view_; }
+    void load_view_settings();
     // Set by the window when the user asks to quit with unsaved changes; the panel asks.
     void ask_to_quit() { quit_asked_ = true; }
     // True once the user has confirmed quitting (or exported first).
@@ -99,6 +103,7 @@ class Panels {
     // The scene's lights and ambient colour (Settings::lights), a window of the Animator
     // Interface opened from its menu bar (its panel has no room left at 1280x720).
     void lights_window(EditorSession &session);
+    void view_menu();
 
     Environment &env_;
     std::optional<Settings> settings_draft_;
@@ -115,6 +120,7 @@ class Panels {
     bool quit_asked_ = false, quit_confirmed_ = false;
     bool help_open_ = false;
     bool lights_open_ = false;
+    ViewSettings view_;
     std::string error_title_, error_text_;
     bool error_pending_ = false;
     bool recover_asked_ = false;

@@ -9,23 +9,74 @@
 
 namespace animator {
 
-OffscreenFramebuffer::OffscreenFramebuffer(int width, int height) : width_(width), height_(height) {
+namespace {
+
+// Colour (RGBA8) and depth-stencil renderbuffers of `samples` samples on a new framebuffer.
+unsigned make_framebuffer(int width, int height, int samples, unsigned &colour, unsigned *depth) {
+    unsigned framebuffer = 0;
+    glGenFramebuffers(1, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glGenRenderbuffers(1, &colour);
+    glBindRenderbuffer(GL_RENDERBUFFER, colour);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, GL_RGBA8, width,
+                                     height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
+    if (depth) {
+        glGenRenderbuffers(1, depth);
+        glBindRenderbuffer(GL_RENDERBUFFER, *depth);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0,
+                                         GL_DEPTH24_STENCIL8, width, height);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                  *depth);
+    }
+    return framebuffer;
+}
+
+} // namespace
+
+bool valid_sample_count(int samples) {
+    return samples == 1 || samples == 2 || samples == 4 || samples == 8;
+}
+
+const char *sample_counts_text() {
+    return "1, 2, 4 or 8";
+}
+
+int supported_samples(int asked, std::string *note) {
+    GLint most = 1;
+    glGetIntegerv(GL_MAX_SAMPLES, &most);
+    int samples = asked;
+    while (samples > 1 && samples > most) samples /= 2;
+    if (samples != asked && note)
+        *note = "anti-aliasing with " + std::to_string(asked) +
+                " samples is not possible on this OpenGL (at most " + std::to_string(most) +
+                "); drawing with " + std::to_string(samples);
+    return samples;
+}
+
+OffscreenFramebuffer::OffscreenFramebuffer(int width, int height, int samples)
+    : width_(width), height_(height), samples_(samples) {
     GLint largest = 0;
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &largest);
     if (width <= 0 || height <= 0 || width > largest || height > largest)
         throw RenderError("a frame of " + std::to_string(width) + "x" + std::to_string(height) +
                           " pixels is not possible (1 to " + std::to_string(largest) + " a side)");
-    glGenFramebuffers(1, &framebuffer_);
-    glGenRenderbuffers(1, &colour_);
-    glGenRenderbuffers(1, &depth_);
+    GLint most_samples = 0;
+    glGetIntegerv(GL_MAX_SAMPLES, &most_samples);
+    if (!valid_sample_count(samples) || samples > most_samples)
+        throw RenderError("anti-aliasing with " + std::to_string(samples) +
+                          " samples is not possible (" + sample_counts_text() + ", at most " +
+                          std::to_string(most_samples) + " on this OpenGL)");
+    framebuffer_ = make_framebuffer(width, height, samples, colour_, &depth_);
     glBindRenderbuffer(GL_RENDERBUFFER, colour_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_);
-    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    GLint given = 0;
+    glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &given);
+    actual_samples_ = std::max(1, static_cast<int>(given));
+    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status == GL_FRAMEBUFFER_COMPLETE && samples > 1) {
+        resolve_framebuffer_ = make_framebuffer(width, height, 1, resolve_colour_, nullptr);
+        status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         release();
@@ -42,13 +93,35 @@ void OffscreenFramebuffer::release() {
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteRenderbuffers(1, &colour_);
     glDeleteRenderbuffers(1, &depth_);
-    framebuffer_ = colour_ = depth_ = 0;
+    glDeleteFramebuffers(1, &resolve_framebuffer_);
+    glDeleteRenderbuffers(1, &resolve_colour_);
+    framebuffer_ = colour_ = depth_ = resolve_framebuffer_ = resolve_colour_ = 0;
+}
+
+unsigned OffscreenFramebuffer::resolved() const {
+    if (!resolve_framebuffer_) return framebuffer_;
+    // Each pixel's samples averaged into one (the multisample resolve).
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_framebuffer_);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    return resolve_framebuffer_;
+}
+
+void OffscreenFramebuffer::copy_to(const RenderTarget &target) const {
+    // A multisampled source may be blitted to a single-sampled target of its own size only.
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer);
+    glBlitFramebuffer(0, 0, width_, height_, target.x, target.y, target.x + width_,
+                      target.y + height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 void OffscreenFramebuffer::read_rgb(std::vector<std::uint8_t> &out) const {
     const size_t row = static_cast<size_t>(width_) * 3;
     out.resize(row * static_cast<size_t>(height_));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, out.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);

@@ -4,11 +4,14 @@
 #include "render/scene_math.hpp"
 
 #include <glad/gl.h>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <iostream>
+#include <limits>
 
 namespace animator {
 
@@ -312,8 +315,12 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
                     const std::set<int> &flagged) {
     stats_ = RenderStats{};
     bound_[0] = bound_[1] = 0;
-    current_program_ = nullptr;
+    const int count = static_cast<int>(std::min(models_.size(), frame.models.size()));
     prepare_frame(frame, target.width, target.height);
+    draw_shadow_maps(count);
+    current_program_ = nullptr;
+    // (Shadows fall in the models' cube maps too.)
+    if (frame_uniforms_.shadow_lights > 0) shadows_->bind(frame_uniforms_.shadow_lights);
     draw_reflections();
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     glViewport(target.x, target.y, target.width, target.height);
@@ -336,7 +343,6 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     glStencilFunc(GL_ALWAYS, 1, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     transparent_.clear();
-    const int count = static_cast<int>(std::min(models_.size(), frame.models.size()));
     for (int m = 0; m < count; ++m) {
         if (!gpu_meshes_[static_cast<size_t>(m)] || hidden_.count(m)) continue;
         if (!visible(m)) {
@@ -363,6 +369,61 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     glBindVertexArray(0);
     glUseProgram(0);
     glActiveTexture(GL_TEXTURE0);
+}
+
+void Renderer::draw_shadow_maps(int count) {
+    FrameUniforms &u = frame_uniforms_;
+    u.shadow_lights = 0;
+    if (!options_.shadows) return;
+    // The scene's bounds: a sphere around every drawn model's (transparent ones too, which
+    // receive shadows; they cast none, as glass would hardly).
+    glm::dvec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
+    bool any = false;
+    const auto sphere_of = [&](int m, glm::dvec3 &centre, double &radius) {
+        const Mesh &mesh = *meshes_[static_cast<size_t>(m)];
+        transform_bounding_sphere(world_[static_cast<size_t>(m)], mesh.bound_center,
+                                  mesh.bound_radius, centre, radius);
+    };
+    for (int m = 0; m < count; ++m) {
+        if (!gpu_meshes_[static_cast<size_t>(m)] || hidden_.count(m)) continue;
+        glm::dvec3 c;
+        double r = 0.0;
+        sphere_of(m, c, r);
+        low = glm::min(low, c - r);
+        high = glm::max(high, c + r);
+        any = true;
+    }
+    if (!any) return;
+    const glm::dvec3 centre = (low + high) * 0.5;
+    double radius = 1e-6;
+    for (int m = 0; m < count; ++m) {
+        if (!gpu_meshes_[static_cast<size_t>(m)] || hidden_.count(m)) continue;
+        glm::dvec3 c;
+        double r = 0.0;
+        sphere_of(m, c, r);
+        radius = std::max(radius, glm::length(c - centre) + r);
+    }
+    if (!shadows_) shadows_ = std::make_unique<ShadowPass>();
+    const int lights = std::min(u.light_count, kMaxShadowLights);
+    for (int i = 0; i < lights; ++i) {
+        const ShadowProjection p =
+            shadow_projection(glm::dvec3(u.light_position[static_cast<size_t>(i)]), centre, radius,
+                              options_.shadow_map_size);
+        shadows_->begin(i, options_.shadow_map_size, p);
+        for (int m = 0; m < count; ++m) {
+            if (!gpu_meshes_[static_cast<size_t>(m)] || hidden_.count(m) ||
+                models_[static_cast<size_t>(m)].transparency > 0.0)
+                continue;
+            shadows_->draw(*gpu_meshes_[static_cast<size_t>(m)],
+                           glm::mat4(world_[static_cast<size_t>(m)]));
+            ++stats_.shadow_casters;
+        }
+        shadows_->finish();
+        u.shadow_matrix[static_cast<size_t>(i)] = glm::mat4(p.world_to_map);
+        u.shadow_texel[static_cast<size_t>(i)] = static_cast<float>(p.texel_per_distance);
+    }
+    u.shadow_lights = lights;
+    stats_.shadow_maps = lights;
 }
 
 void Renderer::draw_outlines(const std::set<int> &selected, const std::set<int> &flagged, int width, int height) {

@@ -22,11 +22,12 @@
 #include "render/frustum.hpp"
 #include "render/gpu_mesh.hpp"
 #include "render/gpu_texture.hpp"
+#include "render/motion_path_overlay.hpp"
 #include "render/picking_pass.hpp"
 #include "render/reflection_probes.hpp"
-#include "render/motion_path_overlay.hpp"
 #include "render/selection_outline.hpp"
 #include "render/shading_programs.hpp"
+#include "render/shadow_pass.hpp"
 #include "render/uniform_values.hpp"
 #include "timeline/timeline.hpp"
 
@@ -64,6 +65,10 @@ struct RenderOptions {
     // At most this many such models get one in a frame, the nearest the camera first; the
     // others show the skybox only (said once in the log).
     int reflection_models = 8;
+    // Shadows from the first kMaxShadowLights lights (the document's, or the camera's), each a
+    // shadow map of shadow_map_size texels square (shadow_pass.hpp).
+    bool shadows = true;
+    int shadow_map_size = 1024;
 };
 
 // What the last draw did, counted: the observable seam for tests (and a debug overlay) that a
@@ -74,6 +79,8 @@ struct RenderStats {
     std::size_t program_binds = 0;
     std::size_t texture_binds = 0;  // 2D textures bound
     std::size_t cube_map_binds = 0; // skybox cube maps bound (the skybox, or reflection's)
+    int shadow_maps = 0;            // shadow maps drawn (one a shadow-casting light)
+    std::size_t shadow_casters = 0; // models drawn into them, summed over the maps
     bool skybox_drawn = false;
     std::size_t reflection_maps = 0; // cube maps of the models around drawn (six faces each)
     std::uint32_t features_used = 0; // the union of the feature sets asked of the shading plugin
@@ -115,6 +122,12 @@ class Renderer {
     const RenderStats &stats() const { return stats_; }
     ShadingPrograms &programs() { return *programs_; }
     const RenderOptions &options() const { return options_; }
+    // Shadows on or off, and the size of their maps (the editor's View menu, a fallback when a
+    // frame takes too long), from the next draw on.
+    void set_shadows(bool on, int map_size) {
+        options_.shadows = on;
+        options_.shadow_map_size = map_size;
+    }
 
   private:
     void prepare_frame(const Frame &frame, int width, int height);
@@ -128,6 +141,8 @@ class Renderer {
     // Each reflective or transparent model's view of the others, drawn into its cube map.
     void draw_reflections();
     void bind(unsigned unit, unsigned target, unsigned name, std::size_t &counter);
+    // The shadow maps of the frame prepare_frame() set up, for its first `count` models.
+    void draw_shadow_maps(int count);
 
     const AssetPaths &assets_;
     RenderOptions options_;
@@ -145,6 +160,7 @@ class Renderer {
     std::optional<GpuTexture> background_cube_; // reflection and refraction without a skybox
     std::unique_ptr<GpuMesh> skybox_cube_;
     std::unique_ptr<PickingPass> picking_;
+    std::unique_ptr<ShadowPass> shadows_;
     std::unique_ptr<SelectionOutline> outline_;
     std::unique_ptr<MotionPathOverlay> paths_;
     std::set<int> hidden_;

@@ -28,6 +28,8 @@ GLenum gl_type(ani_uniform_type type) {
         return GL_SAMPLER_2D;
     case ANI_UNIFORM_SAMPLER_CUBE:
         return GL_SAMPLER_CUBE;
+    case ANI_UNIFORM_SAMPLER_2D_SHADOW:
+        return GL_SAMPLER_2D_SHADOW;
     }
     return 0;
 }
@@ -122,6 +124,8 @@ std::unique_ptr<LinkedProgram> ShadingPrograms::link(const ani_shader_program &s
         }
         if (*semantic == UniformSemantic::Texture) glUniform1i(bound.location, kTextureUnit);
         if (*semantic == UniformSemantic::Skybox) glUniform1i(bound.location, kSkyboxUnit);
+        if (*semantic == UniformSemantic::ShadowMapAt)
+            glUniform1i(bound.location, kFirstShadowUnit + light);
         linked->uniforms.push_back(bound);
     }
     glUseProgram(0);

@@ -21,6 +21,7 @@ namespace animator {
 // Texture units the host binds samplers to.
 constexpr int kTextureUnit = 0;
 constexpr int kSkyboxUnit = 1;
+constexpr int kFirstShadowUnit = 2; // light N's shadow map on kFirstShadowUnit + N
 
 struct BoundUniform {
     int location = -1;

@@ -32,6 +32,7 @@ constexpr Known kKnown[] = {
     {"skybox", UniformSemantic::Skybox, ANI_UNIFORM_SAMPLER_CUBE},
     {"selected_tint", UniformSemantic::SelectedTint, ANI_UNIFORM_VEC4},
     {"light_count", UniformSemantic::LightCount, ANI_UNIFORM_INT},
+    {"shadow_lights", UniformSemantic::ShadowLights, ANI_UNIFORM_INT},
 };
 
 // "light_position:N" and the like: one of the scene's lights, N in 0..kMaxShadingLights-1.
@@ -41,13 +42,20 @@ constexpr Known kPerLight[] = {
     {"light_falloff:", UniformSemantic::LightFalloffAt, ANI_UNIFORM_VEC3},
 };
 
+// "shadow_map:N" and the like: the shadow map of light N, N in 0..kMaxShadowSemantics-1.
+constexpr Known kPerShadow[] = {
+    {"shadow_matrix:", UniformSemantic::ShadowMatrixAt, ANI_UNIFORM_MAT4},
+    {"shadow_map:", UniformSemantic::ShadowMapAt, ANI_UNIFORM_SAMPLER_2D_SHADOW},
+    {"shadow_texel:", UniformSemantic::ShadowTexelAt, ANI_UNIFORM_FLOAT},
+};
+
 constexpr const char kParamPrefix[] = "param:";
 
-// N of "<prefix>N": one decimal digit below kMaxShadingLights, nothing else; -1 otherwise.
-int light_index(const std::string &text, const std::string &prefix) {
+// N of "<prefix>N": one decimal digit below `count`, nothing else; -1 otherwise.
+int light_index(const std::string &text, const std::string &prefix, int count = kMaxShadingLights) {
     if (text.size() != prefix.size() + 1 || text.compare(0, prefix.size(), prefix) != 0) return -1;
     const int n = text.back() - '0';
-    return n >= 0 && n < kMaxShadingLights ? n : -1;
+    return n >= 0 && n < count ? n : -1;
 }
 
 } // namespace
@@ -65,6 +73,12 @@ std::optional<UniformSemantic> parse_semantic(const std::string &text, std::stri
         if (light) *light = n;
         return k.semantic;
     }
+    for (const Known &k : kPerShadow) {
+        const int n = light_index(text, k.name, kMaxShadowSemantics);
+        if (n < 0) continue;
+        if (light) *light = n;
+        return k.semantic;
+    }
     for (const Known &k : kKnown)
         if (text == k.name) return k.semantic;
     return std::nullopt;
@@ -77,6 +91,8 @@ bool semantic_accepts(UniformSemantic semantic, ani_uniform_type type) {
     for (const Known &k : kKnown)
         if (k.semantic == semantic) return k.type == type;
     for (const Known &k : kPerLight)
+        if (k.semantic == semantic) return k.type == type;
+    for (const Known &k : kPerShadow)
         if (k.semantic == semantic) return k.type == type;
     return false;
 }

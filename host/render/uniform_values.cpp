@@ -103,8 +103,19 @@ void apply_uniforms(const LinkedProgram &program, const ShadingPrograms &program
         case UniformSemantic::Param:
             set_param(u, programs.param_value(u.param));
             break;
+        case UniformSemantic::ShadowLights:
+            glUniform1i(at, frame.shadow_lights);
+            break;
+        case UniformSemantic::ShadowMatrixAt:
+            glUniformMatrix4fv(at, 1, GL_FALSE,
+                               glm::value_ptr(frame.shadow_matrix[static_cast<size_t>(u.light)]));
+            break;
+        case UniformSemantic::ShadowTexelAt:
+            glUniform1f(at, frame.shadow_texel[static_cast<size_t>(u.light)]);
+            break;
         case UniformSemantic::Texture:
         case UniformSemantic::Skybox:
+        case UniformSemantic::ShadowMapAt:
             break; // units set at link time
         }
     }

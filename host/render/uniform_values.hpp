@@ -22,6 +22,11 @@ struct FrameUniforms {
     int light_count = 1;
     std::array<glm::vec3, kMaxShadingLights> light_position{}, light_colour{}, light_falloff{};
     glm::vec4 selected_tint{0.0f}; // the colour and how much of it covers a selected model
+    // Lights 0..shadow_lights-1 have a shadow map (shadow_pass.hpp): world to map, and a texel's
+    // width at distance 1 from the light.
+    int shadow_lights = 0;
+    std::array<glm::mat4, kMaxShadowSemantics> shadow_matrix{};
+    std::array<float, kMaxShadowSemantics> shadow_texel{};
 };
 
 struct ModelUniforms {

@@ -67,8 +67,44 @@ uniform vec4 cel_outline_colour;
 #ifdef SELECTED
 uniform vec4 selected_tint;
 #endif
+// Shadow maps of the first shadow_lights lights (0 when shadows are off): world to each map, a
+// texel's width at distance 1 from its light, and the map (a depth comparison, lit outside it).
+uniform int shadow_lights;
+uniform mat4 shadow_matrices[MAX_SHADOW_LIGHTS];
+uniform float shadow_texels[MAX_SHADOW_LIGHTS];
+uniform sampler2DShadow shadow_map0;
+uniform sampler2DShadow shadow_map1;
+uniform sampler2DShadow shadow_map2;
+uniform sampler2DShadow shadow_map3;
 
 out vec4 colour;
+
+// How much of the light reaches p, 0..1: percentage-closer filtering (Reeves, Salesin and Cook
+// 1987) over 3x3 bilinear comparisons one texel apart, so a shadow's edge is soft over about
+// three texels.
+float lit_fraction(sampler2DShadow map, mat4 to_map, vec3 p) {
+    vec4 q = to_map * vec4(p, 1.0);
+    if (q.w <= 0.0) return 1.0; // behind the light
+    vec3 t = q.xyz / q.w;
+    if (t.z >= 1.0) return 1.0; // beyond the map's far plane
+    vec2 texel = 1.0 / vec2(textureSize(map, 0));
+    float lit = 0.0;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) lit += texture(map, vec3(t.xy + vec2(x, y) * texel, t.z));
+    return lit / 9.0;
+}
+
+// Light i's share at p (normal n towards the light, distance to it d): the point is pushed along
+// its normal by 1.5 texels of the map there (normal offset), so a lit surface never shadows
+// itself while its shadow stays attached (the host's depth pass adds a slope-scaled bias).
+float light_share(int i, vec3 p, vec3 n, float d) {
+    if (i >= shadow_lights) return 1.0;
+    vec3 q = p + n * (1.5 * shadow_texels[i] * d);
+    if (i == 0) return lit_fraction(shadow_map0, shadow_matrices[0], q);
+    if (i == 1) return lit_fraction(shadow_map1, shadow_matrices[1], q);
+    if (i == 2) return lit_fraction(shadow_map2, shadow_matrices[2], q);
+    return lit_fraction(shadow_map3, shadow_matrices[3], q);
+}
 
 #ifdef CEL
 // The seed's step10 with `bands` steps: n < i / bands gives i / bands, so 0 gives the first band
@@ -96,8 +132,10 @@ void main() {
         vec3 light = light_colours[i] / (f.x + f.y * r + f.z * r * r);
         vec3 to_light = normalize(d);
         float diffuse = max(dot(n, to_light), 0.0);
+        if (diffuse <= 0.0) continue; // facing away: no light, no shadow to look up
+        light *= light_share(i, world_position, n, r);
         c += light * base * diffuse;
-        if (shininess < SHININESS_MAX && diffuse > 0.0) {
+        if (shininess < SHININESS_MAX) {
             float facing = max(dot(reflect(-to_light, n), to_eye), 0.0);
             c += light * ks * pow(max(facing, 1e-8), shininess);
         }

@@ -19,6 +19,9 @@ std::string header(uint32_t features) {
     h += max_line;
     (void)std::snprintf(max_line, sizeof max_line, "#define MAX_LIGHTS %d\n", ANI_MAX_LIGHTS);
     h += max_line;
+    (void)std::snprintf(max_line, sizeof max_line, "#define MAX_SHADOW_LIGHTS %d\n",
+                        ANI_MAX_SHADOW_LIGHTS);
+    h += max_line;
     if (features & ANI_SHADE_TEXTURE) h += "#define TEXTURE 1\n";
     if (features & ANI_SHADE_REFLECTION) h += "#define REFLECTION 1\n";
     if (features & ANI_SHADE_REFRACTION) h += "#define REFRACTION 1\n";
@@ -44,6 +47,18 @@ const ani_uniform_desc kLightUniforms[] = {LIGHT_UNIFORMS(0), LIGHT_UNIFORMS(1),
                                            LIGHT_UNIFORMS(6), LIGHT_UNIFORMS(7)};
 #undef LIGHT_UNIFORMS
 static_assert(sizeof kLightUniforms / sizeof kLightUniforms[0] == 3 * ANI_MAX_LIGHTS);
+
+// Each shadow map's uniforms (ABI 1.9, shading.h).
+// clang-format off
+#define SHADOW_UNIFORMS(N)                                                                         \
+    {"shadow_matrices[" #N "]", ANI_UNIFORM_MAT4, "shadow_matrix:" #N},                            \
+    {"shadow_texels[" #N "]", ANI_UNIFORM_FLOAT, "shadow_texel:" #N},                              \
+    {"shadow_map" #N, ANI_UNIFORM_SAMPLER_2D_SHADOW, "shadow_map:" #N}
+// clang-format on
+const ani_uniform_desc kShadowUniforms[] = {SHADOW_UNIFORMS(0), SHADOW_UNIFORMS(1),
+                                            SHADOW_UNIFORMS(2), SHADOW_UNIFORMS(3)};
+#undef SHADOW_UNIFORMS
+static_assert(sizeof kShadowUniforms / sizeof kShadowUniforms[0] == 3 * ANI_MAX_SHADOW_LIGHTS);
 
 } // namespace
 
@@ -73,6 +88,8 @@ ProgramSource build_program(uint32_t features) {
     add(u, "camera_position", ANI_UNIFORM_VEC3, "camera_position");
     add(u, "light_count", ANI_UNIFORM_INT, "light_count");
     u.insert(u.end(), std::begin(kLightUniforms), std::end(kLightUniforms));
+    add(u, "shadow_lights", ANI_UNIFORM_INT, "shadow_lights");
+    u.insert(u.end(), std::begin(kShadowUniforms), std::end(kShadowUniforms));
     add(u, "ambient", ANI_UNIFORM_VEC3, "ambient");
     add(u, "kd", ANI_UNIFORM_VEC3, "kd");
     add(u, "ks", ANI_UNIFORM_VEC3, "ks");

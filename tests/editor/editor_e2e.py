@@ -1308,6 +1308,12 @@ def case_cel_outline(c):
     """The Outlines checkbox beside Cel Shading draws the cel outline around the ball; it is
     saved in the document as the shading plugin's parameter, and undo takes it back."""
     c.write('ball.ani', BALL_ANI)
+    # Single-sampled (View > Anti-aliasing > Off, kept in the state folder): the pixels counted
+    # below are the outline's pure black ones, which anti-aliasing blends with the background
+    # along the silhouette.
+    os.makedirs(os.path.join(c.state, 'animator'), exist_ok=True)
+    with open(os.path.join(c.state, 'animator', 'view'), 'w', encoding='utf-8') as f:
+        f.write('msaa 1\nshadows 1\n')
     e = c.start('ball.ani')
     e.click(*CEL_CHECKBOX)
     e.mouse_away()

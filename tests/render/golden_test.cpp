@@ -20,9 +20,19 @@ namespace {
 // not).
 const Tolerance kTolerance{48.0, 0.005, 1.0};
 
-Image check(const std::string &name, const Document &doc, const std::set<int> &selected = {},
-            const RenderOptions &options = {}) {
-    const Rendered r = render_document(doc, 160, 120, selected, options);
+// These goldens show each effect on its own, as before shadows, anti-aliasing and reflections
+// of other models came (each has goldens of their own: shadow_test, antialiasing_test,
+// reflection_probes_test), so they draw without shadows, single-sampled, and reflect and refract
+// the skybox only.
+RenderOptions without_shadows() {
+    RenderOptions o;
+    o.shadows = false;
+    o.reflection_size = 0;
+    return o;
+}
+
+Image check(const std::string &name, const Document &doc, const std::set<int> &selected = {}) {
+    const Rendered r = render_document(doc, 160, 120, selected, without_shadows());
     for (const std::string &line : r.log) UNSCOPED_INFO(line);
     CHECK(r.log.empty());
     const std::string problem = check_golden(name, r.image, kTolerance);
@@ -105,9 +115,7 @@ TEST_CASE("golden: reflection mapping samples the skybox along the reflected ray
     half.reflectivity = 0.5;
     doc.add_model(mirror, make_state({-1.2, 0, 0}));
     doc.add_model(half, make_state({1.2, 0, 0}));
-    RenderOptions skybox_only; // (each seeing the other: reflection_probes_test.cpp)
-    skybox_only.reflection_size = 0;
-    check("reflection", doc, {}, skybox_only);
+    check("reflection", doc);
 }
 
 TEST_CASE("golden: refraction with ratio 1 / refractive index, blended by transparency") {
@@ -159,7 +167,7 @@ TEST_CASE("golden: a selected model is tinted yellow and outlined") {
             make_model("ball" + std::to_string(i), "sphere", {0.2, 0.4, 0.8}, {0.5, 0.5, 0.5}, 30),
             make_state({-2.2 + 2.2 * i, 0, 0}, glm::dvec3(0.9)));
     check("selected", doc, {2}); // the middle ball (the floor is model 0)
-    check_differs("selected", render_document(doc, 160, 120, {}).image);
+    check_differs("selected", render_document(doc, 160, 120, {}, without_shadows()).image);
 }
 
 namespace {
@@ -190,5 +198,6 @@ Document lit_scene(bool lights) {
 TEST_CASE("golden: the document's two coloured lights with falloff and its ambient") {
     check("lights_two", lit_scene(true));
     // Not the camera's light: the same scene without the document's lights looks otherwise.
-    check_differs("lights_two", render_document(lit_scene(false), 160, 120).image);
+    check_differs("lights_two",
+                  render_document(lit_scene(false), 160, 120, {}, without_shadows()).image);
 }

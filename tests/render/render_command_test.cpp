@@ -94,6 +94,33 @@ TEST_CASE("animator render takes shading parameters and reports bad input") {
         test::run_animator("render " + drop + " --out " + out.string() + " --size 640").exit_code ==
         2);
     CHECK(test::run_animator("render " + drop).exit_code == 2); // no --out
+    for (const char *samples : {"3", "16", "0", "four"}) {
+        CAPTURE(samples);
+        auto msaa = test::run_animator("render " + drop + " --out " + out.string() +
+                                       " --to 0 --msaa " + samples);
+        CHECK(msaa.exit_code == 2);
+        CHECK_THAT(msaa.out, Catch::Contains("--msaa takes the samples per pixel, 1, 2, 4 or 8"));
+    }
+    // --no-shadows: the same frame without the ball's shadow on the floor, so other pixels (at
+    // 0.88 s the ball, dropped from 4 m above the floor, is about to land: its shadow, cast by the
+    // camera's light, is just behind it).
+    auto shadowless =
+        test::run_animator("render " + drop + " --out " + (out / "shadowless").string() +
+                               " --from 0.88 --to 0.88 --size 64x48 --no-shadows",
+                           kNoDisplay);
+    CHECK(shadowless.exit_code == 0);
+    auto shadowed = test::run_animator("render " + drop + " --out " + (out / "shadowed").string() +
+                                           " --from 0.88 --to 0.88 --size 64x48",
+                                       kNoDisplay);
+    CHECK(shadowed.exit_code == 0);
+    const Image with = load_image(out / "shadowed" / "frame_00000.png");
+    const Image without = load_image(out / "shadowless" / "frame_00000.png");
+    CHECK(test::compare_images(with, without).max > 20.0);
+    // More samples than the OpenGL gives (llvmpipe: 4) draws with fewer, saying so, not a failure.
+    auto eight = test::run_animator(
+        "render " + drop + " --out " + (out / "eight").string() + " --to 0 --msaa 8", kNoDisplay);
+    CHECK(eight.exit_code == 0);
+    CHECK(count_frames(out / "eight") == 1);
     auto help = test::run_animator("render --help");
     CHECK(help.exit_code == 0);
     CHECK_THAT(help.out,

@@ -92,15 +92,17 @@ Frame first_frame(const Document &doc) {
 }
 
 Rendered render_frame(const Document &doc, const Frame &frame, int width, int height,
-                      const std::set<int> &selected, RenderOptions options, const std::set<int> &flagged) {
+                      const std::set<int> &selected, RenderOptions options,
+                      const std::set<int> &flagged, int samples) {
     gl_context();
     Rendered out;
     Renderer renderer(environment().plugins, environment().assets, std::move(options),
                       [&](const std::string &m) { out.log.push_back(m); });
     renderer.set_document(doc, meshes_of(doc));
-    OffscreenFramebuffer framebuffer(width, height);
+    OffscreenFramebuffer framebuffer(width, height, samples);
     renderer.draw(frame, framebuffer.target(), selected, flagged);
     out.stats = renderer.stats();
+    out.samples = framebuffer.actual_samples();
     out.image.width = width;
     out.image.height = height;
     framebuffer.read_rgb(out.image.rgb);
@@ -108,8 +110,9 @@ Rendered render_frame(const Document &doc, const Frame &frame, int width, int he
 }
 
 Rendered render_document(const Document &doc, int width, int height, const std::set<int> &selected,
-                         RenderOptions options, const std::set<int> &flagged) {
-    return render_frame(doc, first_frame(doc), width, height, selected, std::move(options), flagged);
+                         RenderOptions options, const std::set<int> &flagged, int samples) {
+    return render_frame(doc, first_frame(doc), width, height, selected, std::move(options), flagged,
+                        samples);
 }
 
 glm::ivec3 pixel(const Image &image, int x, int y) {

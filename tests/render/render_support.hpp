@@ -42,16 +42,18 @@ struct Rendered {
     Image image;
     RenderStats stats;
     std::vector<std::string> log; // the renderer's warnings
+    int samples = 1;              // the samples a pixel GL gave (it may give more than asked)
 };
 
-// Draws `frame` of `doc` into a fresh off-screen framebuffer of width x height.
+// Draws `frame` of `doc` into a fresh off-screen framebuffer of width x height, with `samples`
+// samples a pixel (multisample anti-aliasing; 1 is none).
 Rendered render_frame(const Document &doc, const Frame &frame, int width, int height,
                       const std::set<int> &selected = {}, RenderOptions options = {},
-                      const std::set<int> &flagged = {});
+                      const std::set<int> &flagged = {}, int samples = 1);
 // The same for the first frame.
 Rendered render_document(const Document &doc, int width = 160, int height = 120,
                          const std::set<int> &selected = {}, RenderOptions options = {},
-                         const std::set<int> &flagged = {});
+                         const std::set<int> &flagged = {}, int samples = 1);
 
 // The colour at pixel (x, y) from the top left.
 glm::ivec3 pixel(const Image &image, int x, int y);

@@ -57,6 +57,10 @@ TEST_CASE("shading.phong hands over a program with exactly the uniforms of each 
          {"light_count", "light_position:0", "light_colour:0", "light_falloff:0",
           "light_position:7", "light_colour:7", "light_falloff:7"})
         CHECK(has(plain, light));
+    // The shadow maps (ABI 1.9): how many, and each one's matrix, map and texel size.
+    for (const char *shadow : {"shadow_lights", "shadow_matrix:0", "shadow_map:0", "shadow_texel:0",
+                               "shadow_matrix:3", "shadow_map:3", "shadow_texel:3"})
+        CHECK(has(plain, shadow));
     for (const char *unused : {"texture", "skybox", "tint", "reflectivity", "transparency",
                                "selected_tint", "param:cel_bands"})
         CHECK_FALSE(has(plain, unused));
@@ -99,6 +103,16 @@ TEST_CASE("every shading.phong program compiles and links on Mesa, with every un
         }
         CHECK(positions.size() == kMaxShadingLights);
         CHECK(falloffs.size() == kMaxShadingLights);
+        // And each shadow map's sampler, matrix and texel, once each.
+        std::set<int> maps, matrices, texels;
+        for (const BoundUniform &u : p.uniforms) {
+            if (u.semantic == UniformSemantic::ShadowMapAt) maps.insert(u.light);
+            if (u.semantic == UniformSemantic::ShadowMatrixAt) matrices.insert(u.light);
+            if (u.semantic == UniformSemantic::ShadowTexelAt) texels.insert(u.light);
+        }
+        CHECK(maps.size() == kMaxShadowSemantics);
+        CHECK(matrices.size() == kMaxShadowSemantics);
+        CHECK(texels.size() == kMaxShadowSemantics);
     }
     CHECK_FALSE(programs.get(ANI_SHADE_SKYBOX_PASS).built_in);
     for (const std::string &line : log) UNSCOPED_INFO(line);

@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <tuple>
+
 using namespace animator;
 
 TEST_CASE("every semantic of shading.h is known with its type, and param:<id> names a parameter") {
@@ -77,4 +79,29 @@ TEST_CASE("the lights' semantics: light_count, and light_position:N, light_colou
     CHECK(parse_semantic("light_colour", param) == UniformSemantic::LightColour);
     CHECK_FALSE(parse_semantic("light_falloff", param));
     CHECK(kMaxShadingLights == ANI_MAX_LIGHTS);
+}
+
+TEST_CASE("the shadows' semantics (ABI 1.9): shadow_lights, and shadow_matrix:N, shadow_map:N, "
+          "shadow_texel:N for N in 0..3") {
+    std::string param;
+    CHECK(parse_semantic("shadow_lights", param) == UniformSemantic::ShadowLights);
+    CHECK(semantic_accepts(UniformSemantic::ShadowLights, ANI_UNIFORM_INT));
+    const std::tuple<const char *, UniformSemantic, ani_uniform_type> per_shadow[] = {
+        {"shadow_matrix:", UniformSemantic::ShadowMatrixAt, ANI_UNIFORM_MAT4},
+        {"shadow_map:", UniformSemantic::ShadowMapAt, ANI_UNIFORM_SAMPLER_2D_SHADOW},
+        {"shadow_texel:", UniformSemantic::ShadowTexelAt, ANI_UNIFORM_FLOAT},
+    };
+    for (const auto &[prefix, semantic, type] : per_shadow) {
+        CAPTURE(prefix);
+        for (int n = 0; n < ANI_MAX_SHADOW_LIGHTS; ++n) {
+            int light = -1;
+            CHECK(parse_semantic(prefix + std::to_string(n), param, &light) == semantic);
+            CHECK(light == n);
+        }
+        CHECK(semantic_accepts(semantic, type));
+        CHECK_FALSE(semantic_accepts(semantic, ANI_UNIFORM_SAMPLER_2D));
+        for (const char *bad : {"4", "7", "", "-1", "01"})
+            CHECK_FALSE(parse_semantic(prefix + std::string(bad), param));
+    }
+    CHECK(kMaxShadowSemantics == ANI_MAX_SHADOW_LIGHTS);
 }

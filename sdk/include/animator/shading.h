@@ -31,15 +31,21 @@ typedef enum ani_uniform_type {
     ANI_UNIFORM_MAT3 = 5,
     ANI_UNIFORM_MAT4 = 6,
     ANI_UNIFORM_SAMPLER_2D = 7,
-    ANI_UNIFORM_SAMPLER_CUBE = 8
+    ANI_UNIFORM_SAMPLER_CUBE = 8,
+    ANI_UNIFORM_SAMPLER_2D_SHADOW = 9 /* ABI 1.9: a depth map with comparison, sampler2DShadow */
 } ani_uniform_type;
+
+/* ABI 1.9: the most lights with a shadow map (the first ones of the scene's). */
+#define ANI_MAX_SHADOW_LIGHTS 4
 
 /* A uniform and what the host puts in it. Semantics (docs/sdk.md lists them): "model",
  * "view", "projection", "normal_matrix", "camera_position", "light_position", "light_colour",
  * "ambient", "kd", "ks", "shininess", "tint", "reflectivity", "transparency",
  * "refractive_index", "texture", "skybox", "selected_tint", and "param:<id>" for the value of
  * one of the plugin's own parameters; since the scene's lights (appended, no ABI change):
- * "light_count", and "light_position:N", "light_colour:N", "light_falloff:N" for N in 0..7. */
+ * "light_count", and "light_position:N", "light_colour:N", "light_falloff:N" for N in 0..7;
+ * since ABI 1.9 (shadows): "shadow_lights", and "shadow_matrix:N", "shadow_map:N",
+ * "shadow_texel:N" for N in 0..3. */
 typedef struct ani_uniform_desc {
     const char *name; /* as in the GLSL */
     int32_t type;     /* ani_uniform_type */
@@ -99,7 +105,20 @@ typedef struct ani_shading_api {
  *   light_falloff:N  vec3  (c0, c1, c2): the light reaching distance d is
  *                          colour / (c0 + c1 d + c2 d^2); (1, 0, 0) for the camera's light and
  *                          for N >= light_count
- * A uniform array element may carry one ("light_positions[3]" with "light_position:3"). */
+ * A uniform array element may carry one ("light_positions[3]" with "light_position:3").
+ *
+ * Shadows (ABI 1.9; a plugin built for 1.8 or before gets none and draws as it did):
+ *   shadow_lights    int   how many lights have a shadow map: lights 0..shadow_lights-1, at
+ *                          most ANI_MAX_SHADOW_LIGHTS; 0 when shadows are off
+ *   shadow_matrix:N  mat4  world to light N's map: p = shadow_matrix * vec4(world, 1), then
+ *                          p.xyz / p.w has x and y 0..1 across the map and z its depth 0..1
+ *   shadow_map:N     sampler2DShadow  light N's map, compare mode LEQUAL, linear (each lookup
+ *                          is a 2x2 percentage-closer filter); outside the map is lit
+ *   shadow_texel:N   float the width of one of the map's texels at distance 1 from light N (at
+ *                          distance d, d times it): push the point along its normal (towards
+ *                          the light) by about 1.5 texels before the lookup, so a surface does
+ *                          not shadow itself; the host's depth pass adds a slope-scaled bias
+ * A map is bound only while shadow_lights says it is in use: look one up only for N below it. */
 
 #ifdef __cplusplus
 }

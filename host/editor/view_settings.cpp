@@ -1,0 +1,66 @@
+#include "editor/view_settings.hpp"
+
+#include "render/framebuffer.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace animator {
+
+fs::path view_settings_path() {
+    const char *state = std::getenv("XDG_STATE_HOME");
+    if (state && *state == '/') return fs::path(state) / "animator" / "view";
+    const char *home = std::getenv("HOME");
+    if (home && *home) return fs::path(home) / ".local" / "state" / "animator" / "view";
+    return {};
+}
+
+ViewSettings load_view_settings(const fs::path &file, std::string *warning) {
+    ViewSettings s;
+    std::error_code ec;
+    if (file.empty() || !fs::exists(file, ec)) return s;
+    std::ifstream in(file);
+    std::string line;
+    int number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        std::istringstream words(line);
+        std::string name;
+        int value = 0;
+        if (!(words >> name)) continue;
+        const bool read = static_cast<bool>(words >> value);
+        if (read && name == "msaa" && valid_sample_count(value)) {
+            s.msaa = value;
+        } else if (read && name == "shadows" && (value == 0 || value == 1)) {
+            s.shadows = value == 1;
+        } else if (warning && warning->empty()) {
+            *warning = file.string() + ":" + std::to_string(number) + ": '" + line +
+                       "' is not a View setting (msaa " + sample_counts_text() +
+                       ", shadows 0 or 1); ignored";
+        }
+    }
+    return s;
+}
+
+bool save_view_settings(const fs::path &file, const ViewSettings &settings, std::string *error) {
+    if (file.empty()) return true;
+    std::error_code ec;
+    fs::create_directories(file.parent_path(), ec);
+    std::ofstream out(file, std::ios::trunc);
+    out << "msaa " << settings.msaa << "\nshadows " << (settings.shadows ? 1 : 0) << "\n";
+    out.flush();
+    if (!out) {
+        if (error)
+            *error =
+                "cannot write the View settings " + file.string() + ": " + std::strerror(errno);
+        return false;
+    }
+    return true;
+}
+
+} // namespace animator

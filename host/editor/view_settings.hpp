@@ -1,0 +1,26 @@
+// The editor's View settings (anti-aliasing and shadows): how the 3D view is drawn, not part of
+// any animation. Kept beside the recent files list, in $XDG_STATE_HOME/animator/view
+// (~/.local/state/animator/view without it), one "name value" line each.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace animator {
+
+struct ViewSettings {
+    int msaa = 4;        // samples per pixel of the 3D view, 1, 2, 4 or 8 (1: no anti-aliasing)
+    bool shadows = true; // shadow maps from the scene's lights
+};
+
+// Where the View settings are kept; empty without XDG_STATE_HOME or HOME.
+std::filesystem::path view_settings_path();
+
+// The settings in `file`; the defaults for a missing file or a line it does not understand
+// (`warning` then says which, once).
+ViewSettings load_view_settings(const std::filesystem::path &file, std::string *warning = nullptr);
+// Writes them, making the folder; false with `error` set when it cannot.
+bool save_view_settings(const std::filesystem::path &file, const ViewSettings &settings,
+                        std::string *error = nullptr);
+
+} // namespace animator
