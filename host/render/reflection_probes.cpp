@@ -85,9 +85,9 @@ unsigned ReflectionProbes::texture(int model) const {
     return found == probes_.end() ? 0 : found->second.texture;
 }
 
-void ReflectionProbes::keep_only(const std::set<int> &kept) {
+void ReflectionProbes::keep_only(const std::function<bool(int)> &kept) {
     for (auto it = probes_.begin(); it != probes_.end();) {
-        if (kept.count(it->first)) {
+        if (kept(it->first)) {
             ++it;
             continue;
         }

@@ -10,7 +10,6 @@
 
 #include <functional>
 #include <map>
-#include <set>
 
 namespace animator {
 
@@ -35,8 +34,8 @@ class ReflectionProbes {
               const std::function<void(const glm::dmat4 &, const glm::dmat4 &)> &draw_face);
     // Model `model`'s cube map (a GL texture name) if drawn, else 0.
     unsigned texture(int model) const;
-    // Frees the cube maps of models not in `kept`.
-    void keep_only(const std::set<int> &kept);
+    // Frees the cube maps of the models `kept` says false of.
+    void keep_only(const std::function<bool(int)> &kept);
 
   private:
     struct Probe {

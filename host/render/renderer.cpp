@@ -250,16 +250,16 @@ void Renderer::draw_transparent(int m, bool selected) {
 }
 
 void Renderer::draw_reflections() {
-    std::vector<std::pair<double, int>> wanted; // (distance to the camera, model)
+    std::vector<std::pair<double, int>> &wanted = reflecting_; // (distance to the camera, model)
+    wanted.clear();
     const int count = static_cast<int>(std::min(models_.size(), world_.size()));
+    const glm::dvec3 eye(frame_uniforms_.camera_position);
     if (options_.reflection_size > 0)
         for (int m = 0; m < count; ++m) {
             const Model &model = models_[static_cast<size_t>(m)];
-            const auto &mesh = meshes_[static_cast<size_t>(m)];
-            if (!gpu_meshes_[static_cast<size_t>(m)] || mesh->stand_in || !visible(m) ||
-                (model.reflectivity <= 0.0 && model.transparency <= 0.0))
+            if (!gpu_meshes_[static_cast<size_t>(m)] || meshes_[static_cast<size_t>(m)]->stand_in ||
+                (model.reflectivity <= 0.0 && model.transparency <= 0.0) || !visible(m))
                 continue;
-            const glm::dvec3 eye(frame_uniforms_.camera_position);
             wanted.emplace_back(glm::length(glm::dvec3(world_[static_cast<size_t>(m)][3]) - eye), m);
         }
     std::sort(wanted.begin(), wanted.end());
@@ -272,10 +272,10 @@ void Renderer::draw_reflections() {
         told_reflection_limit_ = true;
         wanted.resize(most);
     }
-    std::set<int> drawn;
-    for (const auto &[distance, m] : wanted) drawn.insert(m);
-    probes_.keep_only(drawn);
-    if (drawn.empty()) return;
+    probes_.keep_only([&](int m) {
+        return std::any_of(wanted.begin(), wanted.end(), [&](const auto &w) { return w.second == m; });
+    });
+    if (wanted.empty()) return;
     // The frame as the camera sees it, put back after.
     const FrameUniforms camera = frame_uniforms_;
     const glm::dmat4 view = view_, view_projection = view_projection_;

@@ -178,6 +178,7 @@ class Renderer {
     unsigned bound_[2] = {0, 0}; // the texture names bound on the two units this frame
     const LinkedProgram *current_program_ = nullptr;
     std::vector<std::pair<double, int>> transparent_; // (view-space z, model): far ones first
+    std::vector<std::pair<double, int>> reflecting_;  // (distance to the camera, model): nearest first
     RenderStats stats_;
 };
 
