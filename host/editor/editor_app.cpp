@@ -783,6 +783,8 @@ int run_editor(const EditorOptions &options) {
                 const RenderTarget scene_target = view_buffer ? view_buffer->target() : target;
                 renderer.set_shadows(panels.view_settings().shadows,
                                      renderer.options().shadow_map_size);
+                renderer.set_reflections(
+                    panels.view_settings().reflections ? RenderOptions{}.reflection_size : 0);
                 renderer.draw(session.shown_frame(), scene_target, session.selection(),
                               session.overlapping_models());
                 renderer.draw_paths(path_lines.get(session), scene_target);

@@ -225,6 +225,10 @@ void Panels::view_menu() {
     const ViewSettings before = view_;
     if (ImGui::MenuItem("Shadows", nullptr, view_.shadows)) view_.shadows = !view_.shadows;
     tip("Shadows cast by the scene's lights (shadow maps with soft edges); off draws faster");
+    if (ImGui::MenuItem("Reflections of other models", nullptr, view_.reflections))
+        view_.reflections = !view_.reflections;
+    tip("Reflective and transparent models show the models around them (a cube map each, drawn "
+        "every frame); off: the skybox only, and faster");
     if (ImGui::BeginMenu("Anti-aliasing")) {
         for (const int samples : {1, 2, 4, 8}) {
             const std::string label =
@@ -236,7 +240,8 @@ void Panels::view_menu() {
     }
     tip("Smooth edges in the 3D view: samples per pixel (multisampling); Off draws faster");
     ImGui::EndMenu();
-    if (view_.msaa != before.msaa || view_.shadows != before.shadows) {
+    if (view_.msaa != before.msaa || view_.shadows != before.shadows ||
+        view_.reflections != before.reflections) {
         std::string error;
         if (!save_view_settings(view_settings_path(), view_, &error)) say(error, true);
     }

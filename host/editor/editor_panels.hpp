@@ -72,7 +72,7 @@ class Panels {
 
     // The File menu (the Animator Interface's menu bar) and its keys.
     FileMenu &files() { return files_; }
-    // The View menu's settings (anti-aliasing, shadows), loaded at the start and saved on change.
+    // The View menu's settings (anti-aliasing, shadows, reflections), loaded at the start and saved on change.
     const ViewSettings &view_settings() const { return view_; }
     void load_view_settings();
     // Set by the window when the user asks to quit with unsaved changes; the panel asks.

@@ -38,10 +38,12 @@ ViewSettings load_view_settings(const fs::path &file, std::string *warning) {
             s.msaa = value;
         } else if (read && name == "shadows" && (value == 0 || value == 1)) {
             s.shadows = value == 1;
+        } else if (read && name == "reflections" && (value == 0 || value == 1)) {
+            s.reflections = value == 1;
         } else if (warning && warning->empty()) {
             *warning = file.string() + ":" + std::to_string(number) + ": '" + line +
                        "' is not a View setting (msaa " + sample_counts_text() +
-                       ", shadows 0 or 1); ignored";
+                       ", shadows 0 or 1, reflections 0 or 1); ignored";
         }
     }
     return s;
@@ -52,7 +54,8 @@ bool save_view_settings(const fs::path &file, const ViewSettings &settings, std:
     std::error_code ec;
     fs::create_directories(file.parent_path(), ec);
     std::ofstream out(file, std::ios::trunc);
-    out << "msaa " << settings.msaa << "\nshadows " << (settings.shadows ? 1 : 0) << "\n";
+    out << "msaa " << settings.msaa << "\nshadows " << (settings.shadows ? 1 : 0)
+        << "\nreflections " << (settings.reflections ? 1 : 0) << "\n";
     out.flush();
     if (!out) {
         if (error)

@@ -1,4 +1,4 @@
-// The editor's View settings (anti-aliasing and shadows): how the 3D view is drawn, not part of
+// The editor's View settings (anti-aliasing, shadows, reflections of other models): how the 3D view is drawn, not part of
 // any animation. Kept beside the recent files list, in $XDG_STATE_HOME/animator/view
 // (~/.local/state/animator/view without it), one "name value" line each.
 #pragma once
@@ -11,6 +11,9 @@ namespace animator {
 struct ViewSettings {
     int msaa = 4;        // samples per pixel of the 3D view, 1, 2, 4 or 8 (1: no anti-aliasing)
     bool shadows = true; // shadow maps from the scene's lights
+    // Reflective and transparent models show the models around them (a cube map each, drawn
+    // every frame: render/reflection_probes.hpp); off: the skybox only.
+    bool reflections = true;
 };
 
 // Where the View settings are kept; empty without XDG_STATE_HOME or HOME.

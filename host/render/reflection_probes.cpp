@@ -43,8 +43,9 @@ void ReflectionProbes::draw(
         for (GLenum f = 0; f < 6; ++f)
             glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_RGBA8, size, size, 0, GL_RGBA,
                          GL_UNSIGNED_BYTE, nullptr);
-        // Drawn anew every frame: no mipmaps to make again.
-        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        // Mipmapped as the skybox is: along a silhouette the shading is extrapolated, and a
+        // reflected direction there jumps from pixel to pixel; a single level then sparkles.
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
             glTexParameteri(GL_TEXTURE_CUBE_MAP, wrap, GL_CLAMP_TO_EDGE);
@@ -78,6 +79,11 @@ void ReflectionProbes::draw(
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         draw_face(face_view(f, centre), projection);
     }
+    GLint held = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_CUBE_MAP, &held);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, probe.texture);
+    glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, static_cast<GLuint>(held));
 }
 
 unsigned ReflectionProbes::texture(int model) const {

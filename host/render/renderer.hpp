@@ -124,6 +124,8 @@ class Renderer {
     const RenderOptions &options() const { return options_; }
     // Shadows on or off, and the size of their maps (the editor's View menu, a fallback when a
     // frame takes too long), from the next draw on.
+    // The side of the models' cube maps of the models around them (0: the skybox only).
+    void set_reflections(int size) { options_.reflection_size = size; }
     void set_shadows(bool on, int map_size) {
         options_.shadows = on;
         options_.shadow_map_size = map_size;
