@@ -4,11 +4,16 @@
 # some reflective), opens it in the editor under Xvfb (software OpenGL: Mesa's llvmpipe), plays
 # its 5 s twice (the second time all baked) and prints the rate the editor drew at the second
 # time ("animator: played N frames in T s (F fps)"), once per run.
-# Usage: tools/editor_fps.sh [build/bin/animator] [runs]
+# Usage: tools/editor_fps.sh [build/bin/animator] [runs] [models]
+# models (default 100): a floor and models - 1 balls. The View settings (shadows, anti-aliasing)
+# are the editor's own, from $XDG_STATE_HOME/animator/view: point XDG_STATE_HOME at a folder with
+# a `view` file of "msaa N" and "shadows 0|1" lines to measure each (docs/performance.md). The
+# frame budget that lowers them when frames are slow is off (ANIMATOR_FRAME_BUDGET=off).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=$(realpath "${1:-build/bin/animator}")
 runs=${2:-3}
+models=${3:-100}
 work=$(mktemp -d)
 xvfb=""
 editor=""
@@ -18,15 +23,16 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
-python3 - "$work/hundred.ani" <<'PY'
+python3 - "$work/hundred.ani" "$models" <<'PY'
 import sys
+balls = int(sys.argv[2]) - 1
 out = ['animator-ani 1', '# 100 models: a floor and 99 bouncing balls (tools/editor_fps.sh)', '',
        'settings', '  max_time_ms 5000', '  gravity 9.81', '  down y', '  cel_shading false',
        '  skybox "day"', '  physics_backend "physics.custom"', 'end', '',
        'model "floor"', '  mesh "plane"', '  kd 0.6 0.6 0.6', 'end', '']
 states = ['  camera position 0 12 30 rotation 0.9914449 -0.1305262 0 0 fov 50',
           '  state "floor" center 0 0 0 angles 0 0 0 scale 20 1 20 turn 0 0 0']
-for i in range(99):
+for i in range(balls):
     name = 'ball%02d' % i
     x, z = (i % 11) * 3.0 - 15.0, (i // 11) * 3.0 - 12.0
     out += ['model "%s"' % name, '  mesh "sphere"', '  kd %.2f %.2f %.2f' % (0.2 + 0.008 * i, 0.9 - 0.007 * i, 0.5),
@@ -48,7 +54,7 @@ export DISPLAY=":$n"
 for _ in $(seq 100); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
 for run in $(seq "$runs"); do
   : > "$work/log"
-  (cd "$work" && ANIMATOR_EDITOR_SIGNALS=1 exec "$bin" hundred.ani) >"$work/log" 2>&1 &
+  (cd "$work" && ANIMATOR_EDITOR_SIGNALS=1 ANIMATOR_FRAME_BUDGET=off exec "$bin" hundred.ani) >"$work/log" 2>&1 &
   editor=$!
   win=""
   for _ in $(seq 100); do

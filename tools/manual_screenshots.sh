@@ -216,4 +216,12 @@ xdotool mousemove --window "$win" 900 300 mousedown 3
 for dy in $(seq 10 10 200); do xdotool mousemove --window "$win" 900 $((300 - dy)); sleep 0.05; done
 shot joints
 xdotool mouseup 3
+# Shadows and anti-aliasing (docs/manual.md): simple.lua's models and their shadows (the
+# camera's light), anti-aliased, the View menu open.
+cp assets/scenes/simple.lua "$work/"
+start_editor simple.lua
+click 137 19                   # View
+xdotool mousemove --window "$win" 137 19
+shot view-shadows
+xdotool key Escape
 echo "wrote the screenshots to $out"

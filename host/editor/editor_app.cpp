@@ -4,6 +4,7 @@
 #include "editor/click_times.hpp"
 #include "editor/editor_panels.hpp"
 #include "editor/editor_session.hpp"
+#include "editor/frame_budget.hpp"
 #include "editor/gizmo_drawing.hpp"
 #include "editor/help.hpp"
 #include "editor/recovery.hpp"
@@ -475,6 +476,14 @@ int run_editor(const EditorOptions &options) {
         FrameRate frame_rate;
         PathCache path_lines;
         std::unique_ptr<ScreenOverlay> gizmo_overlay; // made with the first gizmo drawn
+        // The View menu's settings as drawn: lowered while frames take longer than 1/60 s.
+        FrameBudget frame_budget;
+        // ANIMATOR_FRAME_BUDGET=off draws with the View settings as chosen however long frames
+        // take (tools/editor_fps.sh measures each setting so).
+        const char *budget_env = std::getenv("ANIMATOR_FRAME_BUDGET");
+        const bool keep_budget = !(budget_env && std::string(budget_env) == "off");
+        std::optional<ViewSettings> budgeted; // the View settings the budget started from
+        double last_frame_at = -1.0;          // when the last frame drawn back to back ended
         long play_frames = 0;      // frames drawn since playback started
         double play_started = -1.0; // when it started (wall seconds), -1 while not playing
         std::uint64_t previewed = 0; // the drag's document last said baked (signals)
@@ -760,8 +769,18 @@ int run_editor(const EditorOptions &options) {
             if (target.width > 0 && target.height > 0) {
                 // Anti-aliased: the scene drawn into a multisampled framebuffer of the view's size,
                 // resolved onto the window (which needs no multisampled visual of its own).
-                if (panels.view_settings().msaa != asked_samples) { // the View menu changed it
-                    asked_samples = panels.view_settings().msaa;
+                const ViewSettings &chosen = panels.view_settings();
+                if (!budgeted || budgeted->msaa != chosen.msaa ||
+                    budgeted->shadows != chosen.shadows ||
+                    budgeted->reflections != chosen.reflections) {
+                    frame_budget.choose({chosen.shadows, RenderOptions{}.shadow_map_size,
+                                         chosen.msaa,
+                                         chosen.reflections ? RenderOptions{}.reflection_size : 0});
+                    budgeted = chosen;
+                }
+                const ViewQuality &quality = frame_budget.quality();
+                if (quality.msaa != asked_samples) { // the View menu or the budget changed it
+                    asked_samples = quality.msaa;
                     std::string fewer;
                     usable_samples = supported_samples(asked_samples, &fewer);
                     if (!fewer.empty()) panels.say(fewer, true);
@@ -781,10 +800,8 @@ int run_editor(const EditorOptions &options) {
                 }
                 if (samples <= 1) view_buffer.reset();
                 const RenderTarget scene_target = view_buffer ? view_buffer->target() : target;
-                renderer.set_shadows(panels.view_settings().shadows,
-                                     renderer.options().shadow_map_size);
-                renderer.set_reflections(
-                    panels.view_settings().reflections ? RenderOptions{}.reflection_size : 0);
+                renderer.set_shadows(quality.shadows, quality.shadow_map_size);
+                renderer.set_reflections(quality.reflection_size);
                 renderer.draw(session.shown_frame(), scene_target, session.selection(),
                               session.overlapping_models());
                 renderer.draw_paths(path_lines.get(session), scene_target);
@@ -817,6 +834,20 @@ int run_editor(const EditorOptions &options) {
             glfwSwapBuffers(window);
             if (slow_frames > 0.0) std::this_thread::sleep_for(std::chrono::duration<double>(slow_frames));
             frame_rate.frame(glfwGetTime());
+            // Frames back to back (playing, dragging) count against the budget; one line when it
+            // lowers the view's quality (frame_budget.hpp).
+            if (keep_budget && (session.playing() || pointer.down())) {
+                const double now = glfwGetTime();
+                if (last_frame_at >= 0.0)
+                    if (const auto lowered = frame_budget.frame(now - last_frame_at)) {
+                        std::cout << "animator: " << *lowered << std::endl;
+                        panels.say(*lowered);
+                    }
+                last_frame_at = now;
+            } else {
+                frame_budget.pause();
+                last_frame_at = -1.0;
+            }
             if (session.playing()) ++play_frames;
             if (frames_to_draw > 0) --frames_to_draw;
             // Playback ended, a bake slice, an undo's effect on the buttons, a new message: the

@@ -28,9 +28,10 @@ constexpr double kFov = 60.0;        // degrees, vertical
 const glm::dvec3 kKd{0.6, 0.6, 0.6}; // the floor's, no specular light
 const glm::dvec3 kAmbient{0.15, 0.15, 0.15};
 const Light kLight{"side", {3.0, 5.0, 0.5}, {1.0, 1.0, 1.0}, {1.0, 0.0, 0.0}};
-// How clearly a segment must miss or cross a model's surface (world units) to count: the sphere
-// mesh's facets lie up to 1% inside its radius, and the filtered shadow edge is soft over a few
-// of the map's texels (about 0.02 each here).
+// How clearly a segment must miss or cross a model's surface (world units) to count, with maps of
+// 1024 texels: the sphere mesh's facets lie up to 1% inside its radius, and the filtered shadow
+// edge is soft over a few of the map's texels (about 0.017 each here, 5 m from the light through
+// a 120-degree cone). Texels twice as wide (a map of 512) need twice the margin.
 constexpr double kMargin = 0.08;
 
 // A sphere or an axis-aligned box, in world space, grown (or shrunk, for a negative `grow`).
@@ -101,16 +102,16 @@ struct Counts {
 };
 
 // Every pixel that clearly sees the floor, lit or clearly in shadow, against the formula.
-Counts check_floor(const Image &image, const Shape &shape, bool shadows) {
+Counts check_floor(const Image &image, const Shape &shape, bool shadows, double margin = kMargin) {
     const glm::dvec3 eye(0.0, kHeight, 0.0);
     Counts n;
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
             const glm::dvec3 p = floor_point(x, y);
             if (std::abs(p.x) > 4.9 || std::abs(p.z) > 4.9) continue; // beyond the floor
-            if (meets(shape, eye, p, kMargin)) continue;              // the model in the way
-            const bool lit = !meets(shape, p, kLight.position, kMargin);
-            const bool shadowed = meets(shape, p, kLight.position, -kMargin);
+            if (meets(shape, eye, p, margin)) continue;               // the model in the way
+            const bool lit = !meets(shape, p, kLight.position, margin);
+            const bool shadowed = meets(shape, p, kLight.position, -margin);
             if (!lit && !shadowed) continue; // the soft edge between
             const glm::dvec3 want = expected(p, lit || !shadows);
             const glm::ivec3 got = pixel(image, x, y);
@@ -136,6 +137,14 @@ TEST_CASE("shadows: a sphere over a floor shades the floor where the light's ray
     const Counts n = check_floor(r.image, kHoveringSphere, true);
     CHECK(n.lit > 5000);
     CHECK(n.shadowed > 100);
+
+    // The editor's frame budget halves the maps (editor/frame_budget.hpp): the same holds.
+    RenderOptions smaller;
+    smaller.shadow_map_size = 512;
+    const Rendered coarse = render_document(doc, kSize, kSize, {}, smaller);
+    const Counts m = check_floor(coarse.image, kHoveringSphere, true, 2.0 * kMargin);
+    CHECK(m.lit > 5000);
+    CHECK(m.shadowed > 100);
 
     // Off, the same floor pixels are all lit: the darkness was the shadow's.
     RenderOptions off;

@@ -1,0 +1,84 @@
+// animator-render-bench FILE... [--size WxH] [--frames N] [--runs R]: how fast the renderer draws
+// and reads back frames of each document off screen (what `animator render` does before PNG
+// encoding), with shadows and anti-aliasing on and off, compared within one run
+// (docs/performance.md, "Shadows and anti-aliasing"). Prints one line per document and setting:
+// the median over R runs of N frames each of the frames drawn per second.
+#include "bench.hpp"
+
+#include "cli/cli_support.hpp"
+#include "render/framebuffer.hpp"
+#include "render/offscreen_context.hpp"
+#include "render/renderer.hpp"
+
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+
+using namespace animator;
+
+namespace {
+
+struct Setting {
+    const char *name;
+    bool shadows;
+    int samples;
+};
+
+const Setting kSettings[] = {
+    {"plain (no shadows, msaa 1)", false, 1},
+    {"msaa 4", false, 4},
+    {"shadows", true, 1},
+    {"shadows + msaa 4 (the default)", true, 4},
+};
+
+} // namespace
+
+int main(int argc, char **argv) {
+    int width = 1280, height = 720, frames = 60, runs = 5;
+    std::vector<std::string> files;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--size" && i + 1 < argc)
+            std::sscanf(argv[++i], "%dx%d", &width, &height);
+        else if (a == "--frames" && i + 1 < argc)
+            frames = std::atoi(argv[++i]);
+        else if (a == "--runs" && i + 1 < argc)
+            runs = std::atoi(argv[++i]);
+        else
+            files.push_back(a);
+    }
+    Environment env;
+    OffscreenContext context;
+    std::vector<std::uint8_t> pixels;
+    std::printf("%-28s %-32s %8s %8s\n", "document", "setting", "fps", "ms");
+    for (const std::string &file : files) {
+        auto opened = cli::open_or_report(env.plugins, file);
+        if (!opened) return 1;
+        Document &doc = opened->document;
+        Timeline timeline(doc, env.plugins, "");
+        const auto meshes = cli::load_document_meshes(timeline, env, file, opened->warnings);
+        const double max_time = static_cast<double>(doc.settings().max_time_ms) / 1000.0;
+        timeline.bake(max_time);
+        for (const Setting &s : kSettings) {
+            RenderOptions options;
+            options.shadows = s.shadows;
+            Renderer renderer(env.plugins, env.assets, options);
+            renderer.set_document(doc, meshes);
+            OffscreenFramebuffer framebuffer(width, height, supported_samples(s.samples));
+            std::vector<double> rates;
+            for (int run = 0; run < runs; ++run) {
+                const auto start = std::chrono::steady_clock::now();
+                for (int k = 0; k < frames; ++k) {
+                    renderer.draw(timeline.evaluate(max_time * k / frames), framebuffer.target());
+                    framebuffer.read_rgb(pixels);
+                }
+                rates.push_back(frames / bench::seconds_since(start));
+            }
+            const double fps = bench::median(rates);
+            std::printf("%-28s %-32s %8.1f %8.1f\n", std::filesystem::path(file).filename().c_str(),
+                        s.name, fps, 1000.0 / fps);
+            std::fflush(stdout);
+        }
+    }
+    return 0;
+}

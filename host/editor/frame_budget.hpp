@@ -1,0 +1,53 @@
+// Keeping the 3D view within its frame budget (60 fps): while frames come one after another
+// (playing, dragging), when the median of the last frames takes longer than the budget, the view
+// is drawn more cheaply, one step at a time with one line each: no anti-aliasing, then shadow
+// maps of half the texels, then the reflections' cube maps at half the side. The View menu's
+// settings stay as chosen; choosing them again starts over (docs/performance.md, "Shadows and
+// anti-aliasing").
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace animator {
+
+// How the 3D view is drawn.
+struct ViewQuality {
+    bool shadows = true;
+    int shadow_map_size = 1024;
+    int msaa = 4;
+    int reflection_size = 128; // the models' cube maps of the models around them (0: none)
+    bool operator==(const ViewQuality &o) const {
+        return shadows == o.shadows && shadow_map_size == o.shadow_map_size && msaa == o.msaa &&
+               reflection_size == o.reflection_size;
+    }
+};
+
+// The smallest shadow map and reflection cube map the budget lowers to.
+constexpr int kSmallestShadowMap = 512;
+constexpr int kSmallestReflectionMap = 64;
+
+class FrameBudget {
+  public:
+    // `budget` seconds a frame, judged on the median of `window` frames.
+    explicit FrameBudget(double budget = 1.0 / 60.0, int window = 30);
+
+    // Starts over from `chosen` (the View menu's settings, at the start or when changed).
+    void choose(const ViewQuality &chosen);
+    // One frame took `seconds` (count only frames drawn back to back). Returns the line to say
+    // when the quality was lowered.
+    std::optional<std::string> frame(double seconds);
+    // Frames stopped coming back to back (idle): the next ones start a new window.
+    void pause() { times_.clear(); }
+
+    const ViewQuality &quality() const { return quality_; }
+
+  private:
+    double budget_;
+    int window_;
+    ViewQuality quality_;
+    std::vector<double> times_;
+};
+
+} // namespace animator

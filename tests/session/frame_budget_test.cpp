@@ -1,0 +1,63 @@
+// The 3D view's frame budget (editor/frame_budget.hpp): slow frames lower the quality a step at a
+// time, each step said once; frames within the budget change nothing; choosing starts over.
+#include "editor/frame_budget.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace animator;
+
+namespace {
+// `count` frames of `seconds`; the lines said.
+std::vector<std::string> frames(FrameBudget &budget, int count, double seconds) {
+    std::vector<std::string> said;
+    for (int i = 0; i < count; ++i)
+        if (auto line = budget.frame(seconds)) said.push_back(*line);
+    return said;
+}
+} // namespace
+
+TEST_CASE("frame budget: frames within 1/60 s keep the chosen quality") {
+    FrameBudget budget(1.0 / 60.0, 10);
+    const ViewQuality chosen{true, 1024, 4};
+    budget.choose(chosen);
+    CHECK(frames(budget, 100, 0.015).empty());
+    CHECK(budget.quality() == chosen);
+}
+
+TEST_CASE("frame budget: slow frames turn anti-aliasing off, then halve the shadow maps, then the "
+          "reflections' cube maps, a line each") {
+    FrameBudget budget(1.0 / 60.0, 10);
+    budget.choose({true, 1024, 4});
+    auto said = frames(budget, 10, 0.025);
+    REQUIRE(said.size() == 1);
+    CHECK_THAT(said[0], Catch::Contains("25.0 ms") && Catch::Contains("16.7 ms") &&
+                            Catch::Contains("anti-aliasing off"));
+    CHECK(budget.quality() == ViewQuality{true, 1024, 1});
+    said = frames(budget, 10, 0.025);
+    REQUIRE(said.size() == 1);
+    CHECK_THAT(said[0], Catch::Contains("512 texels"));
+    CHECK(budget.quality() == ViewQuality{true, 512, 1});
+    said = frames(budget, 10, 0.025);
+    REQUIRE(said.size() == 1);
+    CHECK_THAT(said[0], Catch::Contains("cube maps of 64 pixels"));
+    CHECK(budget.quality() == ViewQuality{true, 512, 1, 64});
+    // Nothing cheaper left that the user did not choose: nothing more is said.
+    CHECK(frames(budget, 50, 0.025).empty());
+    // A few slow frames among fast ones (the median) change nothing.
+    budget.choose({true, 1024, 4});
+    for (int i = 0; i < 30; ++i) CHECK_FALSE(budget.frame(i % 3 == 0 ? 0.05 : 0.01));
+    CHECK(budget.quality() == ViewQuality{true, 1024, 4});
+}
+
+TEST_CASE(
+    "frame budget: without anti-aliasing the first step is the shadow maps, and a pause starts a "
+    "new window") {
+    FrameBudget budget(1.0 / 60.0, 10);
+    budget.choose({true, 1024, 1});
+    frames(budget, 9, 0.03);
+    budget.pause(); // idle: those nine do not count
+    CHECK(frames(budget, 9, 0.03).empty());
+    const auto said = frames(budget, 1, 0.03);
+    REQUIRE(said.size() == 1);
+    CHECK(budget.quality() == ViewQuality{true, 512, 1});
+}
