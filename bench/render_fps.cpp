@@ -1,7 +1,7 @@
 // animator-render-bench FILE... [--size WxH] [--frames N] [--runs R]: how fast the renderer draws
 // and reads back frames of each document off screen (what `animator render` does before PNG
-// encoding), with shadows and anti-aliasing on and off, compared within one run
-// (docs/performance.md, "Shadows and anti-aliasing"). Prints one line per document and setting:
+// encoding), with shadows, anti-aliasing and reflections of other models on and off, compared
+// within one run (docs/performance.md, "Shadows and anti-aliasing"). Prints one line per document and setting:
 // the median over R runs of N frames each of the frames drawn per second.
 #include "bench.hpp"
 
@@ -22,13 +22,16 @@ struct Setting {
     const char *name;
     bool shadows;
     int samples;
+    int reflections; // the side of the models' cube maps of the others (0: the skybox only)
 };
 
 const Setting kSettings[] = {
-    {"plain (no shadows, msaa 1)", false, 1},
-    {"msaa 4", false, 4},
-    {"shadows", true, 1},
-    {"shadows + msaa 4 (the default)", true, 4},
+    {"plain (msaa 1, skybox only)", false, 1, 0},
+    {"msaa 4", false, 4, 0},
+    {"shadows", true, 1, 0},
+    {"reflections 128", false, 1, 128},
+    {"reflections 64", false, 1, 64},
+    {"all (the default)", true, 4, 128},
 };
 
 } // namespace
@@ -62,6 +65,7 @@ int main(int argc, char **argv) {
         for (const Setting &s : kSettings) {
             RenderOptions options;
             options.shadows = s.shadows;
+            options.reflection_size = s.reflections;
             Renderer renderer(env.plugins, env.assets, options);
             renderer.set_document(doc, meshes);
             OffscreenFramebuffer framebuffer(width, height, supported_samples(s.samples));
