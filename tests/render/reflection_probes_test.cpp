@@ -1,7 +1,7 @@
 // Reflections and refractions of other models (reflection_probes.hpp): a mirror shows the model
 // beside it where the law of reflection puts it, a glass ball shows what is behind and above it
 // in its lower half (Snell's law at its front surface), only with reflections on; golden images
-// of orbs seeing each other.
+// of both, and of orbs seeing each other.
 #include "image_compare.hpp"
 #include "render_support.hpp"
 #include "support.hpp"
@@ -167,6 +167,10 @@ TEST_CASE("a glass ball refracts what is behind and above it into its lower half
     // Upside down: the upper half's rays turn downward, away from the cube.
     const glm::dvec2 upper = pixel_of(doc, glm::dvec3(0, std::sin(a), std::cos(a)));
     CHECK_FALSE(red(pixel(on.image, int(upper.x), int(upper.y))));
+    const std::string problem =
+        check_golden("refraction_of_models", on.image, Tolerance{48.0, 0.005, 1.0});
+    INFO(problem);
+    CHECK(problem.empty());
 }
 
 TEST_CASE("golden: the orbs reflect and refract each other") {
