@@ -1,5 +1,7 @@
 #include "editor/recent_files.hpp"
 
+#include "editor/state_folder.hpp"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -34,13 +36,7 @@ bool write_all(int fd, const std::string &text) {
 
 } // namespace
 
-fs::path recent_files_path() {
-    const char *state = std::getenv("XDG_STATE_HOME");
-    if (state && *state == '/') return fs::path(state) / "animator" / "recent";
-    const char *home = std::getenv("HOME");
-    if (home && *home) return fs::path(home) / ".local" / "state" / "animator" / "recent";
-    return {};
-}
+fs::path recent_files_path() { return state_path("recent"); }
 
 bool RecentFiles::load(std::string *error) {
     paths_.clear();

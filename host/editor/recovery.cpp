@@ -1,6 +1,7 @@
 #include "editor/recovery.hpp"
 
 #include "editor/editor_session.hpp"
+#include "editor/state_folder.hpp"
 #include "io/document_io.hpp"
 
 #include <fcntl.h>
@@ -64,13 +65,7 @@ double autosave_interval(std::string *warning) {
     return seconds;
 }
 
-fs::path recovery_folder() {
-    const char *state = std::getenv("XDG_STATE_HOME");
-    if (state && *state == '/') return fs::path(state) / "animator" / "recovery";
-    const char *home = std::getenv("HOME");
-    if (home && *home) return fs::path(home) / ".local" / "state" / "animator" / "recovery";
-    return {};
-}
+fs::path recovery_folder() { return state_path("recovery"); }
 
 fs::path recovery_file(const fs::path &folder, const fs::path &document) {
     if (document.empty()) return folder / "untitled.ani";

@@ -1,5 +1,6 @@
 #include "editor/view_settings.hpp"
 
+#include "editor/state_folder.hpp"
 #include "render/framebuffer.hpp"
 
 #include <cerrno>
@@ -12,13 +13,7 @@ namespace fs = std::filesystem;
 
 namespace animator {
 
-fs::path view_settings_path() {
-    const char *state = std::getenv("XDG_STATE_HOME");
-    if (state && *state == '/') return fs::path(state) / "animator" / "view";
-    const char *home = std::getenv("HOME");
-    if (home && *home) return fs::path(home) / ".local" / "state" / "animator" / "view";
-    return {};
-}
+fs::path view_settings_path() { return state_path("view"); }
 
 ViewSettings load_view_settings(const fs::path &file, std::string *warning) {
     ViewSettings s;
