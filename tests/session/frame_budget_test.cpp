@@ -45,8 +45,9 @@ TEST_CASE(
     CHECK(budget.quality() == ViewQuality{true, 1024, 4});
 }
 
-TEST_CASE("frame budget: without anti-aliasing the first step is the shadow maps; a pause starts a "
-          "new window") {
+TEST_CASE(
+    "frame budget: without anti-aliasing the first step is the shadow maps, and a pause starts a "
+    "new window") {
     FrameBudget budget(1.0 / 60.0, 10);
     budget.choose({true, 1024, 1});
     frames(budget, 9, 0.03);
