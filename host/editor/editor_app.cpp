@@ -839,10 +839,8 @@ int run_editor(const EditorOptions &options) {
             if (keep_budget && (session.playing() || pointer.down())) {
                 const double now = glfwGetTime();
                 if (last_frame_at >= 0.0)
-                    if (const auto lowered = frame_budget.frame(now - last_frame_at)) {
-                        std::cout << "animator: " << *lowered << std::endl;
-                        panels.say(*lowered);
-                    }
+                    if (const auto lowered = frame_budget.frame(now - last_frame_at))
+                        panels.say(*lowered); // the status line, and one line on stdout
                 last_frame_at = now;
             } else {
                 frame_budget.pause();

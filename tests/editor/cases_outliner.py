@@ -82,6 +82,9 @@ def case_outliner_select(c):
     outlines it, the Model Interface opens), CTRL+click adds another and takes it out again, and
     a click in the view moves the highlight to the model clicked. Selecting is not an edit."""
     c.copy('assets/scenes/puppet.lua')
+    # Single-sampled (View > Anti-aliasing > Off): the outline's pixels are counted by their pure
+    # orange, which anti-aliasing blends along its edges.
+    view_settings(c, msaa=1)
     e = c.start('puppet.lua')
     e.mouse_away()
     img = e.screenshot('start')
