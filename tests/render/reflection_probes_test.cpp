@@ -173,6 +173,41 @@ TEST_CASE("a glass ball refracts what is behind and above it into its lower half
     CHECK(problem.empty());
 }
 
+TEST_CASE("the models around a reflective one are drawn as without reflections of other models") {
+    // Drawing the cube maps (a skybox and plain models in each face) leaves nothing behind for
+    // the frame: a plain sphere beside a glass cube and a mirror ball is the same pixel for pixel
+    // with them on and off (it once took the skybox's program, bound last in a cube map).
+    Document doc = make_document(make_camera({0, 0.5, 7}, 0, -4), false, "day");
+    Model glass = make_model("glass", "cube", {0.5, 0.5, 0.5});
+    glass.transparency = 0.7;
+    glass.refractive_index = 1.5;
+    Model mirror = make_model("mirror", "sphere", {0.5, 0.5, 0.5});
+    mirror.reflectivity = 1.0;
+    doc.add_model(make_model("plain", "sphere", {0.2, 0.7, 0.3}, {1, 1, 1}, 40),
+                  make_state({-2.6, 0, 0}));
+    doc.add_model(glass, make_state({0, 0, 0}));
+    doc.add_model(mirror, make_state({2.6, 0, 0}));
+    doc.add_model(make_model("inside", "sphere", {0.9, 0.1, 0.1}),
+                  make_state({0, 0, 0}, glm::dvec3(0.5)));
+    const Rendered on = render_document(doc, kWidth, kHeight);
+    const Rendered off = render_document(doc, kWidth, kHeight, {}, with_reflections(0));
+    CHECK(on.stats.reflection_maps == 2);
+    // The plain sphere's square on screen, and the sky above everything.
+    const glm::dvec2 c = pixel_of(doc, {-2.6, 0, 0});
+    int differ = 0, looked = 0;
+    for (int y = int(c.y) - 20; y <= int(c.y) + 20; ++y)
+        for (int x = int(c.x) - 20; x <= int(c.x) + 20; ++x, ++looked)
+            differ += pixel(on.image, x, y) != pixel(off.image, x, y);
+    for (int y = 0; y < 20; ++y)
+        for (int x = 0; x < kWidth; x += 4, ++looked)
+            differ += pixel(on.image, x, y) != pixel(off.image, x, y);
+    CAPTURE(looked);
+    CHECK(differ == 0);
+    // The red ball inside the glass shows through it either way.
+    const glm::dvec2 inside = pixel_of(doc, {0, 0, 0.5});
+    CHECK(red(pixel(on.image, int(inside.x), int(inside.y))));
+}
+
 TEST_CASE("golden: the orbs reflect and refract each other") {
     Document doc = make_document(make_camera({0, 0.3, 5}, 0, -3), false, "sunset");
     Model mirror = make_model("mirror", "sphere", {0.5, 0.5, 0.5});
