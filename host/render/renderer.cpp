@@ -151,14 +151,18 @@ void Renderer::prepare_frame(const Frame &frame, int width, int height) {
     u.selected_tint = options_.selected_tint;
 }
 
+void Renderer::bounds_of(int model, glm::dvec3 &centre, double &radius) const {
+    const Mesh &mesh = *meshes_[static_cast<size_t>(model)];
+    transform_bounding_sphere(world_[static_cast<size_t>(model)], mesh.bound_center,
+                              mesh.bound_radius, centre, radius);
+}
+
 bool Renderer::visible(int model) const {
     if (hidden_.count(model)) return false;
-    const Mesh &mesh = *meshes_[static_cast<size_t>(model)];
-    glm::dvec3 center;
+    glm::dvec3 centre;
     double radius = 0.0;
-    transform_bounding_sphere(world_[static_cast<size_t>(model)], mesh.bound_center,
-                              mesh.bound_radius, center, radius);
-    return frustum_.may_see(center, radius);
+    bounds_of(model, centre, radius);
+    return frustum_.may_see(centre, radius);
 }
 
 void Renderer::bind(unsigned unit, unsigned target, unsigned name, std::size_t &counter) {
@@ -284,9 +288,15 @@ void Renderer::draw_reflections() {
     for (const auto &[distance, m] : wanted) {
         glm::dvec3 centre;
         double radius = 0.0;
-        const Mesh &mesh = *meshes_[static_cast<size_t>(m)];
-        transform_bounding_sphere(world_[static_cast<size_t>(m)], mesh.bound_center,
-                                  mesh.bound_radius, centre, radius);
+        bounds_of(m, centre, radius);
+        // What it holds (a glass box's balls) is seen through it where it is in front of them,
+        // not as its surroundings: only the models whose centres lie outside it are drawn.
+        const auto around = [&](int o) {
+            glm::dvec3 c;
+            double r = 0.0;
+            bounds_of(o, c, r);
+            return glm::length(c - centre) >= radius;
+        };
         probing_ = m;
         probes_.draw(m, options_.reflection_size, centre, options_.background,
                      [&](const glm::dmat4 &face_view, const glm::dmat4 &projection) {
@@ -300,7 +310,8 @@ void Renderer::draw_reflections() {
                          glEnable(GL_DEPTH_TEST);
                          glDepthFunc(GL_LESS);
                          for (int o = 0; o < count; ++o)
-                             if (o != m && gpu_meshes_[static_cast<size_t>(o)] && visible(o))
+                             if (o != m && gpu_meshes_[static_cast<size_t>(o)] && visible(o) &&
+                                 around(o))
                                  draw_model(o, false, 0);
                      });
         ++stats_.reflection_maps;
@@ -380,16 +391,11 @@ void Renderer::draw_shadow_maps(int count) {
     // receive shadows; they cast none, as glass would hardly).
     glm::dvec3 low(std::numeric_limits<double>::max()), high(-std::numeric_limits<double>::max());
     bool any = false;
-    const auto sphere_of = [&](int m, glm::dvec3 &centre, double &radius) {
-        const Mesh &mesh = *meshes_[static_cast<size_t>(m)];
-        transform_bounding_sphere(world_[static_cast<size_t>(m)], mesh.bound_center,
-                                  mesh.bound_radius, centre, radius);
-    };
     for (int m = 0; m < count; ++m) {
         if (!gpu_meshes_[static_cast<size_t>(m)] || hidden_.count(m)) continue;
         glm::dvec3 c;
         double r = 0.0;
-        sphere_of(m, c, r);
+        bounds_of(m, c, r);
         low = glm::min(low, c - r);
         high = glm::max(high, c + r);
         any = true;
@@ -401,7 +407,7 @@ void Renderer::draw_shadow_maps(int count) {
         if (!gpu_meshes_[static_cast<size_t>(m)] || hidden_.count(m)) continue;
         glm::dvec3 c;
         double r = 0.0;
-        sphere_of(m, c, r);
+        bounds_of(m, c, r);
         radius = std::max(radius, glm::length(c - centre) + r);
     }
     if (!shadows_) shadows_ = std::make_unique<ShadowPass>();

@@ -133,6 +133,8 @@ class Renderer {
 
   private:
     void prepare_frame(const Frame &frame, int width, int height);
+    // Model m's bounding sphere in the world: its mesh's, under its world matrix.
+    void bounds_of(int model, glm::dvec3 &centre, double &radius) const;
     bool visible(int model) const;
     const GpuTexture *texture(const std::string &id);
     void load_skybox(const std::string &id);
