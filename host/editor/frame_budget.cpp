@@ -32,16 +32,18 @@ std::optional<std::string> FrameBudget::frame(double seconds) {
         quality_.msaa = 1;
         return std::string(took) + "anti-aliasing off (View > Anti-aliasing)";
     }
+    // Then the reflections' cube maps: six more views of the scene for each reflective or
+    // transparent model (with 100 models they cost more than anti-aliasing).
+    if (quality_.reflection_size > 0) {
+        quality_.reflection_size = 0;
+        return std::string(took) +
+               "reflections of other models off (View > Reflections of other models)";
+    }
+    // Shadows last (they are what stops a ball from floating), and only made coarser.
     if (quality_.shadows && quality_.shadow_map_size > kSmallestShadowMap) {
         quality_.shadow_map_size = std::max(kSmallestShadowMap, quality_.shadow_map_size / 2);
         return std::string(took) + "shadow maps of " + std::to_string(quality_.shadow_map_size) +
                " texels (View > Shadows off draws faster)";
-    }
-    if (quality_.reflection_size > kSmallestReflectionMap) {
-        quality_.reflection_size = std::max(kSmallestReflectionMap, quality_.reflection_size / 2);
-        return std::string(took) + "reflections of other models in cube maps of " +
-               std::to_string(quality_.reflection_size) +
-               " pixels (View > Reflections of other models off draws faster)";
     }
     return std::nullopt; // nothing cheaper left to do on its own
 }

@@ -1,7 +1,7 @@
 // Keeping the 3D view within its frame budget (60 fps): while frames come one after another
 // (playing, dragging), when the median of the last frames takes longer than the budget, the view
-// is drawn more cheaply, one step at a time with one line each: no anti-aliasing, then shadow
-// maps of half the texels, then the reflections' cube maps at half the side. The View menu's
+// is drawn more cheaply, one step at a time with one line each: no anti-aliasing, then no
+// reflections of other models, then shadow maps of half the texels. The View menu's
 // settings stay as chosen; choosing them again starts over (docs/performance.md, "Shadows and
 // anti-aliasing").
 #pragma once
@@ -24,9 +24,8 @@ struct ViewQuality {
     }
 };
 
-// The smallest shadow map and reflection cube map the budget lowers to.
+// The smallest shadow map the budget lowers to.
 constexpr int kSmallestShadowMap = 512;
-constexpr int kSmallestReflectionMap = 64;
 
 class FrameBudget {
   public:

@@ -24,23 +24,24 @@ TEST_CASE("frame budget: frames within 1/60 s keep the chosen quality") {
     CHECK(budget.quality() == chosen);
 }
 
-TEST_CASE("frame budget: slow frames turn anti-aliasing off, then halve the shadow maps, then the "
-          "reflections' cube maps, a line each") {
+TEST_CASE(
+    "frame budget: slow frames turn anti-aliasing off, then reflections of other models, then "
+    "halve the shadow maps, a line each") {
     FrameBudget budget(1.0 / 60.0, 10);
-    budget.choose({true, 1024, 4});
+    budget.choose({true, 1024, 4, 128});
     auto said = frames(budget, 10, 0.025);
     REQUIRE(said.size() == 1);
     CHECK_THAT(said[0], Catch::Contains("25.0 ms") && Catch::Contains("16.7 ms") &&
                             Catch::Contains("anti-aliasing off"));
-    CHECK(budget.quality() == ViewQuality{true, 1024, 1});
+    CHECK(budget.quality() == ViewQuality{true, 1024, 1, 128});
+    said = frames(budget, 10, 0.025);
+    REQUIRE(said.size() == 1);
+    CHECK_THAT(said[0], Catch::Contains("reflections of other models off"));
+    CHECK(budget.quality() == ViewQuality{true, 1024, 1, 0});
     said = frames(budget, 10, 0.025);
     REQUIRE(said.size() == 1);
     CHECK_THAT(said[0], Catch::Contains("512 texels"));
-    CHECK(budget.quality() == ViewQuality{true, 512, 1});
-    said = frames(budget, 10, 0.025);
-    REQUIRE(said.size() == 1);
-    CHECK_THAT(said[0], Catch::Contains("cube maps of 64 pixels"));
-    CHECK(budget.quality() == ViewQuality{true, 512, 1, 64});
+    CHECK(budget.quality() == ViewQuality{true, 512, 1, 0});
     // Nothing cheaper left that the user did not choose: nothing more is said.
     CHECK(frames(budget, 50, 0.025).empty());
     // A few slow frames among fast ones (the median) change nothing.
@@ -50,14 +51,14 @@ TEST_CASE("frame budget: slow frames turn anti-aliasing off, then halve the shad
 }
 
 TEST_CASE(
-    "frame budget: without anti-aliasing the first step is the shadow maps, and a pause starts a "
-    "new window") {
+    "frame budget: without anti-aliasing and reflections the first step is the shadow maps, and a "
+    "pause starts a new window") {
     FrameBudget budget(1.0 / 60.0, 10);
-    budget.choose({true, 1024, 1});
+    budget.choose({true, 1024, 1, 0});
     frames(budget, 9, 0.03);
     budget.pause(); // idle: those nine do not count
     CHECK(frames(budget, 9, 0.03).empty());
     const auto said = frames(budget, 1, 0.03);
     REQUIRE(said.size() == 1);
-    CHECK(budget.quality() == ViewQuality{true, 512, 1});
+    CHECK(budget.quality() == ViewQuality{true, 512, 1, 0});
 }
