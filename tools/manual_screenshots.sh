@@ -224,4 +224,12 @@ click 137 19                   # View
 xdotool mousemove --window "$win" 137 19
 shot view-shadows
 xdotool key Escape
+# Reflections of other models (docs/manual.md): orbs.ani at its start, the mirror orb showing its
+# neighbour, the View menu open.
+cp assets/animations/orbs.ani "$work/"
+start_editor orbs.ani
+click 137 19                   # View
+xdotool mousemove --window "$win" 137 19
+shot view-reflections
+xdotool key Escape
 echo "wrote the screenshots to $out"
