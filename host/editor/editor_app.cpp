@@ -770,9 +770,7 @@ int run_editor(const EditorOptions &options) {
                 // Anti-aliased: the scene drawn into a multisampled framebuffer of the view's size,
                 // resolved onto the window (which needs no multisampled visual of its own).
                 const ViewSettings &chosen = panels.view_settings();
-                if (!budgeted || budgeted->msaa != chosen.msaa ||
-                    budgeted->shadows != chosen.shadows ||
-                    budgeted->reflections != chosen.reflections) {
+                if (budgeted != chosen) {
                     frame_budget.choose({chosen.shadows, RenderOptions{}.shadow_map_size,
                                          chosen.msaa,
                                          chosen.reflections ? RenderOptions{}.reflection_size : 0});

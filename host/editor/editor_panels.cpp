@@ -240,8 +240,7 @@ void Panels::view_menu() {
     }
     tip("Smooth edges in the 3D view: samples per pixel (multisampling); Off draws faster");
     ImGui::EndMenu();
-    if (view_.msaa != before.msaa || view_.shadows != before.shadows ||
-        view_.reflections != before.reflections) {
+    if (view_ != before) {
         std::string error;
         if (!save_view_settings(view_settings_path(), view_, &error)) say(error, true);
     }

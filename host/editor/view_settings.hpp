@@ -14,6 +14,10 @@ struct ViewSettings {
     // Reflective and transparent models show the models around them (a cube map each, drawn
     // every frame: render/reflection_probes.hpp); off: the skybox only.
     bool reflections = true;
+    bool operator==(const ViewSettings &o) const {
+        return msaa == o.msaa && shadows == o.shadows && reflections == o.reflections;
+    }
+    bool operator!=(const ViewSettings &o) const { return !(*this == o); }
 };
 
 // Where the View settings are kept; empty without XDG_STATE_HOME or HOME.

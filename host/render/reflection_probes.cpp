@@ -7,6 +7,21 @@
 
 namespace animator {
 
+namespace {
+
+// Binds a cube map on the active texture unit for as long as it lives, then puts back the one
+// that was there: the renderer keeps track of what its units hold (Renderer::bind).
+struct CubeMapBound {
+    GLint held = 0;
+    explicit CubeMapBound(GLuint texture) {
+        glGetIntegerv(GL_TEXTURE_BINDING_CUBE_MAP, &held);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, texture);
+    }
+    ~CubeMapBound() { glBindTexture(GL_TEXTURE_CUBE_MAP, static_cast<GLuint>(held)); }
+};
+
+} // namespace
+
 ReflectionProbes::~ReflectionProbes() {
     for (const auto &[model, probe] : probes_) glDeleteTextures(1, &probe.texture);
     if (depth_) glDeleteRenderbuffers(1, &depth_);
@@ -30,16 +45,9 @@ void ReflectionProbes::draw(
     const std::function<void(const glm::dmat4 &, const glm::dmat4 &)> &draw_face) {
     Probe &probe = probes_[model];
     if (probe.size != size) {
-        // (The renderer keeps track of what its units hold: the active unit's cube map is put
-        // back.)
-        GLint held = 0;
-        glGetIntegerv(GL_TEXTURE_BINDING_CUBE_MAP, &held);
-        if (probe.texture) {
-            if (static_cast<GLuint>(held) == probe.texture) held = 0; // deleted: unbound
-            glDeleteTextures(1, &probe.texture);
-        }
+        if (probe.texture) glDeleteTextures(1, &probe.texture); // (unbound wherever it was)
         glGenTextures(1, &probe.texture);
-        glBindTexture(GL_TEXTURE_CUBE_MAP, probe.texture);
+        const CubeMapBound bound(probe.texture);
         for (GLenum f = 0; f < 6; ++f)
             glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_RGBA8, size, size, 0, GL_RGBA,
                          GL_UNSIGNED_BYTE, nullptr);
@@ -52,7 +60,6 @@ void ReflectionProbes::draw(
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
             glTexParameteri(GL_TEXTURE_CUBE_MAP, wrap, GL_CLAMP_TO_EDGE);
-        glBindTexture(GL_TEXTURE_CUBE_MAP, static_cast<GLuint>(held));
         probe.size = size;
     }
     if (!framebuffer_) glGenFramebuffers(1, &framebuffer_);
@@ -82,11 +89,8 @@ void ReflectionProbes::draw(
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         draw_face(face_view(f, centre), projection);
     }
-    GLint held = 0;
-    glGetIntegerv(GL_TEXTURE_BINDING_CUBE_MAP, &held);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, probe.texture);
+    const CubeMapBound bound(probe.texture);
     glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, static_cast<GLuint>(held));
 }
 
 unsigned ReflectionProbes::texture(int model) const {

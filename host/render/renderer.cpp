@@ -178,7 +178,7 @@ void Renderer::draw_skybox() {
     stats_.features_used |= ANI_SHADE_SKYBOX_PASS;
     glUseProgram(program.shader->name());
     ++stats_.program_binds;
-    current_program_ = nullptr; // the next model binds its own (it may be the one before this)
+    current_program_ = &program; // so that the next model binds its own
     bind(kSkyboxUnit, GL_TEXTURE_CUBE_MAP, skybox_->name(), stats_.cube_map_binds);
     apply_uniforms(program, *programs_, frame_uniforms_, nullptr);
     // The seed: drawn first without writing depth, so every model covers it.
