@@ -25,6 +25,8 @@ find_package(glfw3 3.3 REQUIRED)
 # Xlib: the editor reads the X server's time of each click (host/editor/click_times.hpp).
 find_package(X11 REQUIRED)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL) # EGL: off-screen rendering without a display
+# meshoptimizer: the renderer's levels of detail (host/render/mesh_lod.hpp).
+find_package(meshoptimizer REQUIRED)
 # Dear ImGui (static, with the GLFW and OpenGL3 backends) and stb.
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui stb)
 find_package(SFML 2.5 COMPONENTS audio system REQUIRED)

@@ -58,6 +58,7 @@ struct RenderCommandOptions {
     double from = 0.0, to = -1.0, fps = 30.0;
     int compression = 5;
     int reflections = RenderOptions{}.reflection_size;
+    double detail = RenderOptions{}.detail_pixels; // levels of detail: pixels a surface may move
     int msaa = 4; // samples a pixel (multisample anti-aliasing); 1 is none
     bool no_shadows = false;
     bool progress = false, fps_given = false;
@@ -253,6 +254,7 @@ int run_render(const RenderCommandOptions &o) {
         RenderOptions options;
         options.shading = o.shading;
         options.reflection_size = o.reflections;
+        options.detail_pixels = o.detail;
         options.shadows = !o.no_shadows;
         Renderer renderer(env.plugins, env.assets, options);
         renderer.set_document(doc, meshes);
@@ -347,6 +349,11 @@ void add_render_command(CLI::App &app, std::function<int()> &run) {
                         std::to_string(o->reflections) +
                         "); 0: they show the skybox only")
         ->check(CLI::Range(0, 2048));
+    cmd->add_option("--detail", o->detail,
+                    "levels of detail: a model far from the camera is drawn with a simpler copy of "
+                    "its mesh whose surface moves at most this many pixels (default 0.5); 0 draws "
+                    "every mesh whole")
+        ->check(CLI::Range(0.0, 8.0));
     cmd->add_option("--video", o->video,
                     "also put the frames and the soundtrack together into this video file "
                     "(PATH.mp4) with ffmpeg, which must be installed");

@@ -21,7 +21,8 @@ GpuMesh::GpuMesh(const Mesh &mesh) {
         for (double x : {p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y})
             interleaved.push_back(static_cast<float>(x));
     }
-    index_count_ = static_cast<std::int32_t>(mesh.triangles.size());
+    const LodChain chain = build_lod_chain(mesh);
+    levels_ = chain.levels;
 
     glGenVertexArrays(1, &vertex_array_);
     glGenBuffers(1, &vertices_);
@@ -32,8 +33,8 @@ GpuMesh::GpuMesh(const Mesh &mesh) {
                  interleaved.data(), GL_STATIC_DRAW);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-                 static_cast<GLsizeiptr>(mesh.triangles.size() * sizeof(std::uint32_t)),
-                 mesh.triangles.data(), GL_STATIC_DRAW);
+                 static_cast<GLsizeiptr>(chain.indices.size() * sizeof(std::uint32_t)),
+                 chain.indices.data(), GL_STATIC_DRAW);
     const GLsizei stride = kFloatsPerVertex * sizeof(float);
     auto attribute = [&](GLuint location, GLint size, size_t first_float) {
         glEnableVertexAttribArray(location);
@@ -52,9 +53,11 @@ GpuMesh::~GpuMesh() {
     glDeleteBuffers(1, &indices_);
 }
 
-void GpuMesh::draw() const {
+void GpuMesh::draw(std::size_t level) const {
+    const LodLevel &l = levels_[level];
     glBindVertexArray(vertex_array_);
-    glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(l.count), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void *>(std::uintptr_t{l.first} * sizeof(std::uint32_t)));
 }
 
 Mesh GpuMesh::skybox_cube() {

@@ -1,8 +1,10 @@
 // A mesh in vertex buffers, uploaded once: position, normal and UV interleaved as floats at the
-// attribute locations shading.h names (ANI_VERTEX_*), and the triangles as 32-bit indices.
+// attribute locations shading.h names (ANI_VERTEX_*), and the triangles as 32-bit indices: the
+// mesh's own, then those of its coarser levels of detail (mesh_lod.hpp), in one buffer.
 #pragma once
 
 #include "assets/mesh.hpp"
+#include "render/mesh_lod.hpp"
 
 #include <cstdint>
 
@@ -16,15 +18,17 @@ class GpuMesh {
     GpuMesh(const GpuMesh &) = delete;
     GpuMesh &operator=(const GpuMesh &) = delete;
 
-    // Draws every triangle with whatever program and uniforms are bound.
-    void draw() const;
+    // Draws the triangles of level `level` (0: the mesh itself) with whatever program and
+    // uniforms are bound.
+    void draw(std::size_t level = 0) const;
+    const std::vector<LodLevel> &levels() const { return levels_; }
 
     // A cube from -1 to 1, its triangles facing inward, for the skybox.
     static Mesh skybox_cube();
 
   private:
     unsigned vertex_array_ = 0, vertices_ = 0, indices_ = 0;
-    std::int32_t index_count_ = 0;
+    std::vector<LodLevel> levels_;
 };
 
 } // namespace animator

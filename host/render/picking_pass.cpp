@@ -78,10 +78,11 @@ bool PickingPass::begin(int width, int height, int x, int y, const glm::mat4 &vi
     return true;
 }
 
-void PickingPass::draw(const GpuMesh &mesh, const glm::mat4 &model, std::uint32_t id) {
+void PickingPass::draw(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level,
+                       std::uint32_t id) {
     glUniformMatrix4fv(model_location_, 1, GL_FALSE, glm::value_ptr(model));
     glUniform1ui(id_location_, id);
-    mesh.draw();
+    mesh.draw(level);
 }
 
 std::uint32_t PickingPass::finish() {

@@ -24,7 +24,8 @@ class PickingPass {
     // Starts a pass over a target of this size at pixel (x, y) from the top left. Returns false
     // (and draws nothing) for a pixel outside it.
     bool begin(int width, int height, int x, int y, const glm::mat4 &view_projection);
-    void draw(const GpuMesh &mesh, const glm::mat4 &model, std::uint32_t id);
+    // A model's mesh at level of detail `level` (the one it is drawn with), as `id`.
+    void draw(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level, std::uint32_t id);
     // The id drawn at the pixel, 0 for none; ends the pass.
     std::uint32_t finish();
 

@@ -149,6 +149,21 @@ void Renderer::prepare_frame(const Frame &frame, int width, int height) {
     }
     u.ambient = glm::vec3(settings_.ambient);
     u.selected_tint = options_.selected_tint;
+
+    // One level of detail a model for the frame, as the camera sees it, in every pass: a shadow
+    // map drawn with another surface than the one it falls on would shade it (speckles where a
+    // coarser level lies inside a finer one's shadow). Mirrors, glass and cel shading keep their
+    // whole meshes: what they show turns with the surface's normals, which a coarser level
+    // bends by more than its outline moves (a reflection's features shift by pixels).
+    const double pixel_per_distance = height > 0 ? 2.0 / (projection[1][1] * height) : 0.0;
+    const std::size_t count = std::min(models_.size(), world_.size());
+    levels_.assign(count, 0);
+    for (std::size_t m = 0; m < count; ++m) {
+        const Model &model = models_[m];
+        if (gpu_meshes_[m] && !settings_.cel_shading && model.reflectivity <= 0.0 &&
+            model.transparency <= 0.0)
+            levels_[m] = level_of(static_cast<int>(m), frame.camera.position, pixel_per_distance);
+    }
 }
 
 void Renderer::bounds_of(int model, glm::dvec3 &centre, double &radius) const {
@@ -163,6 +178,34 @@ bool Renderer::visible(int model) const {
     double radius = 0.0;
     bounds_of(model, centre, radius);
     return frustum_.may_see(centre, radius);
+}
+
+std::size_t Renderer::level_of(int model, const glm::dvec3 &eye, double pixel_per_distance) const {
+    const GpuMesh &mesh = *gpu_meshes_[static_cast<size_t>(model)];
+    if (options_.detail_pixels <= 0.0 || mesh.levels().size() < 2) return 0;
+    glm::dvec3 centre;
+    double radius = 0.0;
+    bounds_of(model, centre, radius);
+    // Its nearest point's distance: where its pixels are smallest. (A point off the view's axis
+    // is a little nearer in depth than in distance; 25 degrees off, 10%.)
+    const double distance =
+        std::max(glm::length(centre - eye) - radius, options_.near_plane);
+    // The mesh's errors grow with the model's largest stretch.
+    const glm::dmat4 &world = world_[static_cast<size_t>(model)];
+    const double stretch = std::max({glm::length(glm::dvec3(world[0])),
+                                     glm::length(glm::dvec3(world[1])),
+                                     glm::length(glm::dvec3(world[2]))});
+    if (!(stretch > 0.0)) return 0;
+    return choose_level(mesh.levels(),
+                        options_.detail_pixels * pixel_per_distance * distance / stretch);
+}
+
+std::size_t Renderer::counted_level(int model) {
+    const std::size_t level = levels_[static_cast<size_t>(model)];
+    const std::vector<LodLevel> &levels = gpu_meshes_[static_cast<size_t>(model)]->levels();
+    stats_.triangles += levels[level].count / 3;
+    stats_.triangles_saved += (levels[0].count - levels[level].count) / 3;
+    return level;
 }
 
 void Renderer::bind(unsigned unit, unsigned target, unsigned name, std::size_t &counter) {
@@ -233,7 +276,7 @@ void Renderer::draw_model(int m, bool selected, uint32_t without) {
         u.tint = u.reflectivity = u.transparency = 0.0f;
     }
     apply_uniforms(program, *programs_, frame_uniforms_, &u);
-    gpu_meshes_[static_cast<size_t>(m)]->draw();
+    gpu_meshes_[static_cast<size_t>(m)]->draw(counted_level(m));
 }
 
 void Renderer::draw_transparent(int m, bool selected) {
@@ -422,7 +465,8 @@ void Renderer::draw_shadow_maps(int count) {
                 models_[static_cast<size_t>(m)].transparency > 0.0)
                 continue;
             shadows_->draw(*gpu_meshes_[static_cast<size_t>(m)],
-                           glm::mat4(world_[static_cast<size_t>(m)]));
+                           glm::mat4(world_[static_cast<size_t>(m)]),
+                           counted_level(m));
             ++stats_.shadow_casters;
         }
         shadows_->finish();
@@ -437,18 +481,26 @@ void Renderer::draw_outlines(const std::set<int> &selected, const std::set<int> 
     if (!outline_) outline_ = std::make_unique<SelectionOutline>();
     current_program_ = nullptr; // the outline binds its own program
     const int count = static_cast<int>(std::min(models_.size(), world_.size()));
+    // Each at the level of detail it was drawn with, so its ring meets its silhouette.
     auto each = [&](const std::set<int> &models, auto &&draw) {
         for (int m : models)
             if (m >= 0 && m < count && gpu_meshes_[static_cast<size_t>(m)] && visible(m))
-                draw(*gpu_meshes_[static_cast<size_t>(m)], glm::mat4(world_[static_cast<size_t>(m)]));
+                draw(*gpu_meshes_[static_cast<size_t>(m)], glm::mat4(world_[static_cast<size_t>(m)]),
+                     levels_[static_cast<size_t>(m)]);
     };
     outline_->begin(glm::mat4(view_projection_), width, height);
     // Every selected silhouette first, so one selected model's ring never covers another. The
     // wider flagged rings next, each keeping off its own silhouette only (a flagged cube on a
     // flagged or selected floor is ringed over the floor), then the selection's over them.
-    each(selected, [&](const GpuMesh &mesh, const glm::mat4 &world) { outline_->mark(mesh, world); });
-    each(flagged, [&](const GpuMesh &mesh, const glm::mat4 &world) { outline_->outline_alone(mesh, world, options_.flagged_style); });
-    each(selected, [&](const GpuMesh &mesh, const glm::mat4 &world) { outline_->outline(mesh, world, options_.outline_style); });
+    each(selected, [&](const GpuMesh &mesh, const glm::mat4 &world, std::size_t level) {
+        outline_->mark(mesh, world, level);
+    });
+    each(flagged, [&](const GpuMesh &mesh, const glm::mat4 &world, std::size_t level) {
+        outline_->outline_alone(mesh, world, level, options_.flagged_style);
+    });
+    each(selected, [&](const GpuMesh &mesh, const glm::mat4 &world, std::size_t level) {
+        outline_->outline(mesh, world, level, options_.outline_style);
+    });
     outline_->end();
 }
 
@@ -469,7 +521,7 @@ int Renderer::pick(const Frame &frame, int width, int height, int x, int y) {
     for (int m = 0; m < count; ++m) {
         const GpuMesh *mesh = gpu_meshes_[static_cast<size_t>(m)];
         if (mesh && visible(m))
-            picking_->draw(*mesh, glm::mat4(world_[static_cast<size_t>(m)]),
+            picking_->draw(*mesh, glm::mat4(world_[static_cast<size_t>(m)]), levels_[static_cast<size_t>(m)],
                            static_cast<std::uint32_t>(m) + 1);
     }
     const std::uint32_t id = picking_->finish();

@@ -13,6 +13,9 @@
 // Reflective and transparent models see the models around them (the seed's "Reflecting Other
 // Models"): each has a cube map drawn from its centre every frame (reflection_probes.hpp), in
 // which the other models reflect and refract the skybox only (one bounce).
+//
+// A far model is drawn with a coarser level of detail of its mesh (mesh_lod.hpp), one level a
+// model a frame, as the camera sees it, in every pass.
 #pragma once
 
 #include "assets/asset_paths.hpp"
@@ -69,6 +72,10 @@ struct RenderOptions {
     // shadow map of shadow_map_size texels square (shadow_pass.hpp).
     bool shadows = true;
     int shadow_map_size = 1024;
+    // Levels of detail (mesh_lod.hpp): each model is drawn with the coarsest level of its mesh
+    // whose surface strays at most this many pixels (or shadow-map texels) from the mesh's where
+    // it is seen; 0 draws every mesh whole.
+    double detail_pixels = 0.5;
 };
 
 // What the last draw did, counted: the observable seam for tests (and a debug overlay) that a
@@ -83,6 +90,10 @@ struct RenderStats {
     std::size_t shadow_casters = 0; // models drawn into them, summed over the maps
     bool skybox_drawn = false;
     std::size_t reflection_maps = 0; // cube maps of the models around drawn (six faces each)
+    // Triangles of models drawn, summed over every pass (shadow maps, cube maps, the view), and
+    // how many of them levels of detail left out.
+    std::size_t triangles = 0;
+    std::size_t triangles_saved = 0;
     std::uint32_t features_used = 0; // the union of the feature sets asked of the shading plugin
 };
 
@@ -136,6 +147,11 @@ class Renderer {
     // Model m's bounding sphere in the world: its mesh's, under its world matrix.
     void bounds_of(int model, glm::dvec3 &centre, double &radius) const;
     bool visible(int model) const;
+    // The level of detail of model m's mesh (RenderOptions::detail_pixels) seen from `eye`, whose
+    // pixels are `pixel_per_distance` wide at distance 1.
+    std::size_t level_of(int model, const glm::dvec3 &eye, double pixel_per_distance) const;
+    // Model m's level this frame (levels_), its triangles counted in the stats.
+    std::size_t counted_level(int model);
     const GpuTexture *texture(const std::string &id);
     void load_skybox(const std::string &id);
     void draw_skybox();
@@ -177,6 +193,7 @@ class Renderer {
     std::vector<glm::dmat4> world_;
     glm::dmat4 view_{1.0}, view_projection_{1.0};
     Frustum frustum_{glm::dmat4(1.0)};
+    std::vector<std::size_t> levels_; // per model, its level of detail in every pass
     FrameUniforms frame_uniforms_;
     ModelUniforms model_uniforms_;
     unsigned bound_[2] = {0, 0}; // the texture names bound on the two units this frame

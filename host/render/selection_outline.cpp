@@ -68,29 +68,32 @@ void SelectionOutline::begin(const glm::mat4 &view_projection, int width, int he
     glUniform1f(pixels_location_, 0.0f);
 }
 
-void SelectionOutline::mark(const GpuMesh &mesh, const glm::mat4 &model) {
+void SelectionOutline::mark(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level) {
     glUniformMatrix4fv(model_location_, 1, GL_FALSE, glm::value_ptr(model));
-    mesh.draw();
+    mesh.draw(level);
 }
 
-void SelectionOutline::ring(const GpuMesh &mesh, const glm::mat4 &model, float pixels, const glm::vec3 &colour) {
+void SelectionOutline::ring(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level, float pixels,
+                            const glm::vec3 &colour) {
     glUniformMatrix4fv(model_location_, 1, GL_FALSE, glm::value_ptr(model));
     glUniform1f(pixels_location_, pixels);
     glUniform3fv(colour_location_, 1, glm::value_ptr(colour));
-    mesh.draw();
+    mesh.draw(level);
 }
 
-void SelectionOutline::outline(const GpuMesh &mesh, const glm::mat4 &model, const OutlineStyle &style) {
+void SelectionOutline::outline(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level,
+                               const OutlineStyle &style) {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     // Outside every selected silhouette only (bit 1); the wide dark band first, the light one
     // over it.
     glStencilFunc(GL_NOTEQUAL, 1, 0x01);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    ring(mesh, model, style.outer_pixels, style.outer);
-    ring(mesh, model, style.inner_pixels, style.inner);
+    ring(mesh, model, level, style.outer_pixels, style.outer);
+    ring(mesh, model, level, style.inner_pixels, style.inner);
 }
 
-void SelectionOutline::outline_alone(const GpuMesh &mesh, const glm::mat4 &model, const OutlineStyle &style) {
+void SelectionOutline::outline_alone(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level,
+                                     const OutlineStyle &style) {
     // Its own silhouette in bit 2 (cleared first), with no colour.
     glStencilMask(0x02);
     glClear(GL_STENCIL_BUFFER_BIT);
@@ -98,13 +101,13 @@ void SelectionOutline::outline_alone(const GpuMesh &mesh, const glm::mat4 &model
     glStencilFunc(GL_ALWAYS, 0x02, 0x02);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     glUniform1f(pixels_location_, 0.0f);
-    mark(mesh, model);
+    mark(mesh, model, level);
     // The ring outside it (over other models, selected ones too: their own rings come after).
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glStencilFunc(GL_EQUAL, 0, 0x02);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    ring(mesh, model, style.outer_pixels, style.outer);
-    ring(mesh, model, style.inner_pixels, style.inner);
+    ring(mesh, model, level, style.outer_pixels, style.outer);
+    ring(mesh, model, level, style.inner_pixels, style.inner);
     glStencilMask(0xFF);
 }
 

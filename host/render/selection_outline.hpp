@@ -27,18 +27,21 @@ class SelectionOutline {
     SelectionOutline &operator=(const SelectionOutline &) = delete;
 
     // Over the frame drawn in the bound framebuffer (its stencil is cleared and reused):
-    // `count` selected models, each with its mesh and world matrix, seen through view_projection
-    // in a viewport `width` x `height` pixels.
+    // `count` selected models, each with its mesh, world matrix and level of detail (the one it
+    // was drawn with), seen through view_projection in a viewport `width` x `height` pixels.
     void begin(const glm::mat4 &view_projection, int width, int height);
-    void mark(const GpuMesh &mesh, const glm::mat4 &model);    // first every selected silhouette
-    void outline(const GpuMesh &mesh, const glm::mat4 &model, const OutlineStyle &style); // then each ring
+    void mark(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level); // first every selected silhouette
+    void outline(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level,
+                 const OutlineStyle &style); // then each ring
     // A ring that keeps off only the model's own silhouette (a flagged model's, which may lie
     // over a floor that is flagged or selected): after mark(), before outline().
-    void outline_alone(const GpuMesh &mesh, const glm::mat4 &model, const OutlineStyle &style);
+    void outline_alone(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level,
+                       const OutlineStyle &style);
     void end();
 
   private:
-    void ring(const GpuMesh &mesh, const glm::mat4 &model, float pixels, const glm::vec3 &colour);
+    void ring(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level, float pixels,
+              const glm::vec3 &colour);
 
     ShaderProgram program_;
     int model_location_ = -1, view_projection_location_ = -1, pixels_location_ = -1, viewport_location_ = -1,

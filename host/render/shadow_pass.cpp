@@ -83,9 +83,9 @@ void ShadowPass::begin(int light, int size, const ShadowProjection &projection) 
     glUniformMatrix4fv(view_projection_location_, 1, GL_FALSE, glm::value_ptr(vp));
 }
 
-void ShadowPass::draw(const GpuMesh &mesh, const glm::mat4 &model) {
+void ShadowPass::draw(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level) {
     glUniformMatrix4fv(model_location_, 1, GL_FALSE, glm::value_ptr(model));
-    mesh.draw();
+    mesh.draw(level);
 }
 
 void ShadowPass::finish() {

@@ -29,9 +29,9 @@ class ShadowPass {
     ShadowPass &operator=(const ShadowPass &) = delete;
 
     // Starts light `light`'s map, `size` texels square (its texture is made or resized), seen
-    // through `projection`. Draw the casters, then finish().
+    // through `projection`. Draw the casters (each at a level of detail), then finish().
     void begin(int light, int size, const ShadowProjection &projection);
-    void draw(const GpuMesh &mesh, const glm::mat4 &model);
+    void draw(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level);
     void finish();
 
     // Binds the maps of lights 0..count-1 to their units (kFirstShadowUnit + N).

@@ -127,6 +127,27 @@ TEST_CASE("animator render takes shading parameters and reports bad input") {
                Catch::Contains("--out") && Catch::Contains("--size") && Catch::Contains("--fps"));
 }
 
+TEST_CASE("animator render --detail 0 draws every mesh whole, the picture the levels of detail keep") {
+    const std::string gas = (test::source_dir() / "assets/animations/gas.ani").string();
+    const fs::path out = test::fresh_dir("render_detail");
+    for (const char *detail : {"0", "0.5"})
+        REQUIRE(test::run_animator("render " + gas + " --out " + (out / detail).string() +
+                                       " --to 0 --size 320x180 --msaa 1 --detail " + detail,
+                                   kNoDisplay)
+                    .exit_code == 0);
+    const Image whole = load_image(out / "0" / "frame_00000.png");
+    const Image levels = load_image(out / "0.5" / "frame_00000.png");
+    // The 125 balls are drawn with fewer triangles (some pixels change), the picture the same
+    // as the golden images judge it.
+    const test::ImageDifference d = test::compare_images(levels, whole, 48.0);
+    CHECK(d.max > 0.0);
+    CHECK(d.over < 0.005);
+    CHECK(d.mean < 1.0);
+    auto negative = test::run_animator("render " + gas + " --out " + out.string() + " --to 0 --detail -1");
+    CHECK(negative.exit_code == 2);
+    CHECK_THAT(negative.out, Catch::Contains("--detail"));
+}
+
 TEST_CASE("animator render draws a mesh that is not found as a plain magenta stand-in cube") {
     // A scene from the course naming a mesh its author did not publish, in green, straight ahead
     // of the camera; beside it a real cube in green. The stand-in is the course's unit cube,

@@ -1,0 +1,211 @@
+#include "render/mesh_lod.hpp"
+
+#include <meshoptimizer.h>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace animator {
+
+namespace {
+constexpr std::size_t kFewestTriangles = 64; // below it, one level: nothing to gain
+constexpr std::size_t kCoarsest = 24;        // no level of fewer triangles is asked for
+
+// The point of triangle abc nearest p (Ericson, "Real-Time Collision Detection", 5.1.5).
+glm::dvec3 closest_on_triangle(const glm::dvec3 &p, const glm::dvec3 &a, const glm::dvec3 &b,
+                               const glm::dvec3 &c) {
+    const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+    if (d1 <= 0.0 && d2 <= 0.0) return a;
+    const glm::dvec3 bp = p - b;
+    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+    if (d3 >= 0.0 && d4 <= d3) return b;
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + ab * (d1 / (d1 - d3));
+    const glm::dvec3 cp = p - c;
+    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+    if (d6 >= 0.0 && d5 <= d6) return c;
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + ac * (d2 / (d2 - d6));
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
+        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+    const double denom = 1.0 / (va + vb + vc);
+    return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+// Some triangles of a mesh in a uniform grid of cubes about two triangles wide, for the distance
+// from a point to the nearest of them. The cells' triangles are in one list (counting sort).
+class TriangleGrid {
+  public:
+    TriangleGrid(const Mesh &mesh, const std::uint32_t *indices, std::size_t count)
+        : mesh_(mesh), indices_(indices) {
+        low_ = glm::dvec3(std::numeric_limits<double>::max());
+        glm::dvec3 high(-std::numeric_limits<double>::max());
+        double edges = 0.0;
+        for (std::size_t t = 0; t < count; t += 3)
+            for (int v = 0; v < 3; ++v) {
+                const glm::dvec3 &p = mesh.positions[indices[t + v]];
+                low_ = glm::min(low_, p);
+                high = glm::max(high, p);
+                edges += glm::length(mesh.positions[indices[t + (v + 1) % 3]] - p);
+            }
+        const glm::dvec3 extent = high - low_;
+        // (At most 128 cells along an axis: a long thin mesh gets wider cells.)
+        cell_ = std::max({2.0 * edges / static_cast<double>(count), extent.x / 127.0, extent.y / 127.0,
+                          extent.z / 127.0, 1e-9 * glm::length(extent) + 1e-300});
+        for (int k = 0; k < 3; ++k) cells_[k] = std::min(128, static_cast<int>(extent[k] / cell_) + 1);
+        std::vector<std::pair<std::size_t, std::uint32_t>> entries; // (cell, first index)
+        for (std::size_t t = 0; t < count; t += 3) {
+            glm::ivec3 a = cell_of(mesh.positions[indices[t]]), b = a;
+            for (int v = 1; v < 3; ++v) {
+                const glm::ivec3 c = cell_of(mesh.positions[indices[t + v]]);
+                a = glm::min(a, c);
+                b = glm::max(b, c);
+            }
+            for (int x = a.x; x <= b.x; ++x)
+                for (int y = a.y; y <= b.y; ++y)
+                    for (int z = a.z; z <= b.z; ++z)
+                        entries.emplace_back(index(x, y, z), static_cast<std::uint32_t>(t));
+        }
+        start_.assign(static_cast<std::size_t>(cells_[0]) * cells_[1] * cells_[2] + 1, 0);
+        for (const auto &e : entries) ++start_[e.first + 1];
+        for (std::size_t i = 1; i < start_.size(); ++i) start_[i] += start_[i - 1];
+        triangles_.resize(entries.size());
+        std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
+        for (const auto &e : entries) triangles_[next[e.first]++] = e.second;
+    }
+
+    // The distance from p to the nearest triangle, or any distance at most `enough` once one
+    // within it is found: shell after shell of cells around p's, until no cell farther out can
+    // hold a nearer one.
+    double distance(const glm::dvec3 &p, double enough) const {
+        const glm::ivec3 home = cell_of(p);
+        // p may lie outside the grid (by less than the surfaces' distance): the first shells can
+        // then be nearer than their number says.
+        glm::dvec3 outside(0.0);
+        for (int k = 0; k < 3; ++k)
+            outside[k] = std::max({low_[k] - p[k], p[k] - (low_[k] + cells_[k] * cell_), 0.0});
+        const double slack = glm::length(outside);
+        double best = std::numeric_limits<double>::max();
+        const int shells = std::max({cells_[0], cells_[1], cells_[2]});
+        for (int r = 0; r <= shells && best > (r - 1) * cell_ - slack; ++r)
+            for (int x = std::max(home.x - r, 0); x <= std::min(home.x + r, cells_[0] - 1); ++x)
+                for (int y = std::max(home.y - r, 0); y <= std::min(home.y + r, cells_[1] - 1); ++y) {
+                    // Inside the shell's x and y span, only its two z faces; on its rim, every z.
+                    const bool rim = std::abs(x - home.x) == r || std::abs(y - home.y) == r;
+                    for (int z = home.z - r; z <= home.z + r; z += rim ? 1 : std::max(2 * r, 1)) {
+                        if (z < 0 || z >= cells_[2]) continue;
+                        const std::size_t i = index(x, y, z);
+                        for (std::uint32_t k = start_[i]; k < start_[i + 1]; ++k) {
+                            const std::uint32_t t = triangles_[k];
+                            const glm::dvec3 &a = mesh_.positions[indices_[t]],
+                                             &b = mesh_.positions[indices_[t + 1]],
+                                             &c = mesh_.positions[indices_[t + 2]];
+                            best = std::min(best, glm::length(p - closest_on_triangle(p, a, b, c)));
+                            if (best <= enough) return best;
+                        }
+                    }
+                }
+        return best;
+    }
+
+  private:
+    glm::ivec3 cell_of(const glm::dvec3 &p) const {
+        glm::ivec3 c;
+        for (int k = 0; k < 3; ++k)
+            c[k] = std::clamp(static_cast<int>(std::floor((p[k] - low_[k]) / cell_)), 0, cells_[k] - 1);
+        return c;
+    }
+    std::size_t index(int x, int y, int z) const {
+        return (static_cast<std::size_t>(z) * cells_[1] + y) * cells_[0] + x;
+    }
+
+    const Mesh &mesh_;
+    const std::uint32_t *indices_;
+    glm::dvec3 low_;
+    double cell_ = 1.0;
+    int cells_[3] = {1, 1, 1};
+    std::vector<std::uint32_t> start_;     // per cell, where its triangles begin in triangles_
+    std::vector<std::uint32_t> triangles_; // first indices
+};
+
+// The points of a level's triangle where it parts most from the mesh: its centroid and the
+// midpoints of its edges (its corners lie on both).
+template <typename Visit>
+void sample_triangles(const Mesh &mesh, const std::uint32_t *indices, std::size_t count, Visit &&visit) {
+    for (std::size_t t = 0; t < count; t += 3) {
+        const glm::dvec3 &a = mesh.positions[indices[t]], &b = mesh.positions[indices[t + 1]],
+                         &c = mesh.positions[indices[t + 2]];
+        visit((a + b + c) / 3.0);
+        visit((a + b) * 0.5);
+        visit((b + c) * 0.5);
+        visit((c + a) * 0.5);
+    }
+}
+
+} // namespace
+
+LodChain build_lod_chain(const Mesh &mesh) {
+    LodChain chain;
+    chain.indices = mesh.triangles;
+    chain.levels.push_back({0, static_cast<std::uint32_t>(mesh.triangles.size()), 0.0});
+    if (mesh.triangle_count() < kFewestTriangles) return chain;
+
+    std::vector<float> positions;
+    positions.reserve(mesh.positions.size() * 3);
+    for (const glm::dvec3 &p : mesh.positions)
+        for (int k = 0; k < 3; ++k) positions.push_back(static_cast<float>(p[k]));
+    const std::size_t vertex_count = mesh.positions.size();
+    // meshoptimizer's errors are relative to the mesh's extent: this turns them into lengths.
+    const double scale = meshopt_simplifyScale(positions.data(), vertex_count, 3 * sizeof(float));
+    const double rounding = 1e-9 * scale; // distances below it are 0 (a flat grid's levels)
+
+    // The mesh's surface, for measuring how far each level strays from it.
+    const TriangleGrid whole(mesh, mesh.triangles.data(), mesh.triangles.size());
+    std::vector<std::uint32_t> simplified(mesh.triangles.size());
+    std::size_t previous = mesh.triangles.size();
+    double error_so_far = 0.0;
+    for (std::size_t target = previous / 2; target >= 3 * kCoarsest; target /= 2) {
+        float error = 0.0f;
+        // Each level from the mesh itself (not from the level before), so errors do not add up;
+        // no error limit (1 = the whole extent): the triangle count decides.
+        const std::size_t count = meshopt_simplify(
+            simplified.data(), mesh.triangles.data(), mesh.triangles.size(), positions.data(),
+            vertex_count, 3 * sizeof(float), target, 1.0f, 0, &error);
+        if (count == 0 || count * 4 > previous * 3) break; // it stopped reducing
+        // meshoptimizer's own estimate (error * scale) falls short of the distance between the
+        // surfaces, by up to 3 times on a torus: it is measured instead (a two-sided Hausdorff
+        // distance, sampled), from the mesh's vertices to the level's triangles (the vertices it
+        // left out are where it strays) and from the level's triangles (their centroids and edge
+        // midpoints) to the mesh's, and is at least the estimate. (A point nearer than the largest
+        // distance so far cannot raise it: its search stops at the first triangle that near.)
+        double distance = static_cast<double>(error) * scale;
+        const auto farthest = [&](const TriangleGrid &surface, const glm::dvec3 &p) {
+            distance = std::max(distance, surface.distance(p, std::max(distance, rounding)));
+        };
+        sample_triangles(mesh, simplified.data(), count,
+                         [&](const glm::dvec3 &p) { farthest(whole, p); });
+        const TriangleGrid level(mesh, simplified.data(), count);
+        for (const glm::dvec3 &p : mesh.positions) farthest(level, p);
+        error_so_far = std::max(error_so_far, distance);
+        chain.levels.push_back({static_cast<std::uint32_t>(chain.indices.size()),
+                                static_cast<std::uint32_t>(count), error_so_far});
+        chain.indices.insert(chain.indices.end(), simplified.begin(),
+                             simplified.begin() + static_cast<std::ptrdiff_t>(count));
+        previous = count;
+    }
+    return chain;
+}
+
+std::size_t choose_level(const std::vector<LodLevel> &levels, double allowed) {
+    std::size_t chosen = 0;
+    for (std::size_t i = 1; i < levels.size() && levels[i].error <= allowed; ++i) chosen = i;
+    return chosen;
+}
+
+} // namespace animator

@@ -1,0 +1,42 @@
+// Levels of detail of a mesh, for drawing only (physics and export see the mesh itself): the mesh,
+// then copies with about half the triangles of the one before, made by meshoptimizer's
+// edge-collapse simplifier (Garland and Heckbert's quadrics; seams of split vertices kept), each
+// with how far its surface strays from the mesh's, measured. The renderer draws the coarsest level
+// whose error, seen from the camera, is below a fraction of a pixel (RenderOptions::detail_pixels;
+// the same level in the shadow maps and cube maps, so a model never shadows itself): a far
+// model's triangles are then a few pixels each, not fractions of one, which a software rasterizer
+// (llvmpipe shades blocks of 4x4 pixels a triangle) pays for many times over
+// (docs/performance.md, "Levels of detail").
+#pragma once
+
+#include "assets/mesh.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace animator {
+
+struct LodLevel {
+    std::uint32_t first = 0; // its first index in LodChain::indices
+    std::uint32_t count = 0; // its indices, 3 a triangle
+    // How far its surface strays from the mesh's, in the mesh's own units: the two-sided
+    // Hausdorff distance, sampled (from the mesh's vertices to its triangles, from its triangles'
+    // centroids and edge midpoints to the mesh's), and at least meshoptimizer's own estimate,
+    // which falls short of it; 0 for the mesh itself.
+    double error = 0.0;
+};
+
+struct LodChain {
+    std::vector<std::uint32_t> indices; // every level's triangles, one after the other
+    std::vector<LodLevel> levels;       // levels[0]: the mesh itself; errors increase
+};
+
+// The chain for `mesh`: the mesh itself, and simplified levels while each has at most 3/4 of the
+// triangles of the one before, down to about 24 triangles. A mesh of fewer than 64 triangles gets
+// one level.
+LodChain build_lod_chain(const Mesh &mesh);
+
+// The index of the coarsest level whose error is at most `allowed` (mesh units); 0 when none is.
+std::size_t choose_level(const std::vector<LodLevel> &levels, double allowed);
+
+} // namespace animator
