@@ -1,5 +1,6 @@
 #include "render/gpu_mesh.hpp"
 
+#include <animator/mesh_topology.hpp>
 #include <animator/shading.h>
 #include <glad/gl.h>
 
@@ -23,6 +24,14 @@ GpuMesh::GpuMesh(const Mesh &mesh) {
     }
     const LodChain chain = build_lod_chain(mesh);
     levels_ = chain.levels;
+    static_assert(sizeof(glm::dvec3) == 3 * sizeof(double), "positions are read as doubles");
+    ani_mesh_view view{};
+    view.struct_size = sizeof view;
+    view.positions = &mesh.positions.data()->x; // glm::dvec3 is three doubles
+    view.vertex_count = static_cast<std::uint32_t>(mesh.positions.size());
+    view.triangles = mesh.triangles.data();
+    view.triangle_count = static_cast<std::uint32_t>(mesh.triangle_count());
+    closed_ = !mesh.positions.empty() && ani::is_closed(view);
 
     glGenVertexArrays(1, &vertex_array_);
     glGenBuffers(1, &vertices_);

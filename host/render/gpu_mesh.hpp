@@ -22,6 +22,9 @@ class GpuMesh {
     // uniforms are bound.
     void draw(std::size_t level = 0) const;
     const std::vector<LodLevel> &levels() const { return levels_; }
+    // The mesh is a closed surface wound outward (animator/mesh_topology.hpp): seen from outside
+    // it, its back faces are hidden behind its front ones and need not be drawn.
+    bool closed() const { return closed_; }
 
     // A cube from -1 to 1, its triangles facing inward, for the skybox.
     static Mesh skybox_cube();
@@ -29,6 +32,7 @@ class GpuMesh {
   private:
     unsigned vertex_array_ = 0, vertices_ = 0, indices_ = 0;
     std::vector<LodLevel> levels_;
+    bool closed_ = false;
 };
 
 } // namespace animator

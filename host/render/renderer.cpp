@@ -124,6 +124,7 @@ void Renderer::prepare_frame(const Frame &frame, int width, int height) {
     view_ = view;
     view_projection_ = projection * view;
     frustum_ = Frustum(view_projection_);
+    eye_ = frame.camera.position;
     FrameUniforms &u = frame_uniforms_;
     u.view = glm::mat4(view);
     u.projection = glm::mat4(projection);
@@ -276,7 +277,23 @@ void Renderer::draw_model(int m, bool selected, uint32_t without) {
         u.tint = u.reflectivity = u.transparency = 0.0f;
     }
     apply_uniforms(program, *programs_, frame_uniforms_, &u);
-    gpu_meshes_[static_cast<size_t>(m)]->draw(counted_level(m));
+    const GpuMesh &mesh = *gpu_meshes_[static_cast<size_t>(m)];
+    if (model.transparency <= 0.0) { // (transparent ones are always drawn seen from outside)
+        // A closed mesh seen from outside its bounding sphere, so from outside itself: its back
+        // faces are hidden behind its front ones and are not drawn. Seen from within, or open (a
+        // floor is seen from below), both sides.
+        glm::dvec3 centre;
+        double radius = 0.0;
+        bounds_of(m, centre, radius);
+        const bool one_sided = mesh.closed() && glm::length(eye_ - centre) > radius;
+        if (one_sided) {
+            glEnable(GL_CULL_FACE);
+            ++stats_.one_sided;
+        } else {
+            glDisable(GL_CULL_FACE);
+        }
+    }
+    mesh.draw(counted_level(m));
 }
 
 void Renderer::draw_transparent(int m, bool selected) {
@@ -326,6 +343,7 @@ void Renderer::draw_reflections() {
     if (wanted.empty()) return;
     // The frame as the camera sees it, put back after.
     const FrameUniforms camera = frame_uniforms_;
+    const glm::dvec3 camera_eye = eye_;
     const glm::dmat4 view = view_, view_projection = view_projection_;
     const Frustum frustum = frustum_;
     for (const auto &[distance, m] : wanted) {
@@ -346,6 +364,7 @@ void Renderer::draw_reflections() {
                          frame_uniforms_.view = glm::mat4(face_view);
                          frame_uniforms_.projection = glm::mat4(projection);
                          frame_uniforms_.camera_position = glm::vec3(centre);
+                         eye_ = centre;
                          view_ = face_view;
                          view_projection_ = projection * face_view;
                          frustum_ = Frustum(view_projection_);
@@ -360,6 +379,7 @@ void Renderer::draw_reflections() {
         ++stats_.reflection_maps;
     }
     probing_ = -1;
+    eye_ = camera_eye;
     frame_uniforms_ = camera;
     view_ = view;
     view_projection_ = view_projection;
@@ -382,7 +402,7 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     glEnable(GL_SCISSOR_TEST); // the clear keeps to the viewport
     glScissor(target.x, target.y, target.width, target.height);
     glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE); // open meshes (a floor) are seen from both sides
+    glDisable(GL_CULL_FACE); // open meshes (a floor) are seen from both sides (draw_model)
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
     glClearColor(options_.background.r, options_.background.g, options_.background.b, 1.0f);

@@ -94,6 +94,9 @@ struct RenderStats {
     // how many of them levels of detail left out.
     std::size_t triangles = 0;
     std::size_t triangles_saved = 0;
+    // Opaque models drawn one-sided (closed meshes seen from outside: back faces not drawn),
+    // summed over every pass.
+    std::size_t one_sided = 0;
     std::uint32_t features_used = 0; // the union of the feature sets asked of the shading plugin
 };
 
@@ -194,6 +197,7 @@ class Renderer {
     glm::dmat4 view_{1.0}, view_projection_{1.0};
     Frustum frustum_{glm::dmat4(1.0)};
     std::vector<std::size_t> levels_; // per model, its level of detail in every pass
+    glm::dvec3 eye_{0.0};             // where the pass being drawn is seen from
     FrameUniforms frame_uniforms_;
     ModelUniforms model_uniforms_;
     unsigned bound_[2] = {0, 0}; // the texture names bound on the two units this frame

@@ -68,54 +68,6 @@ glm::dvec3 mean_vertex(const ani_mesh_view &mesh) {
 
 } // namespace
 
-bool is_closed(const ani_mesh_view &mesh, std::string *why) {
-    auto fail = [&](std::string text) {
-        if (why) *why = std::move(text);
-        return false;
-    };
-    if (mesh.triangle_count == 0) return fail("it has no triangles");
-    // Meshes split a vertex where its normals or UVs differ (a cube's corner is three vertices
-    // at one position): the surface is closed when the triangles close over the positions, so
-    // each vertex is taken as the first vertex at its position.
-    std::map<std::array<double, 3>, uint32_t> first_at;
-    std::vector<uint32_t> welded(mesh.vertex_count);
-    for (uint32_t i = 0; i < mesh.vertex_count; ++i) {
-        const double *p = mesh.positions + 3 * std::size_t(i);
-        welded[i] = first_at.emplace(std::array<double, 3>{p[0], p[1], p[2]}, i).first->second;
-    }
-    // Each undirected edge (lower index first) with the triangles that use it and whether they
-    // run along it from the lower index to the higher.
-    std::map<std::pair<uint32_t, uint32_t>, std::vector<std::pair<uint32_t, bool>>> edges;
-    for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
-        const uint32_t *named = mesh.triangles + 3 * std::size_t(t);
-        for (int k = 0; k < 3; ++k)
-            if (named[k] >= mesh.vertex_count)
-                return fail("triangle " + std::to_string(t) + " names vertex " +
-                            std::to_string(named[k]) + " of " + std::to_string(mesh.vertex_count));
-        const uint32_t v[3] = {welded[named[0]], welded[named[1]], welded[named[2]]};
-        if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0])
-            return fail("triangle " + std::to_string(t) + " is degenerate");
-        for (int k = 0; k < 3; ++k) {
-            const uint32_t a = v[k], b = v[(k + 1) % 3];
-            edges[{std::min(a, b), std::max(a, b)}].push_back({t, a < b});
-        }
-    }
-    for (const auto &[edge, users] : edges) {
-        const std::string name = std::to_string(edge.first) + "-" + std::to_string(edge.second);
-        if (users.size() != 2)
-            return fail("edge " + name + " is used by " + std::to_string(users.size()) +
-                        (users.size() == 1 ? " triangle" : " triangles"));
-        if (users[0].second == users[1].second)
-            return fail("edge " + name + " runs the same way in triangles " +
-                        std::to_string(users[0].first) + " and " + std::to_string(users[1].first));
-    }
-    const double volume = volume_integrals(mesh, mean_vertex(mesh))[0];
-    if (!(volume > 0.0))
-        return fail("its triangles face inward or enclose no volume (volume " +
-                    std::to_string(volume) + ")");
-    return true;
-}
-
 void principal_axes(const glm::dmat3 &tensor, glm::dvec3 &moments, glm::dmat3 &axes) {
     // Cyclic Jacobi (Golub & Van Loan, Matrix Computations, 8.5): rotate away each off-diagonal
     // element in turn until they are zero to rounding. a[i][j] is row i, column j.

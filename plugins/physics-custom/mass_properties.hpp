@@ -6,6 +6,7 @@
 #pragma once
 
 #include <animator/free_rotation.hpp>
+#include <animator/mesh_topology.hpp>
 #include <animator/physics.h>
 
 #include <glm/gtc/quaternion.hpp>
@@ -27,13 +28,9 @@ struct MassProperties {
     glm::dquat principal_orientation{1.0, 0.0, 0.0, 0.0};
 };
 
-// Whether every edge of the mesh is shared by exactly two triangles that run along it in
-// opposite directions (a closed, consistently oriented surface), vertices at the same position
-// counting as one (meshes split them for normals and UVs). When not, `why` says what is
-// wrong ("edge 3-7 is used by 1 triangle", "edge 3-7 runs the same way in triangles 2 and 5",
-// "triangle 4 is degenerate") for the message "model 'X' cannot rotate: its mesh is not closed
-// (why)".
-bool is_closed(const ani_mesh_view &mesh, std::string *why = nullptr);
+// Whether the mesh is closed and wound outward (the SDK's, animator/mesh_topology.hpp); `why`
+// goes into the message "model 'X' cannot rotate: its mesh is not closed (why)".
+using ani::is_closed;
 
 // Principal moments (ascending) and axes of a symmetric 3x3 tensor by cyclic Jacobi rotations.
 // The axes are the columns of `axes`, ordered with the moments; each axis' sign makes its

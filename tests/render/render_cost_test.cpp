@@ -132,3 +132,25 @@ TEST_CASE("a skybox or texture that cannot be loaded is reported and left out") 
     CHECK(r.stats.features_used == 0u);
     CHECK(r.stats.models_drawn == 3);
 }
+
+TEST_CASE("closed meshes seen from outside are drawn one-sided, and seen from within, two-sided") {
+    // The sphere and the cube are closed: their back faces are left out; the floor is open.
+    const Rendered outside = render_document(plain_scene());
+    CHECK(outside.stats.one_sided == 2);
+    CHECK(outside.stats.models_drawn == 3);
+    // A camera inside a large closed cube sees its inside walls all round (their back faces):
+    // no pixel is the background.
+    Document room = make_document(make_camera({0, 0, 0}, 20, 10));
+    room.add_model(make_model("room", "cube", {0.7, 0.6, 0.4}), make_state({0.5, 0.2, -0.3}, glm::dvec3(5.0)));
+    RenderOptions options;
+    options.background = {0.0f, 0.0f, 1.0f};
+    const Rendered inside = render_document(room, 160, 120, {}, options);
+    CHECK(inside.stats.one_sided == 0);
+    int background = 0;
+    for (int y = 0; y < 120; ++y)
+        for (int x = 0; x < 160; ++x) {
+            const glm::ivec3 c = pixel(inside.image, x, y);
+            background += c.b > 200 && c.r < 20 && c.g < 20;
+        }
+    CHECK(background == 0);
+}
