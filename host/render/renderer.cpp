@@ -233,14 +233,21 @@ void Renderer::draw_skybox() {
     stats_.skybox_drawn = true;
 }
 
-void Renderer::draw_model(int m, bool selected, uint32_t without) {
+uint32_t Renderer::features_of(int m, bool selected, uint32_t without, const GpuTexture **image) {
     const Model &model = models_[static_cast<size_t>(m)];
     // A stand-in for a mesh not found: plain magenta, as a placeholder reads in any 3D program.
+    if (meshes_[static_cast<size_t>(m)] && meshes_[static_cast<size_t>(m)]->stand_in)
+        without |= ANI_SHADE_TEXTURE | ANI_SHADE_REFLECTION | ANI_SHADE_REFRACTION;
+    const GpuTexture *loaded = model.texture.empty() ? nullptr : texture(model.texture);
+    if (image) *image = loaded;
+    return model_features(model, loaded != nullptr, settings_.cel_shading, selected) & ~without;
+}
+
+void Renderer::draw_model(int m, bool selected, uint32_t without) {
+    const Model &model = models_[static_cast<size_t>(m)];
     const bool stand_in = meshes_[static_cast<size_t>(m)] && meshes_[static_cast<size_t>(m)]->stand_in;
-    if (stand_in) without |= ANI_SHADE_TEXTURE | ANI_SHADE_REFLECTION | ANI_SHADE_REFRACTION;
-    const GpuTexture *image = model.texture.empty() ? nullptr : texture(model.texture);
-    const uint32_t features =
-        model_features(model, image != nullptr, settings_.cel_shading, selected) & ~without;
+    const GpuTexture *image = nullptr;
+    const uint32_t features = features_of(m, selected, without, &image);
     const LinkedProgram &program = programs_->get(features);
     stats_.features_used |= features;
     if (&program != current_program_) {
@@ -341,6 +348,12 @@ void Renderer::draw_reflections() {
         return std::any_of(wanted.begin(), wanted.end(), [&](const auto &w) { return w.second == m; });
     });
     if (wanted.empty()) return;
+    // Every model, grouped by program as in the view (draw()), for the cube maps' faces.
+    by_program_.clear();
+    for (int o = 0; o < count; ++o)
+        if (gpu_meshes_[static_cast<size_t>(o)]) by_program_.emplace_back(features_of(o, false, 0, nullptr), o);
+    std::stable_sort(by_program_.begin(), by_program_.end(),
+                     [](const auto &a, const auto &b) { return a.first < b.first; });
     // The frame as the camera sees it, put back after.
     const FrameUniforms camera = frame_uniforms_;
     const glm::dvec3 camera_eye = eye_;
@@ -371,10 +384,8 @@ void Renderer::draw_reflections() {
                          if (skybox_) draw_skybox();
                          glEnable(GL_DEPTH_TEST);
                          glDepthFunc(GL_LESS);
-                         for (int o = 0; o < count; ++o)
-                             if (o != m && gpu_meshes_[static_cast<size_t>(o)] && visible(o) &&
-                                 around(o))
-                                 draw_model(o, false, 0);
+                         for (const auto &[features, o] : by_program_)
+                             if (o != m && visible(o) && around(o)) draw_model(o, false, 0);
                      });
         ++stats_.reflection_maps;
     }
@@ -418,6 +429,7 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     glStencilFunc(GL_ALWAYS, 1, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     transparent_.clear();
+    by_program_.clear();
     for (int m = 0; m < count; ++m) {
         if (!gpu_meshes_[static_cast<size_t>(m)] || hidden_.count(m)) continue;
         if (!visible(m)) {
@@ -430,8 +442,15 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
             transparent_.emplace_back(depth, m);
             continue;
         }
-        draw_model(m, selected.count(m) > 0, 0);
+        by_program_.emplace_back(features_of(m, selected.count(m) > 0, 0, nullptr), m);
     }
+    // Grouped by program (stable: in the document's order within a group), so each program is
+    // bound once: a program switch costs llvmpipe more than the draw of a small model
+    // (docs/performance.md). The depth test makes the order invisible (but where two models'
+    // surfaces coincide).
+    std::stable_sort(by_program_.begin(), by_program_.end(),
+                     [](const auto &a, const auto &b) { return a.first < b.first; });
+    for (const auto &[features, m] : by_program_) draw_model(m, selected.count(m) > 0, 0);
     // Transparent models last, the farthest first, each seen from outside only.
     std::sort(transparent_.begin(), transparent_.end());
     glEnable(GL_CULL_FACE);

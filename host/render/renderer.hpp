@@ -158,6 +158,8 @@ class Renderer {
     const GpuTexture *texture(const std::string &id);
     void load_skybox(const std::string &id);
     void draw_skybox();
+    // The features model m is drawn with, less `without` (and its texture, when `image`).
+    uint32_t features_of(int m, bool selected, uint32_t without, const GpuTexture **image);
     // Draws model m with the features it uses, less `without`.
     void draw_model(int m, bool selected, uint32_t without);
     void draw_transparent(int m, bool selected);
@@ -203,6 +205,7 @@ class Renderer {
     unsigned bound_[2] = {0, 0}; // the texture names bound on the two units this frame
     const LinkedProgram *current_program_ = nullptr;
     std::vector<std::pair<double, int>> transparent_; // (view-space z, model): far ones first
+    std::vector<std::pair<std::uint32_t, int>> by_program_; // (features, model): the draw order
     std::vector<std::pair<double, int>> reflecting_;  // (distance to the camera, model): nearest first
     RenderStats stats_;
 };
