@@ -30,6 +30,12 @@ std::unique_ptr<PluginInstance> shading_instance(PluginRegistry &plugins, const 
     return std::make_unique<PluginInstance>(*info, plugins.host());
 }
 
+// Sorts (features, model) pairs by features, models in the document's order within a group.
+void group_by_program(std::vector<std::pair<std::uint32_t, int>> &draws) {
+    std::stable_sort(draws.begin(), draws.end(),
+                     [](const auto &a, const auto &b) { return a.first < b.first; });
+}
+
 // The skybox's faces in GL's cube-map order (docs/assets.md).
 constexpr const char *kFaces[6] = {"right", "left", "top", "bottom", "front", "back"};
 
@@ -285,7 +291,8 @@ void Renderer::draw_model(int m, bool selected, uint32_t without) {
     }
     apply_uniforms(program, *programs_, frame_uniforms_, &u);
     const GpuMesh &mesh = *gpu_meshes_[static_cast<size_t>(m)];
-    if (model.transparency <= 0.0) { // (transparent ones are always drawn seen from outside)
+    // (Transparent models in the view are drawn from outside only: draw_transparent culls.)
+    if (model.transparency <= 0.0 || probing_ >= 0) {
         // A closed mesh seen from outside its bounding sphere, so from outside itself: its back
         // faces are hidden behind its front ones and are not drawn. Seen from within, or open (a
         // floor is seen from below), both sides.
@@ -352,8 +359,7 @@ void Renderer::draw_reflections() {
     by_program_.clear();
     for (int o = 0; o < count; ++o)
         if (gpu_meshes_[static_cast<size_t>(o)]) by_program_.emplace_back(features_of(o, false, 0, nullptr), o);
-    std::stable_sort(by_program_.begin(), by_program_.end(),
-                     [](const auto &a, const auto &b) { return a.first < b.first; });
+    group_by_program(by_program_);
     // The frame as the camera sees it, put back after.
     const FrameUniforms camera = frame_uniforms_;
     const glm::dvec3 camera_eye = eye_;
@@ -448,8 +454,7 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     // bound once: a program switch costs llvmpipe more than the draw of a small model
     // (docs/performance.md). The depth test makes the order invisible (but where two models'
     // surfaces coincide).
-    std::stable_sort(by_program_.begin(), by_program_.end(),
-                     [](const auto &a, const auto &b) { return a.first < b.first; });
+    group_by_program(by_program_);
     for (const auto &[features, m] : by_program_) draw_model(m, selected.count(m) > 0, 0);
     // Transparent models last, the farthest first, each seen from outside only.
     std::sort(transparent_.begin(), transparent_.end());
