@@ -7,8 +7,9 @@
 # Usage: tools/editor_fps.sh [build/bin/animator] [runs] [models]
 # models (default 100): a floor and models - 1 balls. The View settings (shadows, anti-aliasing)
 # are the editor's own, from $XDG_STATE_HOME/animator/view: point XDG_STATE_HOME at a folder with
-# a `view` file of "msaa N" and "shadows 0|1" lines to measure each (docs/performance.md). The
-# frame budget that lowers them when frames are slow is off (ANIMATOR_FRAME_BUDGET=off).
+# a `view` file of "msaa N", "shadows 0|1", "reflections 0|1" and "resolution 100|75|50" lines to
+# measure each (docs/performance.md). The frame budget that lowers them when frames are slow is
+# off (ANIMATOR_FRAME_BUDGET=off).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=$(realpath "${1:-build/bin/animator}")

@@ -456,9 +456,12 @@ int run_editor(const EditorOptions &options) {
                                       (file.empty() ? std::string("an untitled animation") : file.filename().string()) +
                                       "; Discard sets it aside.\nAutosaved in " + home_path(offer->file));
 
-        std::unique_ptr<OffscreenFramebuffer>
-            view_buffer;                           // the multisampled 3D view, when anti-aliased
+        // The 3D view drawn off the window, when anti-aliased or at a lower resolution; refused:
+        // GL could not make one (said once), so the view is drawn on the window as it is.
+        std::unique_ptr<OffscreenFramebuffer> view_buffer;
+        bool view_buffer_refused = false;
         int asked_samples = 0, usable_samples = 1; // the View menu's, and what GL gives of it
+        std::string said_fewer;                    // the last line saying GL gives fewer samples
         std::uint64_t drawn_version = ~std::uint64_t{0};
         std::string title;
         // The 3D view: the space the panels left in the last frame drawn, where clicks pick.
@@ -766,37 +769,51 @@ int run_editor(const EditorOptions &options) {
             target.height = static_cast<int>(std::lround(view.height * to_fb));
             target.y = fb_h - static_cast<int>(std::lround(view.y * to_fb)) - target.height; // GL's rows go up
             renderer.set_hidden(session.hidden_models()); // the Outliner's eyes (not drawn, not picked)
+            // Frames back to back (playing, dragging): drawn at the frame budget's quality, and
+            // timed for it.
+            const bool moving = keep_budget && (session.playing() || pointer.down());
             if (target.width > 0 && target.height > 0) {
                 // Anti-aliased: the scene drawn into a multisampled framebuffer of the view's size,
                 // resolved onto the window (which needs no multisampled visual of its own).
                 const ViewSettings &chosen = panels.view_settings();
+                const ViewQuality chosen_quality{chosen.shadows, RenderOptions{}.shadow_map_size, chosen.msaa,
+                                                 chosen.reflections ? RenderOptions{}.reflection_size : 0,
+                                                 chosen.resolution};
                 if (budgeted != chosen) {
-                    frame_budget.choose({chosen.shadows, RenderOptions{}.shadow_map_size,
-                                         chosen.msaa,
-                                         chosen.reflections ? RenderOptions{}.reflection_size : 0});
+                    view_buffer_refused = false; // (tried again with the new settings)
+                    frame_budget.choose(chosen_quality);
                     budgeted = chosen;
                 }
-                const ViewQuality &quality = frame_budget.quality();
+                // The budget's quality while frames come back to back (playing, dragging); at rest
+                // the view is drawn as chosen (the one frame drawn then may take its time), as
+                // Blender's viewport draws at full resolution once navigation stops.
+                const ViewQuality &quality = moving ? frame_budget.quality() : chosen_quality;
                 if (quality.msaa != asked_samples) { // the View menu or the budget changed it
                     asked_samples = quality.msaa;
                     std::string fewer;
                     usable_samples = supported_samples(asked_samples, &fewer);
-                    if (!fewer.empty()) panels.say(fewer, true);
+                    if (!fewer.empty() && fewer != said_fewer) panels.say(fewer, true);
+                    said_fewer = fewer; // (said once, not at every start and stop of playback)
                 }
                 const int samples = usable_samples;
-                if (samples > 1 &&
-                    (!view_buffer || view_buffer->width() != target.width ||
-                     view_buffer->height() != target.height || view_buffer->samples() != samples)) {
+                // At a lower resolution the scene is drawn into a smaller framebuffer, stretched
+                // onto the view (View > Resolution, or the frame budget).
+                const int drawn_width = std::max(1, target.width * quality.resolution / 100),
+                          drawn_height = std::max(1, target.height * quality.resolution / 100);
+                const bool offscreen = !view_buffer_refused &&
+                                       (samples > 1 || drawn_width != target.width || drawn_height != target.height);
+                if (offscreen &&
+                    (!view_buffer || view_buffer->width() != drawn_width ||
+                     view_buffer->height() != drawn_height || view_buffer->samples() != samples)) {
                     view_buffer.reset();
                     try {
-                        view_buffer = std::make_unique<OffscreenFramebuffer>(
-                            target.width, target.height, samples);
+                        view_buffer = std::make_unique<OffscreenFramebuffer>(drawn_width, drawn_height, samples);
                     } catch (const std::exception &e) {
-                        panels.say(std::string(e.what()) + "; drawing without anti-aliasing", true);
-                        usable_samples = 1; // said once, not every frame
+                        panels.say(std::string(e.what()) + "; drawing without anti-aliasing, at full resolution", true);
+                        view_buffer_refused = true; // said once, not every frame
                     }
                 }
-                if (samples <= 1) view_buffer.reset();
+                if (!offscreen) view_buffer.reset();
                 const RenderTarget scene_target = view_buffer ? view_buffer->target() : target;
                 renderer.set_shadows(quality.shadows, quality.shadow_map_size);
                 renderer.set_reflections(quality.reflection_size);
@@ -834,7 +851,7 @@ int run_editor(const EditorOptions &options) {
             frame_rate.frame(glfwGetTime());
             // Frames back to back (playing, dragging) count against the budget; one line when it
             // lowers the view's quality (frame_budget.hpp).
-            if (keep_budget && (session.playing() || pointer.down())) {
+            if (moving) {
                 const double now = glfwGetTime();
                 if (last_frame_at >= 0.0)
                     if (const auto lowered = frame_budget.frame(now - last_frame_at))

@@ -239,6 +239,16 @@ void Panels::view_menu() {
         ImGui::EndMenu();
     }
     tip("Smooth edges in the 3D view: samples per pixel (multisampling); Off draws faster");
+    if (ImGui::BeginMenu("Resolution")) {
+        for (const int percent : kResolutions) {
+            const std::string label = std::to_string(percent) + "%";
+            if (ImGui::MenuItem(label.c_str(), nullptr, view_.resolution == percent))
+                view_.resolution = percent;
+        }
+        ImGui::EndMenu();
+    }
+    tip("The share of the 3D view's pixels drawn along each side: below 100%% the scene is drawn\n"
+        "smaller and stretched onto the view, softer but faster (Blender's viewport resolution)");
     ImGui::EndMenu();
     if (view_ != before) {
         std::string error;

@@ -1,7 +1,8 @@
 // Keeping the 3D view within its frame budget (60 fps): while frames come one after another
 // (playing, dragging), when the median of the last frames takes longer than the budget, the view
 // is drawn more cheaply, one step at a time with one line each: no anti-aliasing, then no
-// reflections of other models, then shadow maps of half the texels. The View menu's
+// reflections of other models, then shadow maps of half the texels, then fewer pixels (75%, then
+// 50% of the view's along each side, stretched onto it). The View menu's
 // settings stay as chosen; choosing them again starts over (docs/performance.md, "Shadows and
 // anti-aliasing").
 #pragma once
@@ -18,19 +19,23 @@ struct ViewQuality {
     int shadow_map_size = 1024;
     int msaa = 4;
     int reflection_size = 128; // the models' cube maps of the models around them (0: none)
+    int resolution = 100;      // percent of the view's pixels drawn along each side
     bool operator==(const ViewQuality &o) const {
         return shadows == o.shadows && shadow_map_size == o.shadow_map_size && msaa == o.msaa &&
-               reflection_size == o.reflection_size;
+               reflection_size == o.reflection_size && resolution == o.resolution;
     }
 };
 
-// The smallest shadow map the budget lowers to.
+// The smallest shadow map the budget lowers to, and the lowest resolution (percent).
 constexpr int kSmallestShadowMap = 512;
+constexpr int kLowestResolution = 50;
 
 class FrameBudget {
   public:
-    // `budget` seconds a frame, judged on the median of `window` frames.
-    explicit FrameBudget(double budget = 1.0 / 60.0, int window = 30);
+    // `budget` seconds a frame, judged on the median of `window` frames, or of the frames of the
+    // last `span` seconds when they are fewer (at least 3): at 3 frames a second a step is taken
+    // after a second, not ten.
+    explicit FrameBudget(double budget = 1.0 / 60.0, int window = 30, double span = 1.0);
 
     // Starts over from `chosen` (the View menu's settings, at the start or when changed).
     void choose(const ViewQuality &chosen);
@@ -45,6 +50,7 @@ class FrameBudget {
   private:
     double budget_;
     int window_;
+    double span_;
     ViewQuality quality_;
     std::vector<double> times_;
 };

@@ -15,6 +15,12 @@ namespace animator {
 
 fs::path view_settings_path() { return state_path("view"); }
 
+bool valid_resolution(int percent) {
+    for (const int r : kResolutions)
+        if (r == percent) return true;
+    return false;
+}
+
 ViewSettings load_view_settings(const fs::path &file, std::string *warning) {
     ViewSettings s;
     std::error_code ec;
@@ -35,10 +41,12 @@ ViewSettings load_view_settings(const fs::path &file, std::string *warning) {
             s.shadows = value == 1;
         } else if (read && name == "reflections" && (value == 0 || value == 1)) {
             s.reflections = value == 1;
+        } else if (read && name == "resolution" && valid_resolution(value)) {
+            s.resolution = value;
         } else if (warning && warning->empty()) {
             *warning = file.string() + ":" + std::to_string(number) + ": '" + line +
                        "' is not a View setting (msaa " + sample_counts_text() +
-                       ", shadows 0 or 1, reflections 0 or 1); ignored";
+                       ", shadows 0 or 1, reflections 0 or 1, resolution 100, 75 or 50); ignored";
         }
     }
     return s;
@@ -50,7 +58,8 @@ bool save_view_settings(const fs::path &file, const ViewSettings &settings, std:
     fs::create_directories(file.parent_path(), ec);
     std::ofstream out(file, std::ios::trunc);
     out << "msaa " << settings.msaa << "\nshadows " << (settings.shadows ? 1 : 0)
-        << "\nreflections " << (settings.reflections ? 1 : 0) << "\n";
+        << "\nreflections " << (settings.reflections ? 1 : 0) << "\nresolution "
+        << settings.resolution << "\n";
     out.flush();
     if (!out) {
         if (error)

@@ -14,11 +14,19 @@ struct ViewSettings {
     // Reflective and transparent models show the models around them (a cube map each, drawn
     // every frame: render/reflection_probes.hpp); off: the skybox only.
     bool reflections = true;
+    // The share of the view's pixels drawn along each axis, in percent (kResolutions): below
+    // 100 the scene is drawn smaller and stretched onto the view, with fewer pixels to shade.
+    int resolution = 100;
     bool operator==(const ViewSettings &o) const {
-        return msaa == o.msaa && shadows == o.shadows && reflections == o.reflections;
+        return msaa == o.msaa && shadows == o.shadows && reflections == o.reflections &&
+               resolution == o.resolution;
     }
     bool operator!=(const ViewSettings &o) const { return !(*this == o); }
 };
+
+// The resolutions the View menu offers, in percent of the view's pixels along each axis.
+constexpr int kResolutions[] = {100, 75, 50};
+bool valid_resolution(int percent);
 
 // Where the View settings are kept; empty without XDG_STATE_HOME or HOME.
 std::filesystem::path view_settings_path();

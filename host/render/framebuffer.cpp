@@ -110,11 +110,14 @@ unsigned OffscreenFramebuffer::resolved() const {
 }
 
 void OffscreenFramebuffer::copy_to(const RenderTarget &target) const {
-    // A multisampled source may be blitted to a single-sampled target of its own size only.
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+    const bool same_size = target.width == width_ && target.height == height_;
+    // A multisampled source may be blitted to a single-sampled target of its own size only:
+    // stretched, it is resolved first.
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, same_size ? framebuffer_ : resolved());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer);
-    glBlitFramebuffer(0, 0, width_, height_, target.x, target.y, target.x + width_,
-                      target.y + height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, width_, height_, target.x, target.y, target.x + target.width,
+                      target.y + target.height, GL_COLOR_BUFFER_BIT,
+                      same_size ? GL_NEAREST : GL_LINEAR);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -48,8 +48,9 @@ class OffscreenFramebuffer {
     int samples() const { return samples_; }
     int actual_samples() const { return actual_samples_; }
 
-    // Copies the colour (resolved when multisampled) into `target`'s viewport, which must be
-    // this framebuffer's size: how the editor puts its anti-aliased view on the window.
+    // Copies the colour (resolved when multisampled) into `target`'s viewport: how the editor puts
+    // its anti-aliased view on the window. A viewport of another size gets it stretched, filtered
+    // (linear): the view drawn at a lower resolution.
     void copy_to(const RenderTarget &target) const;
 
     // The colour as 8-bit RGB, rows top first (as images are stored). `out` is resized to

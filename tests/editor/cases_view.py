@@ -5,6 +5,8 @@
 VIEW_MENU = (137, 19)             # "View" in the Animator Interface's menu bar
 VIEW_SHADOWS_ITEM = (147, 44)      # the first item of the View menu
 VIEW_MENU_REFLECTIONS = (217, 60)  # its second item, "Reflections of other models"
+VIEW_MENU_RESOLUTION = (158, 94)   # its fourth, "Resolution", which opens a submenu
+RESOLUTION_50 = (360, 128)         # that submenu's third item, "50%"
 # orbs.ani at its start: the mirror orb (the leftmost), and a box of sky above the orbs.
 MIRROR_ORB = (521, 237, 605, 321)
 SKY_BOX = (360, 20, 1270, 220)
@@ -100,4 +102,54 @@ def case_view_reflections(c):
     again = e.screenshot('again-off')
     n = changed_pixels(off, again, MIRROR_ORB)[0]
     check(n == 0, 'the next run does not draw the mirror orb as with reflections off (%d pixels)' % n)
+    e.quit()
+
+
+def block_difference(a, b, box, side=8):
+    """The mean difference of a's and b's colours over box, each side x side block averaged
+    first (0 to 255): small when b is a softened a."""
+    x0, y0, x1, y1 = box
+    total = blocks = 0
+    for by in range(y0, y1 - side + 1, side):
+        for bx in range(x0, x1 - side + 1, side):
+            sa = [0, 0, 0]
+            sb = [0, 0, 0]
+            for x, y, px in a.region(bx, by, bx + side, by + side):
+                q = b.at(x, y)
+                for k in range(3):
+                    sa[k] += px[k]
+                    sb[k] += q[k]
+            total += sum(abs(u - v) for u, v in zip(sa, sb)) / (3 * side * side)
+            blocks += 1
+    return total / blocks
+
+
+def case_view_resolution(c):
+    """View > Resolution > 50% draws the 3D view from a quarter of its pixels, stretched onto it:
+    the same picture, softer (its edges change, its 8 x 8 blocks do not), and the choice is kept
+    for the next run."""
+    c.write('ball.ani', RESTING_BALL_ANI)
+    e = c.start('ball.ani')
+    e.mouse_away()
+    full = e.screenshot('resolution-100')
+    e.click(*VIEW_MENU)
+    e.click(*VIEW_MENU_RESOLUTION)
+    e.click(*RESOLUTION_50)
+    e.mouse_away()
+    half = e.screenshot('resolution-50')
+    box = (360, 40, 1270, 550)
+    changed = changed_pixels(full, half, box)[0]
+    apart = block_difference(full, half, box)
+    c.log('at 50%%: %d pixels changed, 8 x 8 blocks %.2f apart' % (changed, apart))
+    check(changed > 200, 'View > Resolution > 50%% changed only %d pixels of the view' % changed)
+    check(apart < 4.0, 'at 50%% the view is not the same picture: its 8 x 8 blocks are %.2f apart' % apart)
+    e.quit()
+    with open(os.path.join(c.state, 'animator', 'view'), encoding='utf-8') as f:
+        kept = f.read()
+    check(re.search(r'^resolution 50$', kept, re.M), 'the View settings file says:\n' + kept)
+    e = c.start('ball.ani', name='again')
+    e.mouse_away()
+    again = e.screenshot('again-50')
+    n = changed_pixels(half, again, box)[0]
+    check(n < 50, 'the next start draws %d pixels otherwise than at 50%%' % n)
     e.quit()

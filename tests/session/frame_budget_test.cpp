@@ -42,6 +42,15 @@ TEST_CASE(
     REQUIRE(said.size() == 1);
     CHECK_THAT(said[0], Catch::Contains("512 texels"));
     CHECK(budget.quality() == ViewQuality{true, 512, 1, 0});
+    // Then fewer pixels: 75%, then 50% of the view's along each side.
+    said = frames(budget, 10, 0.025);
+    REQUIRE(said.size() == 1);
+    CHECK_THAT(said[0], Catch::Contains("75% resolution") && Catch::Contains("View > Resolution"));
+    CHECK(budget.quality() == ViewQuality{true, 512, 1, 0, 75});
+    said = frames(budget, 10, 0.025);
+    REQUIRE(said.size() == 1);
+    CHECK_THAT(said[0], Catch::Contains("50% resolution"));
+    CHECK(budget.quality() == ViewQuality{true, 512, 1, 0, 50});
     // Nothing cheaper left that the user did not choose: nothing more is said.
     CHECK(frames(budget, 50, 0.025).empty());
     // A few slow frames among fast ones (the median) change nothing.
@@ -61,4 +70,22 @@ TEST_CASE(
     const auto said = frames(budget, 1, 0.03);
     REQUIRE(said.size() == 1);
     CHECK(budget.quality() == ViewQuality{true, 512, 1, 0});
+}
+
+TEST_CASE("frame budget: very slow frames are judged after a second of them, not a whole window") {
+    FrameBudget budget(1.0 / 60.0, 30, 1.0);
+    budget.choose({true, 1024, 4, 128, 100});
+    // 0.3 s a frame: the fourth frame ends the first second (three are not enough).
+    CHECK(frames(budget, 3, 0.3).empty());
+    auto said = frames(budget, 1, 0.3);
+    REQUIRE(said.size() == 1);
+    CHECK_THAT(said[0], Catch::Contains("300.0 ms") && Catch::Contains("anti-aliasing off"));
+    // A view the user chose at 50% is not lowered further.
+    budget.choose({false, 1024, 1, 0, 50});
+    CHECK(frames(budget, 40, 0.3).empty());
+    CHECK(budget.quality() == ViewQuality{false, 1024, 1, 0, 50});
+    // Two frames of a second each are too few to judge by (at least 3).
+    budget.choose({true, 1024, 4, 128, 100});
+    CHECK(frames(budget, 2, 1.0).empty());
+    CHECK(frames(budget, 1, 1.0).size() == 1);
 }

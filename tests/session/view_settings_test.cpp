@@ -22,6 +22,7 @@ TEST_CASE("the View settings are kept across runs, one line each") {
         CHECK(s.msaa == 4);
         CHECK(s.shadows);
         CHECK(s.reflections);
+        CHECK(s.resolution == 100);
         CHECK(warning.empty());
     }
     SECTION("what is saved is read back, the folder made") {
@@ -29,9 +30,11 @@ TEST_CASE("the View settings are kept across runs, one line each") {
         s.msaa = 2;
         s.shadows = false;
         s.reflections = false;
+        s.resolution = 75;
         std::string error;
         REQUIRE(save_view_settings(file, s, &error));
         const ViewSettings back = load_view_settings(file);
+        CHECK(back.resolution == 75);
         CHECK(back.msaa == 2);
         CHECK_FALSE(back.shadows);
         CHECK_FALSE(back.reflections);
@@ -49,5 +52,14 @@ TEST_CASE("the View settings are kept across runs, one line each") {
         CHECK(s.reflections); // the default: 2 is not 0 or 1
         CHECK(warning.find(file.string() + ":2:") != std::string::npos);
         CHECK(warning.find("reflections 0 or 1") != std::string::npos);
+    }
+    SECTION("a resolution the View menu does not offer is named and ignored") {
+        fs::create_directories(file.parent_path());
+        std::ofstream(file) << "resolution 50\nresolution 60\n";
+        std::string warning;
+        const ViewSettings s = load_view_settings(file, &warning);
+        CHECK(s.resolution == 50);
+        CHECK(warning.find(file.string() + ":2:") != std::string::npos);
+        CHECK(warning.find("resolution 100, 75 or 50") != std::string::npos);
     }
 }
