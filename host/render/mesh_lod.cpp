@@ -1,5 +1,7 @@
 #include "render/mesh_lod.hpp"
 
+#include <animator/triangle_geometry.hpp>
+
 #include <meshoptimizer.h>
 
 #include <glm/common.hpp>
@@ -14,29 +16,6 @@ namespace animator {
 namespace {
 constexpr std::size_t kFewestTriangles = 64; // below it, one level: nothing to gain
 constexpr std::size_t kCoarsest = 24;        // no level of fewer triangles is asked for
-
-// The point of triangle abc nearest p (Ericson, "Real-Time Collision Detection", 5.1.5).
-glm::dvec3 closest_on_triangle(const glm::dvec3 &p, const glm::dvec3 &a, const glm::dvec3 &b,
-                               const glm::dvec3 &c) {
-    const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-    if (d1 <= 0.0 && d2 <= 0.0) return a;
-    const glm::dvec3 bp = p - b;
-    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-    if (d3 >= 0.0 && d4 <= d3) return b;
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + ab * (d1 / (d1 - d3));
-    const glm::dvec3 cp = p - c;
-    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-    if (d6 >= 0.0 && d5 <= d6) return c;
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + ac * (d2 / (d2 - d6));
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    const double denom = 1.0 / (va + vb + vc);
-    return a + ab * (vb * denom) + ac * (vc * denom);
-}
 
 // Some triangles of a mesh in a uniform grid of cubes about two triangles wide, for the distance
 // from a point to the nearest of them. The cells' triangles are in one list (counting sort).
@@ -106,7 +85,7 @@ class TriangleGrid {
                             const glm::dvec3 &a = mesh_.positions[indices_[t]],
                                              &b = mesh_.positions[indices_[t + 1]],
                                              &c = mesh_.positions[indices_[t + 2]];
-                            best = std::min(best, glm::length(p - closest_on_triangle(p, a, b, c)));
+                            best = std::min(best, glm::length(p - ani::closest_point_on_triangle(p, a, b, c)));
                             if (best <= enough) return best;
                         }
                     }

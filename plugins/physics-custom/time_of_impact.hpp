@@ -4,6 +4,8 @@
 // stepped over, at any speed.
 #pragma once
 
+#include <animator/triangle_geometry.hpp>
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -50,9 +52,8 @@ std::optional<Contact> sphere_sphere(const Path &a, double ra, const Path &b, do
 std::optional<Contact> sphere_triangle(const Path &sphere, double r, const glm::dvec3 &v0, const glm::dvec3 &v1,
                                        const glm::dvec3 &v2, double t_max);
 
-// The point of the triangle nearest to q (Ericson, Real-Time Collision Detection 5.1.5).
-glm::dvec3 closest_point_on_triangle(const glm::dvec3 &q, const glm::dvec3 &a, const glm::dvec3 &b,
-                                     const glm::dvec3 &c);
+// The point of the triangle nearest to q (the SDK's, shared with the host's levels of detail).
+using ani::closest_point_on_triangle;
 
 // The seed's rayTriangleIntersection: the ray start + t * ray for t in [0, 1] against the
 // triangle, with the seed's inside test (dot(n, cross(edge, poi - corner)) >= 0 for all three
