@@ -47,12 +47,8 @@ for i in range(balls):
 out += ['keyframe 0'] + states + ['end', '']
 open(sys.argv[1], 'w').write('\n'.join(out))
 PY
-n=90
-while [ -e "/tmp/.X$n-lock" ]; do n=$((n + 1)); done
-Xvfb ":$n" -screen 0 1280x720x24 >/dev/null 2>&1 &
-xvfb=$!
-export DISPLAY=":$n"
-for _ in $(seq 100); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
+. tools/lib/xvfb.sh
+start_xvfb
 for run in $(seq "$runs"); do
   : > "$work/log"
   (cd "$work" && ANIMATOR_EDITOR_SIGNALS=1 ANIMATOR_FRAME_BUDGET=off exec "$bin" hundred.ani) >"$work/log" 2>&1 &

@@ -19,14 +19,8 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
-# A free display number: the first without a lock file.
-n=90
-while [ -e "/tmp/.X$n-lock" ]; do n=$((n + 1)); done
-Xvfb ":$n" -screen 0 1280x720x24 >/dev/null 2>&1 &
-xvfb=$!
-export DISPLAY=":$n"
-# Ready when it answers (a fixed second was seen too short on a busy machine).
-for _ in $(seq 100); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.1; done
+. tools/lib/xvfb.sh
+start_xvfb
 # The editor says "animator: idle ..." once it has drawn everything and sleeps.
 # Starts the editor on FILE (a name in $work; "" for the demo scene) with any extra VAR=value
 # settings, waits for its window, for it to draw and sleep, and focuses it.
