@@ -3,9 +3,6 @@
 #include "editor/state_folder.hpp"
 #include "render/framebuffer.hpp"
 
-#include <cerrno>
-#include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -54,20 +51,13 @@ ViewSettings load_view_settings(const fs::path &file, std::string *warning) {
 
 bool save_view_settings(const fs::path &file, const ViewSettings &settings, std::string *error) {
     if (file.empty()) return true;
-    std::error_code ec;
-    fs::create_directories(file.parent_path(), ec);
-    std::ofstream out(file, std::ios::trunc);
-    out << "msaa " << settings.msaa << "\nshadows " << (settings.shadows ? 1 : 0)
-        << "\nreflections " << (settings.reflections ? 1 : 0) << "\nresolution "
-        << settings.resolution << "\n";
-    out.flush();
-    if (!out) {
-        if (error)
-            *error =
-                "cannot write the View settings " + file.string() + ": " + std::strerror(errno);
-        return false;
-    }
-    return true;
+    const std::string text = "msaa " + std::to_string(settings.msaa) + "\nshadows " + (settings.shadows ? "1" : "0") +
+                             "\nreflections " + (settings.reflections ? "1" : "0") + "\nresolution " +
+                             std::to_string(settings.resolution) + "\n";
+    std::string why;
+    if (write_state_file(file, text, &why)) return true;
+    if (error) *error = "cannot write the View settings " + file.string() + ": " + why;
+    return false;
 }
 
 } // namespace animator

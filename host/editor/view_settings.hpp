@@ -34,7 +34,8 @@ std::filesystem::path view_settings_path();
 // The settings in `file`; the defaults for a missing file or a line it does not understand
 // (`warning` then says which, once).
 ViewSettings load_view_settings(const std::filesystem::path &file, std::string *warning = nullptr);
-// Writes them, making the folder; false with `error` set when it cannot.
+// Writes them atomically (write_state_file: a failure leaves the old file whole), making the
+// folder; false with `error` set when it cannot.
 bool save_view_settings(const std::filesystem::path &file, const ViewSettings &settings,
                         std::string *error = nullptr);
 

@@ -7,7 +7,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <fstream>
+#include <sstream>
 
 using namespace animator;
 
@@ -52,6 +55,22 @@ TEST_CASE("the View settings are kept across runs, one line each") {
         CHECK(s.reflections); // the default: 2 is not 0 or 1
         CHECK(warning.find(file.string() + ":2:") != std::string::npos);
         CHECK(warning.find("reflections 0 or 1") != std::string::npos);
+    }
+    SECTION("a write that fails midway leaves the file before whole, and says why") {
+        ViewSettings s;
+        s.msaa = 2;
+        REQUIRE(save_view_settings(file, s));
+        // The temporary file it writes first cannot be made (a folder has its name).
+        fs::create_directories(file.parent_path() / ("view.tmp-" + std::to_string(::getpid())));
+        s.msaa = 8;
+        std::string error;
+        CHECK_FALSE(save_view_settings(file, s, &error));
+        CHECK(error.find("cannot write the View settings " + file.string() + ": ") == 0);
+        CHECK(load_view_settings(file).msaa == 2);
+        std::ifstream in(file);
+        std::stringstream text;
+        text << in.rdbuf();
+        CHECK(text.str() == "msaa 2\nshadows 1\nreflections 1\nresolution 100\n");
     }
     SECTION("a resolution the View menu does not offer is named and ignored") {
         fs::create_directories(file.parent_path());
