@@ -34,10 +34,13 @@ namespace {
 class KinematicCurve : public Curve {
   public:
     explicit KinematicCurve(const ani_channel &channel) : keys_(channel.keys) {
+        for (int c = 0; c < 3; ++c) initial_rate_[c] = channel.initial_rate[c];
+        // One key: no segment, nothing to allocate (a gas of 100,000 balls keyed once each asks
+        // for every ball's start through here).
+        if (channel.key_count < 2) return;
         std::vector<double> times(channel.key_count);
         for (uint32_t k = 0; k < channel.key_count; ++k) times[k] = channel.keys[k].time;
         for (int c = 0; c < 3; ++c) {
-            initial_rate_[c] = channel.initial_rate[c];
             std::vector<double> positions(channel.key_count);
             for (uint32_t k = 0; k < channel.key_count; ++k) positions[k] = channel.keys[k].value[c];
             segments_[c] = kinematic_segments(times, positions, channel.initial_rate[c]);
