@@ -1,5 +1,7 @@
 #include "editor/frame_budget.hpp"
 
+#include "editor/view_settings.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <numeric>
@@ -48,14 +50,15 @@ std::optional<std::string> FrameBudget::frame(double seconds) {
         return std::string(took) + "shadow maps of " + std::to_string(quality_.shadow_map_size) +
                " texels (View > Shadows off draws faster)";
     }
-    // Then fewer pixels: on llvmpipe every pixel of the sky, the floor and the models is shaded
-    // on the processor, so a view drawn at 75% along each side costs about half, at 50% a
-    // quarter, of its fill (docs/performance.md).
-    if (quality_.resolution > kLowestResolution) {
-        quality_.resolution = quality_.resolution > 75 ? 75 : kLowestResolution;
-        return std::string(took) + "the view drawn at " + std::to_string(quality_.resolution) +
-               "% resolution (View > Resolution)";
-    }
+    // Then fewer pixels, down the View menu's resolutions: on llvmpipe every pixel of the sky,
+    // the floor and the models is shaded on the processor, so a view drawn at 75% along each side
+    // costs about half, at 50% a quarter, of its fill (docs/performance.md).
+    for (const int lower : kResolutions)
+        if (lower < quality_.resolution) {
+            quality_.resolution = lower;
+            return std::string(took) + "the view drawn at " + std::to_string(lower) +
+                   "% resolution (View > Resolution)";
+        }
     return std::nullopt; // nothing cheaper left to do on its own
 }
 

@@ -26,9 +26,9 @@ struct ViewQuality {
     }
 };
 
-// The smallest shadow map the budget lowers to, and the lowest resolution (percent).
+// The smallest shadow map the budget lowers to. (Resolutions go down the View menu's,
+// kResolutions, to its lowest.)
 constexpr int kSmallestShadowMap = 512;
-constexpr int kLowestResolution = 50;
 
 class FrameBudget {
   public:

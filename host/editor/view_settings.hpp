@@ -24,7 +24,8 @@ struct ViewSettings {
     bool operator!=(const ViewSettings &o) const { return !(*this == o); }
 };
 
-// The resolutions the View menu offers, in percent of the view's pixels along each axis.
+// The resolutions the View menu offers, in percent of the view's pixels along each axis, from
+// the highest down (the frame budget lowers a view through them in this order).
 constexpr int kResolutions[] = {100, 75, 50};
 bool valid_resolution(int percent);
 
