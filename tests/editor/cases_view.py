@@ -43,6 +43,15 @@ end
 '''
 
 
+def choose_in_view_menu(e, *items):
+    """Opens the View menu, clicks `items` in turn (an item, or a submenu then its item), and
+    moves the pointer off the view."""
+    e.click(*VIEW_MENU)
+    for item in items:
+        e.click(*item)
+    e.mouse_away()
+
+
 def case_view_shadows(c):
     """View > Shadows turns the 3D view's shadows off (the floor behind the ball gets lighter),
     and the choice is kept in $XDG_STATE_HOME/animator/view: the next start draws without them."""
@@ -50,9 +59,7 @@ def case_view_shadows(c):
     e = c.start('ball.ani')
     e.mouse_away()
     shadowed = e.screenshot('shadows-on')
-    e.click(*VIEW_MENU)
-    e.click(*VIEW_SHADOWS_ITEM)
-    e.mouse_away()
+    choose_in_view_menu(e, VIEW_SHADOWS_ITEM)
     plain = e.screenshot('shadows-off')
     n = changed_pixels(shadowed, plain, (360, 40, 1270, 550))[0]
     check(n > 300, 'View > Shadows changed %d pixels of the view' % n)
@@ -81,9 +88,7 @@ def case_view_reflections(c):
     e.wait_baked()
     e.mouse_away()
     on = e.screenshot('reflections-on')
-    e.click(*VIEW_MENU)
-    e.click(*VIEW_MENU_REFLECTIONS)
-    e.mouse_away()
+    choose_in_view_menu(e, VIEW_MENU_REFLECTIONS)
     off = e.screenshot('reflections-off')
     in_mirror = changed_pixels(on, off, MIRROR_ORB)[0]
     in_sky = changed_pixels(on, off, SKY_BOX)[0]
@@ -132,10 +137,7 @@ def case_view_resolution(c):
     e = c.start('ball.ani')
     e.mouse_away()
     full = e.screenshot('resolution-100')
-    e.click(*VIEW_MENU)
-    e.click(*VIEW_MENU_RESOLUTION)
-    e.click(*RESOLUTION_50)
-    e.mouse_away()
+    choose_in_view_menu(e, VIEW_MENU_RESOLUTION, RESOLUTION_50)
     half = e.screenshot('resolution-50')
     box = (360, 40, 1270, 550)
     changed = changed_pixels(full, half, box)[0]
