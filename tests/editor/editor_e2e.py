@@ -466,7 +466,10 @@ class Editor:
         if ctrl:
             self.xdo('keydown', 'ctrl')
             self.sent += 1
-            time.sleep(0.1)
+            # Held before the click, as the editor sees it: under load both could reach ImGui in
+            # one frame, the click first (a CTRL+click on the Time slider became a plain click,
+            # setting 15 s, its middle, instead of opening its text field).
+            self.settle()
         self.xdo('click', button)
         self.sent += 2
         if ctrl:
