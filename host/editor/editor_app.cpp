@@ -778,7 +778,8 @@ int run_editor(const EditorOptions &options) {
                 const ViewSettings &chosen = panels.view_settings();
                 const ViewQuality chosen_quality{chosen.shadows, RenderOptions{}.shadow_map_size, chosen.msaa,
                                                  chosen.reflections ? RenderOptions{}.reflection_size : 0,
-                                                 chosen.resolution};
+                                                 chosen.resolution, RenderOptions{}.detail_pixels,
+                                                 RenderOptions{}.mirror_levels};
                 if (budgeted != chosen) {
                     view_buffer_refused = false; // (tried again with the new settings)
                     frame_budget.choose(chosen_quality);
@@ -817,6 +818,7 @@ int run_editor(const EditorOptions &options) {
                 const RenderTarget scene_target = view_buffer ? view_buffer->target() : target;
                 renderer.set_shadows(quality.shadows, quality.shadow_map_size);
                 renderer.set_reflections(quality.reflection_size);
+                renderer.set_detail(quality.detail_pixels, quality.mirror_levels);
                 renderer.draw(session.shown_frame(), scene_target, session.selection(),
                               session.overlapping_models());
                 renderer.draw_paths(path_lines.get(session), scene_target);

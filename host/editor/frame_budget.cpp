@@ -44,6 +44,15 @@ std::optional<std::string> FrameBudget::frame(double seconds) {
         return std::string(took) +
                "reflections of other models off (View > Reflections of other models)";
     }
+    // Then coarser levels of detail, mirrors and glass included: on llvmpipe a small triangle
+    // costs about as much as a hundred pixels, and a moving ball's outline a pixel or two
+    // coarser is hard to see (docs/performance.md).
+    if (quality_.detail_pixels > 0.0 &&
+        (quality_.detail_pixels < kCoarseDetailPixels || !quality_.mirror_levels)) {
+        quality_.detail_pixels = std::max(quality_.detail_pixels, kCoarseDetailPixels);
+        quality_.mirror_levels = true;
+        return std::string(took) + "coarser levels of detail (mirrors and glass too)";
+    }
     // Shadows last (they are what stops a ball from floating), and only made coarser.
     if (quality_.shadows && quality_.shadow_map_size > kSmallestShadowMap) {
         quality_.shadow_map_size = std::max(kSmallestShadowMap, quality_.shadow_map_size / 2);

@@ -1,8 +1,9 @@
 // Keeping the 3D view within its frame budget (60 fps): while frames come one after another
 // (playing, dragging), when the median of the last frames takes longer than the budget, the view
 // is drawn more cheaply, one step at a time with one line each: no anti-aliasing, then no
-// reflections of other models, then shadow maps of half the texels, then fewer pixels (75%, then
-// 50% of the view's along each side, stretched onto it). The View menu's
+// reflections of other models, then coarser levels of detail (mirrors and glass too), then shadow
+// maps of half the texels, then fewer pixels (75%, then 50% of the view's along each side,
+// stretched onto it). The View menu's
 // settings stay as chosen; choosing them again starts over (docs/performance.md, "Shadows and
 // anti-aliasing").
 #pragma once
@@ -20,11 +21,20 @@ struct ViewQuality {
     int msaa = 4;
     int reflection_size = 128; // the models' cube maps of the models around them (0: none)
     int resolution = 100;      // percent of the view's pixels drawn along each side
+    // Levels of detail: pixels a surface may stray (RenderOptions::detail_pixels), and whether
+    // mirrors and glass take levels too (RenderOptions::mirror_levels).
+    double detail_pixels = 0.5;
+    bool mirror_levels = false;
     bool operator==(const ViewQuality &o) const {
         return shadows == o.shadows && shadow_map_size == o.shadow_map_size && msaa == o.msaa &&
-               reflection_size == o.reflection_size && resolution == o.resolution;
+               reflection_size == o.reflection_size && resolution == o.resolution &&
+               detail_pixels == o.detail_pixels && mirror_levels == o.mirror_levels;
     }
 };
+
+// The levels of detail the budget takes: surfaces within 2 pixels of the mesh's (a ball 26
+// pixels across then draws about a third of the triangles; docs/performance.md).
+constexpr double kCoarseDetailPixels = 2.0;
 
 // The smallest shadow map the budget lowers to. (Resolutions go down the View menu's,
 // kResolutions, to its lowest.)

@@ -161,14 +161,15 @@ void Renderer::prepare_frame(const Frame &frame, int width, int height) {
     // map drawn with another surface than the one it falls on would shade it (speckles where a
     // coarser level lies inside a finer one's shadow). Mirrors, glass and cel shading keep their
     // whole meshes: what they show turns with the surface's normals, which a coarser level
-    // bends by more than its outline moves (a reflection's features shift by pixels).
+    // bends by more than its outline moves (a reflection's features shift by pixels); mirrors
+    // and glass take levels too when asked (RenderOptions::mirror_levels).
     const double pixel_per_distance = height > 0 ? 2.0 / (projection[1][1] * height) : 0.0;
     const std::size_t count = std::min(models_.size(), world_.size());
     levels_.assign(count, 0);
     for (std::size_t m = 0; m < count; ++m) {
         const Model &model = models_[m];
-        if (gpu_meshes_[m] && !settings_.cel_shading && model.reflectivity <= 0.0 &&
-            model.transparency <= 0.0)
+        const bool mirror = model.reflectivity > 0.0 || model.transparency > 0.0;
+        if (gpu_meshes_[m] && !settings_.cel_shading && (!mirror || options_.mirror_levels))
             levels_[m] = level_of(static_cast<int>(m), frame.camera.position, pixel_per_distance);
     }
 }

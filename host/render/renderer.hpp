@@ -76,6 +76,10 @@ struct RenderOptions {
     // whose surface strays at most this many pixels (or shadow-map texels) from the mesh's where
     // it is seen; 0 draws every mesh whole.
     double detail_pixels = 0.5;
+    // Mirrors and glass at levels of detail too (by default they keep their whole meshes: what
+    // they show turns with their normals, which a coarser level bends by more than its outline
+    // moves). The editor's frame budget sets it while playing (editor/frame_budget.hpp).
+    bool mirror_levels = false;
 };
 
 // What the last draw did, counted: the observable seam for tests (and a debug overlay) that a
@@ -140,6 +144,10 @@ class Renderer {
     // frame takes too long), from the next draw on.
     // The side of the models' cube maps of the models around them (0: the skybox only).
     void set_reflections(int size) { options_.reflection_size = size; }
+    void set_detail(double pixels, bool mirrors) {
+        options_.detail_pixels = pixels;
+        options_.mirror_levels = mirrors;
+    }
     void set_shadows(bool on, int map_size) {
         options_.shadows = on;
         options_.shadow_map_size = map_size;

@@ -166,4 +166,29 @@ TEST_CASE("a model near the camera is drawn whole, and a far one as coarse in it
     doc.set_model(1, mirror);
     options.shadows = false;
     CHECK(render_document(doc, 320, 240, {}, options).stats.triangles_saved == 0);
+    // Unless asked (the editor's frame budget while playing): then at the plain ball's level.
+    options.mirror_levels = true;
+    CHECK(render_document(doc, 320, 240, {}, options).stats.triangles_saved ==
+          far.stats.triangles_saved);
+}
+
+TEST_CASE("coarser levels of detail (the frame budget's 2 pixels) draw fewer triangles and look "
+          "alike") {
+    const Document doc = far_balls();
+    RenderOptions fine;
+    fine.shadows = false;
+    RenderOptions coarse = fine;
+    coarse.detail_pixels = 2.0;
+    const Rendered a = render_document(doc, 640, 360, {}, fine);
+    const Rendered b = render_document(doc, 640, 360, {}, coarse);
+    // Work counts: each ball's level is the coarsest within 2 pixels (mesh_lod.hpp), so fewer
+    // triangles in all, and every level coarser or the same.
+    CHECK(b.stats.triangles < a.stats.triangles);
+    CHECK(b.stats.triangles + b.stats.triangles_saved == a.stats.triangles + a.stats.triangles_saved);
+    // Outlines move by up to 2 pixels: the pictures differ at some edge pixels, and little in
+    // the mean (a frame drawn while playing, never a still frame or `animator render`'s).
+    const ImageDifference d = compare_images(b.image, a.image, 48.0);
+    INFO("mean " << d.mean << ", max " << d.max << ", over 48: " << d.over);
+    CHECK(d.mean < 1.0);
+    CHECK(d.over < 0.005);
 }
