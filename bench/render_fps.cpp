@@ -4,7 +4,7 @@
 // off, compared within one run (docs/performance.md, "Shadows and anti-aliasing"). Prints one line
 // per document and setting: the median over R runs of N frames each of the frames drawn per
 // second, and the triangles drawn in the last frame. --only keeps the settings whose names
-// contain TEXT ("plain", "shadows").
+// contain TEXT ("plain", "shadows", "coarse").
 #include "bench.hpp"
 
 #include "cli/cli_support.hpp"
@@ -26,6 +26,7 @@ struct Setting {
     int samples;
     int reflections; // the side of the models' cube maps of the others (0: the skybox only)
     double detail = RenderOptions{}.detail_pixels; // levels of detail (0: whole meshes)
+    bool mirror_levels = false; // mirrors and glass at levels of detail too
 };
 
 const Setting kSettings[] = {
@@ -36,6 +37,9 @@ const Setting kSettings[] = {
     {"reflections 128", false, 1, 128},
     {"reflections 64", false, 1, 64},
     {"all (the default)", true, 4, 128},
+    // The editor's frame budget's levels of detail while playing (editor/frame_budget.hpp).
+    {"plain, coarse (detail 2, mirrors too)", false, 1, 0, 2.0, true},
+    {"shadows, coarse (detail 2, mirrors too)", true, 1, 0, 2.0, true},
 };
 
 } // namespace
@@ -60,7 +64,7 @@ int main(int argc, char **argv) {
     Environment env;
     OffscreenContext context;
     std::vector<std::uint8_t> pixels;
-    std::printf("%-28s %-32s %8s %8s %10s\n", "document", "setting", "fps", "ms", "triangles");
+    std::printf("%-28s %-40s %8s %8s %10s\n", "document", "setting", "fps", "ms", "triangles");
     for (const std::string &file : files) {
         auto opened = cli::open_or_report(env.plugins, file);
         if (!opened) return 1;
@@ -75,6 +79,7 @@ int main(int argc, char **argv) {
             options.shadows = s.shadows;
             options.reflection_size = s.reflections;
             options.detail_pixels = s.detail;
+            options.mirror_levels = s.mirror_levels;
             Renderer renderer(env.plugins, env.assets, options);
             renderer.set_document(doc, meshes);
             OffscreenFramebuffer framebuffer(width, height, supported_samples(s.samples));
@@ -88,7 +93,7 @@ int main(int argc, char **argv) {
                 rates.push_back(frames / bench::seconds_since(start));
             }
             const double fps = bench::median(rates);
-            std::printf("%-28s %-32s %8.1f %8.1f %10zu\n", std::filesystem::path(file).filename().c_str(),
+            std::printf("%-28s %-40s %8.1f %8.1f %10zu\n", std::filesystem::path(file).filename().c_str(),
                         s.name, fps, 1000.0 / fps, renderer.stats().triangles);
             std::fflush(stdout);
         }
