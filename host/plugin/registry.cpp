@@ -237,6 +237,7 @@ void PluginRegistry::open(Library &library) {
         info->description = d->description;
         info->library = library.path;
         info->descriptor = d;
+        info->abi = entry->abi;
         plugins_.push_back(std::move(info));
     }
 }

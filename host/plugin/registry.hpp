@@ -29,6 +29,7 @@ struct PluginInfo {
     std::string description;
     std::filesystem::path library;
     const ani_plugin_descriptor *descriptor = nullptr; // lives in the library
+    ani_version abi{}; // the plugin ABI its library was built for (a minor version this host's or older)
 };
 
 struct LibraryRefusal {

@@ -47,7 +47,9 @@ std::string feature_names(uint32_t features) {
     std::string out;
     for (uint32_t bit = 0; bit < 6; ++bit)
         if (features & (1u << bit)) out += (out.empty() ? "" : "|") + std::string(names[bit]);
-    for (uint32_t bit = 6; bit < 32; ++bit)
+    if (const uint32_t maps = (features & ANI_SHADE_SHADOW_MAPS_MASK) >> ANI_SHADE_SHADOW_MAPS_SHIFT)
+        out += (out.empty() ? "" : "|") + std::to_string(maps) + (maps == 1 ? " shadow map" : " shadow maps");
+    for (uint32_t bit = ANI_SHADE_SHADOW_MAPS_SHIFT + 3; bit < 32; ++bit)
         if (features & (1u << bit)) out += (out.empty() ? "bit " : "|bit ") + std::to_string(bit);
     return out.empty() ? "none" : out;
 }
@@ -60,6 +62,7 @@ ShadingPrograms::ShadingPrograms(std::unique_ptr<PluginInstance> plugin, LogSink
         param_ids_.emplace_back(d.params[i].id);
         param_values_.push_back(plugin_->get_param(d.params[i].id));
     }
+    takes_shadow_maps_ = plugin_->info().abi.minor >= 10;
 }
 
 ShadingPrograms::~ShadingPrograms() = default;
@@ -158,6 +161,7 @@ const LinkedProgram &ShadingPrograms::built_in(bool skybox_pass) {
 const LinkedProgram &ShadingPrograms::get(uint32_t features) {
     if (features >= kFeatureSets)
         throw RenderError("no shading program for unknown features " + feature_names(features));
+    if (!takes_shadow_maps_) features &= ~ANI_SHADE_SHADOW_MAPS_MASK;
     if (resolved_[features]) return *resolved_[features];
     const bool skybox_pass = (features & ANI_SHADE_SKYBOX_PASS) != 0;
     std::unique_ptr<LinkedProgram> own = plugin_ ? from_plugin(features) : nullptr;

@@ -75,14 +75,18 @@ class ShadingPrograms {
     LogSink log_;
     std::vector<std::string> param_ids_;
     std::vector<std::array<double, 4>> param_values_;
-    static constexpr size_t kFeatureSets = 64; // every combination of ani_shading_feature bits
+    // A plugin built for ABI 1.10 or newer is asked for the shadow maps' bits; an older one's
+    // programs read "shadow_lights" (shading.h), so the bits are left out of what it is asked.
+    bool takes_shadow_maps_ = false;
+    // Every combination of ani_shading_feature bits and shadow-map counts (0..7 in 3 bits).
+    static constexpr size_t kFeatureSets = std::size_t{1} << (ANI_SHADE_SHADOW_MAPS_SHIFT + 3);
     std::array<std::unique_ptr<LinkedProgram>, kFeatureSets> from_plugin_;
     std::array<const LinkedProgram *, kFeatureSets> resolved_{};
     std::unique_ptr<LinkedProgram> built_in_model_, built_in_skybox_;
     std::size_t fallbacks_ = 0;
 };
 
-// "texture|cel" for a feature set, "none" for 0: for messages and tests.
+// "texture|cel|2 shadow maps" for a feature set, "none" for 0: for messages and tests.
 std::string feature_names(uint32_t features);
 
 } // namespace animator

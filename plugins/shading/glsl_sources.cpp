@@ -67,18 +67,27 @@ uniform vec4 cel_outline_colour;
 #ifdef SELECTED
 uniform vec4 selected_tint;
 #endif
-// Shadow maps of the first shadow_lights lights (0 when shadows are off): world to each map, a
-// texel's width at distance 1 from its light, and the map (a depth comparison, lit outside it).
-uniform int shadow_lights;
-uniform mat4 shadow_matrices[MAX_SHADOW_LIGHTS];
-uniform float shadow_texels[MAX_SHADOW_LIGHTS];
+// Shadow maps of the first SHADOW_MAPS lights (the feature bits say how many, shading.h; none
+// with shadows off): world to each map, a texel's width at distance 1 from its light, and the
+// map (a depth comparison, lit outside it).
+#if SHADOW_MAPS > 0
+uniform mat4 shadow_matrices[SHADOW_MAPS];
+uniform float shadow_texels[SHADOW_MAPS];
 uniform sampler2DShadow shadow_map0;
+#endif
+#if SHADOW_MAPS > 1
 uniform sampler2DShadow shadow_map1;
+#endif
+#if SHADOW_MAPS > 2
 uniform sampler2DShadow shadow_map2;
+#endif
+#if SHADOW_MAPS > 3
 uniform sampler2DShadow shadow_map3;
+#endif
 
 out vec4 colour;
 
+#if SHADOW_MAPS > 0
 // How much of the light reaches p, 0..1: percentage-closer filtering (Reeves, Salesin and Cook
 // 1987) over 2x2 bilinear comparisons half a texel either side, which weigh the 3x3 texels
 // around p as a tent (1 2 1): a shadow's edge is soft over about three texels, at four lookups.
@@ -95,16 +104,30 @@ float lit_fraction(sampler2DShadow map, mat4 to_map, vec3 p) {
     return lit * 0.25;
 }
 
-// Light i's share at p (normal n towards the light, distance to it d): the point is pushed along
-// its normal by 1.5 texels of the map there (normal offset), so a lit surface never shadows
-// itself while its shadow stays attached (the host's depth pass adds a slope-scaled bias).
-float light_share(int i, vec3 p, vec3 n, float d) {
-    if (i >= shadow_lights) return 1.0;
-    vec3 q = p + n * (1.5 * shadow_texels[i] * d);
-    if (i == 0) return lit_fraction(shadow_map0, shadow_matrices[0], q);
-    if (i == 1) return lit_fraction(shadow_map1, shadow_matrices[1], q);
-    if (i == 2) return lit_fraction(shadow_map2, shadow_matrices[2], q);
-    return lit_fraction(shadow_map3, shadow_matrices[3], q);
+// Light i's share here, from its map (normal n): the point is pushed along its normal by 1.5
+// texels of the map there (normal offset), so a lit surface never shadows itself while its
+// shadow stays attached (the host's depth pass adds a slope-scaled bias).
+float light_share(sampler2DShadow map, int i, vec3 n) {
+    float d = length(light_positions[i] - world_position);
+    return lit_fraction(map, shadow_matrices[i], world_position + n * (1.5 * shadow_texels[i] * d));
+}
+#endif
+
+// Adds light i's diffuse and specular light here to c, `share` of it reaching this point.
+void add_light(inout vec3 c, int i, vec3 n, vec3 to_eye, vec3 base, float share) {
+    vec3 d = light_positions[i] - world_position;
+    float r = length(d);
+    vec3 f = light_falloffs[i];
+    vec3 light = light_colours[i] / (f.x + f.y * r + f.z * r * r);
+    vec3 to_light = normalize(d);
+    float diffuse = max(dot(n, to_light), 0.0);
+    if (diffuse <= 0.0) return; // facing away: no light
+    light *= share;
+    c += light * base * diffuse;
+    if (shininess < SHININESS_MAX) {
+        float facing = max(dot(reflect(-to_light, n), to_eye), 0.0);
+        c += light * ks * pow(max(facing, 1e-8), shininess);
+    }
 }
 
 #ifdef CEL
@@ -126,21 +149,23 @@ void main() {
 #endif
 
     vec3 c = ambient * base;
-    for (int i = 0; i < MAX_LIGHTS && i < light_count; ++i) {
-        vec3 d = light_positions[i] - world_position;
-        float r = length(d);
-        vec3 f = light_falloffs[i];
-        vec3 light = light_colours[i] / (f.x + f.y * r + f.z * r * r);
-        vec3 to_light = normalize(d);
-        float diffuse = max(dot(n, to_light), 0.0);
-        if (diffuse <= 0.0) continue; // facing away: no light, no shadow to look up
-        light *= light_share(i, world_position, n, r);
-        c += light * base * diffuse;
-        if (shininess < SHININESS_MAX) {
-            float facing = max(dot(reflect(-to_light, n), to_eye), 0.0);
-            c += light * ks * pow(max(facing, 1e-8), shininess);
-        }
-    }
+    // The lights with a shadow map first, each written out with its own map: a software
+    // rasterizer runs every branch, so a lookup chosen by the light's index would be paid for
+    // every map at every light. Then the others.
+#if SHADOW_MAPS > 0
+    add_light(c, 0, n, to_eye, base, light_share(shadow_map0, 0, n));
+#endif
+#if SHADOW_MAPS > 1
+    add_light(c, 1, n, to_eye, base, light_share(shadow_map1, 1, n));
+#endif
+#if SHADOW_MAPS > 2
+    add_light(c, 2, n, to_eye, base, light_share(shadow_map2, 2, n));
+#endif
+#if SHADOW_MAPS > 3
+    add_light(c, 3, n, to_eye, base, light_share(shadow_map3, 3, n));
+#endif
+    for (int i = SHADOW_MAPS; i < MAX_LIGHTS && i < light_count; ++i)
+        add_light(c, i, n, to_eye, base, 1.0);
 
 #ifdef REFLECTION
     c = mix(c, texture(skybox, reflect(-to_eye, n)).rgb, reflectivity);

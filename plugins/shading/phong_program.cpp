@@ -19,8 +19,8 @@ std::string header(uint32_t features) {
     h += max_line;
     (void)std::snprintf(max_line, sizeof max_line, "#define MAX_LIGHTS %d\n", ANI_MAX_LIGHTS);
     h += max_line;
-    (void)std::snprintf(max_line, sizeof max_line, "#define MAX_SHADOW_LIGHTS %d\n",
-                        ANI_MAX_SHADOW_LIGHTS);
+    (void)std::snprintf(max_line, sizeof max_line, "#define SHADOW_MAPS %d\n",
+                        shadow_maps(features));
     h += max_line;
     if (features & ANI_SHADE_TEXTURE) h += "#define TEXTURE 1\n";
     if (features & ANI_SHADE_REFLECTION) h += "#define REFLECTION 1\n";
@@ -64,6 +64,7 @@ static_assert(sizeof kShadowUniforms / sizeof kShadowUniforms[0] == 3 * ANI_MAX_
 
 std::string check_features(uint32_t features) {
     if (features & ~kKnownFeatures) return "unknown shading feature bits";
+    if (shadow_maps(features) > ANI_MAX_SHADOW_LIGHTS) return "more shadow maps than it can read";
     if ((features & ANI_SHADE_SKYBOX_PASS) && features != ANI_SHADE_SKYBOX_PASS)
         return "the skybox pass takes no other feature";
     return "";
@@ -88,8 +89,8 @@ ProgramSource build_program(uint32_t features) {
     add(u, "camera_position", ANI_UNIFORM_VEC3, "camera_position");
     add(u, "light_count", ANI_UNIFORM_INT, "light_count");
     u.insert(u.end(), std::begin(kLightUniforms), std::end(kLightUniforms));
-    add(u, "shadow_lights", ANI_UNIFORM_INT, "shadow_lights");
-    u.insert(u.end(), std::begin(kShadowUniforms), std::end(kShadowUniforms));
+    // The shadow maps it reads, their number fixed by the feature bits (shading.h, ABI 1.10).
+    u.insert(u.end(), std::begin(kShadowUniforms), std::begin(kShadowUniforms) + 3 * shadow_maps(features));
     add(u, "ambient", ANI_UNIFORM_VEC3, "ambient");
     add(u, "kd", ANI_UNIFORM_VEC3, "kd");
     add(u, "ks", ANI_UNIFORM_VEC3, "ks");

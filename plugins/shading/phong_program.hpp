@@ -13,7 +13,12 @@ namespace shading {
 // Every feature bit the plugin knows.
 constexpr uint32_t kKnownFeatures = ANI_SHADE_TEXTURE | ANI_SHADE_REFLECTION |
                                     ANI_SHADE_REFRACTION | ANI_SHADE_CEL | ANI_SHADE_SELECTED |
-                                    ANI_SHADE_SKYBOX_PASS;
+                                    ANI_SHADE_SKYBOX_PASS | ANI_SHADE_SHADOW_MAPS_MASK;
+
+// How many shadow maps a feature set's program reads (ABI 1.10).
+inline int shadow_maps(uint32_t features) {
+    return static_cast<int>((features & ANI_SHADE_SHADOW_MAPS_MASK) >> ANI_SHADE_SHADOW_MAPS_SHIFT);
+}
 
 struct ProgramSource {
     std::string vertex;
@@ -21,8 +26,8 @@ struct ProgramSource {
     std::vector<ani_uniform_desc> uniforms; // names and semantics are string literals
 };
 
-// "" when `features` is a set this model can draw, else why not (an unknown bit, or the skybox
-// pass combined with a model feature).
+// "" when `features` is a set this model can draw, else why not (an unknown bit, more shadow maps
+// than ANI_MAX_SHADOW_LIGHTS, or the skybox pass combined with a model feature).
 std::string check_features(uint32_t features);
 
 // The program for a valid feature set (check_features first).

@@ -152,8 +152,11 @@ TEST_CASE("eight lights are all used, a light of colour 0 adds nothing") {
 }
 
 TEST_CASE(
-    "a shading plugin written for one light (light_position, light_colour) is lit by light 0") {
-    // tests/render/one_light_shading.c: ambient * kd + light_colour * kd * cos, nothing else.
+    "a shading plugin written for one light (light_position, light_colour) is lit by light 0, "
+    "and one built for ABI 1.9 is not asked for shadow maps") {
+    // tests/render/one_light_shading.c: ambient * kd + light_colour * kd * cos, nothing else; it
+    // refuses the shadow-map bits of ABI 1.10, so a fallback would show in the log (shadows are on,
+    // two maps).
     gl_context();
     Environment env(AssetPaths::default_roots(), std::vector<std::filesystem::path>{
                                                      test::bin_dir(), ANIMATOR_RENDER_PLUGIN_DIR});
@@ -170,6 +173,7 @@ TEST_CASE(
     renderer.set_document(doc, meshes_of(doc));
     OffscreenFramebuffer framebuffer(kSize, kSize);
     renderer.draw(first_frame(doc), framebuffer.target());
+    CHECK(renderer.stats().shadow_maps == 2);
     CHECK(log.empty());
     CHECK(renderer.programs().fallbacks() == 0);
     Image image;

@@ -1,6 +1,8 @@
 /* A shading plugin written before the scene's lights: it reads only "light_position" and
  * "light_colour" (shading.h), so the tests can check those still mean light 0 of a document with
- * several lights. Diffuse light only, without falloff. */
+ * several lights. Diffuse light only, without falloff. Built for ABI 1.9, it refuses feature bits
+ * it does not know, as shading.phong of 1.9 did: a host must not ask it for the shadow-map bits
+ * of 1.10. */
 #include "animator/shading.h"
 
 static const char *const vertex_source = "#version 330 core\n"
@@ -67,7 +69,9 @@ static ani_status_code one_light_set_param(void *instance, const char *id,
 }
 static ani_status_code one_light_get_program(void *instance, uint32_t features,
                                              ani_shader_program *program, ani_status *status) {
-    (void)instance, (void)features;
+    (void)instance;
+    if (features & ~(uint32_t)0x3f) /* ABI 1.9's bits: texture .. skybox pass */
+        return ani_status_set(status, ANI_ERR_INVALID_ARGUMENT, "unknown shading feature bits");
     program->vertex_source = vertex_source;
     program->fragment_source = fragment_source;
     program->uniforms = uniforms;
@@ -108,7 +112,7 @@ static const ani_plugin_descriptor *one_light_get(uint32_t index) {
 
 ANI_DECLARE_ENTRY;
 const ani_plugin_entry animator_plugin_entry = {
-    sizeof(ani_plugin_entry), {ANI_ABI_MAJOR, ANI_ABI_MINOR, 0},
+    sizeof(ani_plugin_entry), {ANI_ABI_MAJOR, 9, 0},
     one_light_init,           one_light_deinit,
     one_light_count,          one_light_get,
 };

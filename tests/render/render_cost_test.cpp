@@ -20,6 +20,11 @@ Document plain_scene() {
     return doc;
 }
 
+// The feature sets asked for, but for the shadow maps' count (shadows are on by default).
+uint32_t effects_used(const Rendered &r) {
+    return r.stats.features_used & ~uint32_t(ANI_SHADE_SHADOW_MAPS_MASK);
+}
+
 void set_model(Document &doc, const std::string &name, const std::function<void(Model &)> &edit) {
     const int index = doc.find_model(name);
     Model m = doc.models()[static_cast<size_t>(index)];
@@ -30,7 +35,9 @@ void set_model(Document &doc, const std::string &name, const std::function<void(
 } // namespace
 
 TEST_CASE("a scene without effects binds no skybox and no texture and asks for no feature") {
-    const Rendered r = render_document(plain_scene());
+    RenderOptions no_shadows;
+    no_shadows.shadows = false;
+    const Rendered r = render_document(plain_scene(), 160, 120, {}, no_shadows);
     CHECK(r.log.empty());
     CHECK(r.stats.models_drawn == 3);
     CHECK(r.stats.features_used == 0u);
@@ -38,6 +45,12 @@ TEST_CASE("a scene without effects binds no skybox and no texture and asks for n
     CHECK(r.stats.cube_map_binds == 0);
     CHECK_FALSE(r.stats.skybox_drawn);
     CHECK(r.stats.program_binds == 1); // one program for all three
+    // Shadows on (the default): the camera's light has a map, and every program reads that one
+    // map, no more (shading.h, ABI 1.10).
+    const Rendered shadowed = render_document(plain_scene());
+    CHECK(shadowed.stats.shadow_maps == 1);
+    CHECK(shadowed.stats.features_used == uint32_t(ANI_SHADE_SHADOW_MAPS(1)));
+    CHECK(shadowed.stats.program_binds == 1);
 }
 
 TEST_CASE("each effect binds what it needs, once") {
@@ -46,7 +59,7 @@ TEST_CASE("each effect binds what it needs, once") {
         set_model(doc, "b", [](Model &m) { m.texture = "brick"; });
         set_model(doc, "floor", [](Model &m) { m.texture = "brick"; });
         const Rendered r = render_document(doc);
-        CHECK(r.stats.features_used == uint32_t(ANI_SHADE_TEXTURE));
+        CHECK(effects_used(r) == uint32_t(ANI_SHADE_TEXTURE));
         CHECK(r.stats.texture_binds == 1); // the same texture for both
         CHECK(r.stats.cube_map_binds == 0);
         // Opaque models are drawn grouped by program: the floor and the cube (textured) one
@@ -63,7 +76,7 @@ TEST_CASE("each effect binds what it needs, once") {
         skybox_only.reflection_size = 0;
         const Rendered r = render_document(doc, 160, 120, {}, skybox_only);
         CHECK(r.stats.skybox_drawn);
-        CHECK(r.stats.features_used == uint32_t(ANI_SHADE_SKYBOX_PASS | ANI_SHADE_REFLECTION));
+        CHECK(effects_used(r) == uint32_t(ANI_SHADE_SKYBOX_PASS | ANI_SHADE_REFLECTION));
         CHECK(r.stats.cube_map_binds == 1);
         CHECK(r.stats.texture_binds == 0);
         CHECK(r.stats.reflection_maps == 0);
@@ -85,7 +98,7 @@ TEST_CASE("each effect binds what it needs, once") {
         s.cel_shading = true;
         doc.set_settings(s);
         const Rendered r = render_document(doc, 160, 120, {2});
-        CHECK(r.stats.features_used == uint32_t(ANI_SHADE_CEL | ANI_SHADE_SELECTED));
+        CHECK(effects_used(r) == uint32_t(ANI_SHADE_CEL | ANI_SHADE_SELECTED));
         CHECK(r.stats.texture_binds + r.stats.cube_map_binds == 0);
     }
 }
@@ -131,7 +144,7 @@ TEST_CASE("a skybox or texture that cannot be loaded is reported and left out") 
     CHECK_THAT(r.log[0], Catch::Contains("skybox 'no_such_sky' cannot be loaded"));
     CHECK_THAT(r.log[1], Catch::Contains("texture 'no_such_texture' cannot be loaded"));
     CHECK_FALSE(r.stats.skybox_drawn);
-    CHECK(r.stats.features_used == 0u);
+    CHECK(effects_used(r) == 0u);
     CHECK(r.stats.models_drawn == 3);
 }
 

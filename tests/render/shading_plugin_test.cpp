@@ -57,14 +57,22 @@ TEST_CASE("shading.phong hands over a program with exactly the uniforms of each 
          {"light_count", "light_position:0", "light_colour:0", "light_falloff:0",
           "light_position:7", "light_colour:7", "light_falloff:7"})
         CHECK(has(plain, light));
-    // The shadow maps (ABI 1.9): how many, and each one's matrix, map and texel size.
-    for (const char *shadow : {"shadow_lights", "shadow_matrix:0", "shadow_map:0", "shadow_texel:0",
-                               "shadow_matrix:3", "shadow_map:3", "shadow_texel:3"})
-        CHECK(has(plain, shadow));
+    // Without shadow maps asked (ABI 1.10's bits), none of theirs: no lookup to pay for.
     for (const char *unused : {"texture", "skybox", "tint", "reflectivity", "transparency",
-                               "selected_tint", "param:cel_bands"})
+                               "selected_tint", "param:cel_bands", "shadow_lights",
+                               "shadow_matrix:0", "shadow_map:0", "shadow_texel:0"})
         CHECK_FALSE(has(plain, unused));
     CHECK(std::strstr(plain.fragment_source, "#define TEXTURE") == nullptr);
+    CHECK(std::strstr(plain.fragment_source, "#define SHADOW_MAPS 0") != nullptr);
+    // With n shadow maps: each one's matrix, map and texel size, for maps 0..n-1 only.
+    for (int n = 1; n <= ANI_MAX_SHADOW_LIGHTS; ++n) {
+        CAPTURE(n);
+        ani_shader_program shadowed{};
+        REQUIRE(program_for(ANI_SHADE_SHADOW_MAPS(n), shadowed) == ANI_OK);
+        for (int i = 0; i < ANI_MAX_SHADOW_LIGHTS; ++i)
+            for (const char *what : {"shadow_matrix:", "shadow_map:", "shadow_texel:"})
+                CHECK(has(shadowed, (what + std::to_string(i)).c_str()) == (i < n));
+    }
 
     ani_shader_program all{};
     REQUIRE(program_for(kModelFeatures, all) == ANI_OK);
@@ -81,7 +89,9 @@ TEST_CASE("shading.phong hands over a program with exactly the uniforms of each 
     ani_shader_program refused{};
     CHECK(program_for(ANI_SHADE_SKYBOX_PASS | ANI_SHADE_TEXTURE, refused) ==
           ANI_ERR_INVALID_ARGUMENT);
-    CHECK(program_for(1u << 6, refused) == ANI_ERR_INVALID_ARGUMENT);
+    CHECK(program_for(ANI_SHADE_SHADOW_MAPS(ANI_MAX_SHADOW_LIGHTS + 1), refused) ==
+          ANI_ERR_INVALID_ARGUMENT);
+    CHECK(program_for(1u << 9, refused) == ANI_ERR_INVALID_ARGUMENT);
 }
 
 TEST_CASE("every shading.phong program compiles and links on Mesa, with every uniform filled") {
@@ -91,7 +101,9 @@ TEST_CASE("every shading.phong program compiles and links on Mesa, with every un
     std::vector<std::string> log;
     ShadingPrograms programs(std::make_unique<PluginInstance>(*info, environment().plugins.host()),
                              [&](const std::string &m) { log.push_back(m); });
-    for (uint32_t features = 0; features <= kModelFeatures; ++features) {
+    for (uint32_t model = 0; model <= kModelFeatures; ++model) {
+      for (int n = 0; n <= ANI_MAX_SHADOW_LIGHTS; ++n) {
+        const uint32_t features = model | ANI_SHADE_SHADOW_MAPS(n);
         CAPTURE(feature_names(features));
         const LinkedProgram &p = programs.get(features);
         CHECK_FALSE(p.built_in);
@@ -110,14 +122,16 @@ TEST_CASE("every shading.phong program compiles and links on Mesa, with every un
             if (u.semantic == UniformSemantic::ShadowMatrixAt) matrices.insert(u.light);
             if (u.semantic == UniformSemantic::ShadowTexelAt) texels.insert(u.light);
         }
-        CHECK(maps.size() == kMaxShadowSemantics);
-        CHECK(matrices.size() == kMaxShadowSemantics);
-        CHECK(texels.size() == kMaxShadowSemantics);
+        CHECK(maps.size() == static_cast<size_t>(n));
+        CHECK(matrices.size() == static_cast<size_t>(n));
+        CHECK(texels.size() == static_cast<size_t>(n));
+      }
     }
     CHECK_FALSE(programs.get(ANI_SHADE_SKYBOX_PASS).built_in);
     for (const std::string &line : log) UNSCOPED_INFO(line);
     CHECK(log.empty());
     CHECK(programs.fallbacks() == 0);
     CHECK(feature_names(ANI_SHADE_TEXTURE | ANI_SHADE_CEL) == "texture|cel");
+    CHECK(feature_names(ANI_SHADE_TEXTURE | ANI_SHADE_SHADOW_MAPS(2)) == "texture|2 shadow maps");
     CHECK(feature_names(0) == "none");
 }

@@ -38,6 +38,18 @@ typedef enum ani_uniform_type {
 /* ABI 1.9: the most lights with a shadow map (the first ones of the scene's). */
 #define ANI_MAX_SHADOW_LIGHTS 4
 
+/* Since ABI 1.10: how many shadow maps a model's program reads, 0 to ANI_MAX_SHADOW_LIGHTS, in
+ * the feature bits above ANI_SHADE_SKYBOX_PASS: features & ANI_SHADE_SHADOW_MAPS_MASK is
+ * ANI_SHADE_SHADOW_MAPS(n), and "shadow_lights" is then n for every draw with it. A program for 0
+ * reads none and need not declare their uniforms. Why it is a feature and not only a uniform: a
+ * software rasterizer (Mesa's llvmpipe) runs both sides of every branch of a fragment shader for
+ * all its pixels at once, so a shadow lookup behind `if (i < shadow_lights)` costs its full price
+ * with shadows off (docs/performance.md). A host asks for these bits only of a plugin built for
+ * ABI 1.10 or newer; an older plugin's programs read "shadow_lights" as before. */
+#define ANI_SHADE_SHADOW_MAPS_SHIFT 6
+#define ANI_SHADE_SHADOW_MAPS_MASK (7u << ANI_SHADE_SHADOW_MAPS_SHIFT)
+#define ANI_SHADE_SHADOW_MAPS(n) ((uint32_t)(n) << ANI_SHADE_SHADOW_MAPS_SHIFT)
+
 /* A uniform and what the host puts in it. Semantics (docs/sdk.md lists them): "model",
  * "view", "projection", "normal_matrix", "camera_position", "light_position", "light_colour",
  * "ambient", "kd", "ks", "shininess", "tint", "reflectivity", "transparency",
