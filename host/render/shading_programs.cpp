@@ -47,7 +47,7 @@ std::string feature_names(uint32_t features) {
     std::string out;
     for (uint32_t bit = 0; bit < 6; ++bit)
         if (features & (1u << bit)) out += (out.empty() ? "" : "|") + std::string(names[bit]);
-    if (const uint32_t maps = (features & ANI_SHADE_SHADOW_MAPS_MASK) >> ANI_SHADE_SHADOW_MAPS_SHIFT)
+    if (const uint32_t maps = ANI_SHADE_SHADOW_MAP_COUNT(features))
         out += (out.empty() ? "" : "|") + std::to_string(maps) + (maps == 1 ? " shadow map" : " shadow maps");
     for (uint32_t bit = ANI_SHADE_SHADOW_MAPS_SHIFT + 3; bit < 32; ++bit)
         if (features & (1u << bit)) out += (out.empty() ? "bit " : "|bit ") + std::to_string(bit);

@@ -17,7 +17,7 @@ constexpr uint32_t kKnownFeatures = ANI_SHADE_TEXTURE | ANI_SHADE_REFLECTION |
 
 // How many shadow maps a feature set's program reads (ABI 1.10).
 inline int shadow_maps(uint32_t features) {
-    return static_cast<int>((features & ANI_SHADE_SHADOW_MAPS_MASK) >> ANI_SHADE_SHADOW_MAPS_SHIFT);
+    return static_cast<int>(ANI_SHADE_SHADOW_MAP_COUNT(features));
 }
 
 struct ProgramSource {

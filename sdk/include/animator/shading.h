@@ -49,6 +49,9 @@ typedef enum ani_uniform_type {
 #define ANI_SHADE_SHADOW_MAPS_SHIFT 6
 #define ANI_SHADE_SHADOW_MAPS_MASK (7u << ANI_SHADE_SHADOW_MAPS_SHIFT)
 #define ANI_SHADE_SHADOW_MAPS(n) ((uint32_t)(n) << ANI_SHADE_SHADOW_MAPS_SHIFT)
+/* The n of a feature set's ANI_SHADE_SHADOW_MAPS(n). */
+#define ANI_SHADE_SHADOW_MAP_COUNT(features)                                                       \
+    (((uint32_t)(features) & ANI_SHADE_SHADOW_MAPS_MASK) >> ANI_SHADE_SHADOW_MAPS_SHIFT)
 
 /* A uniform and what the host puts in it. Semantics (docs/sdk.md lists them): "model",
  * "view", "projection", "normal_matrix", "camera_position", "light_position", "light_colour",
