@@ -247,9 +247,11 @@ uint32_t Renderer::features_of(int m, bool selected, uint32_t without, const Gpu
         without |= ANI_SHADE_TEXTURE | ANI_SHADE_REFLECTION | ANI_SHADE_REFRACTION;
     const GpuTexture *loaded = model.texture.empty() ? nullptr : texture(model.texture);
     if (image) *image = loaded;
-    // The shadow maps the frame has (0 with shadows off): the program reads exactly those.
+    // The shadow maps the frame has (0 with shadows off) and its lights: the program reads
+    // exactly those.
     return (model_features(model, loaded != nullptr, settings_.cel_shading, selected) |
-            ANI_SHADE_SHADOW_MAPS(frame_uniforms_.shadow_lights)) &
+            ANI_SHADE_SHADOW_MAPS(frame_uniforms_.shadow_lights) |
+            ANI_SHADE_LIGHTS(frame_uniforms_.light_count)) &
            ~without;
 }
 

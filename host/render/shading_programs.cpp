@@ -49,7 +49,9 @@ std::string feature_names(uint32_t features) {
         if (features & (1u << bit)) out += (out.empty() ? "" : "|") + std::string(names[bit]);
     if (const uint32_t maps = ANI_SHADE_SHADOW_MAP_COUNT(features))
         out += (out.empty() ? "" : "|") + std::to_string(maps) + (maps == 1 ? " shadow map" : " shadow maps");
-    for (uint32_t bit = ANI_SHADE_SHADOW_MAPS_SHIFT + 3; bit < 32; ++bit)
+    if (const uint32_t lights = ANI_SHADE_LIGHT_COUNT(features))
+        out += (out.empty() ? "" : "|") + std::to_string(lights) + (lights == 1 ? " light" : " lights");
+    for (uint32_t bit = ANI_SHADE_LIGHTS_SHIFT + 4; bit < 32; ++bit)
         if (features & (1u << bit)) out += (out.empty() ? "bit " : "|bit ") + std::to_string(bit);
     return out.empty() ? "none" : out;
 }
@@ -63,6 +65,7 @@ ShadingPrograms::ShadingPrograms(std::unique_ptr<PluginInstance> plugin, LogSink
         param_values_.push_back(plugin_->get_param(d.params[i].id));
     }
     takes_shadow_maps_ = plugin_->info().abi.minor >= 10;
+    takes_light_counts_ = plugin_->info().abi.minor >= 11;
 }
 
 ShadingPrograms::~ShadingPrograms() = default;
@@ -162,6 +165,7 @@ const LinkedProgram &ShadingPrograms::get(uint32_t features) {
     if (features >= kFeatureSets)
         throw RenderError("no shading program for unknown features " + feature_names(features));
     if (!takes_shadow_maps_) features &= ~ANI_SHADE_SHADOW_MAPS_MASK;
+    if (!takes_light_counts_) features &= ~ANI_SHADE_LIGHTS_MASK;
     if (resolved_[features]) return *resolved_[features];
     const bool skybox_pass = (features & ANI_SHADE_SKYBOX_PASS) != 0;
     std::unique_ptr<LinkedProgram> own = plugin_ ? from_plugin(features) : nullptr;

@@ -78,15 +78,18 @@ class ShadingPrograms {
     // A plugin built for ABI 1.10 or newer is asked for the shadow maps' bits; an older one's
     // programs read "shadow_lights" (shading.h), so the bits are left out of what it is asked.
     bool takes_shadow_maps_ = false;
-    // Every combination of ani_shading_feature bits and shadow-map counts (0..7 in 3 bits).
-    static constexpr size_t kFeatureSets = std::size_t{1} << (ANI_SHADE_SHADOW_MAPS_SHIFT + 3);
+    // Likewise the lights' count (ABI 1.11): an older plugin's programs read "light_count".
+    bool takes_light_counts_ = false;
+    // Every combination of ani_shading_feature bits, shadow-map counts (0..7 in 3 bits) and
+    // light counts (0..15 in 4 bits).
+    static constexpr size_t kFeatureSets = std::size_t{1} << (ANI_SHADE_LIGHTS_SHIFT + 4);
     std::array<std::unique_ptr<LinkedProgram>, kFeatureSets> from_plugin_;
     std::array<const LinkedProgram *, kFeatureSets> resolved_{};
     std::unique_ptr<LinkedProgram> built_in_model_, built_in_skybox_;
     std::size_t fallbacks_ = 0;
 };
 
-// "texture|cel|2 shadow maps" for a feature set, "none" for 0: for messages and tests.
+// "texture|cel|2 shadow maps|3 lights" for a feature set, "none" for 0: for messages and tests.
 std::string feature_names(uint32_t features);
 
 } // namespace animator

@@ -34,12 +34,19 @@ in vec3 world_normal;
 in vec2 texcoord;
 
 uniform vec3 camera_position;
-// The scene's lights (light_count of them, at least 1): the light reaching a point at distance d
-// is colour / (c0 + c1 d + c2 d^2), with falloff (c0, c1, c2).
+// The scene's lights (LIGHTS of them, fixed by the feature bits; without them light_count, at
+// least 1): the light reaching a point at distance d is colour / (c0 + c1 d + c2 d^2), with
+// falloff (c0, c1, c2).
+#if LIGHTS > 0
+uniform vec3 light_positions[LIGHTS];
+uniform vec3 light_colours[LIGHTS];
+uniform vec3 light_falloffs[LIGHTS];
+#else
 uniform int light_count;
 uniform vec3 light_positions[MAX_LIGHTS];
 uniform vec3 light_colours[MAX_LIGHTS];
 uniform vec3 light_falloffs[MAX_LIGHTS];
+#endif
 uniform vec3 ambient;
 uniform vec3 kd;
 uniform vec3 ks;
@@ -164,8 +171,16 @@ void main() {
 #if SHADOW_MAPS > 3
     add_light(c, 3, n, to_eye, base, light_share(shadow_map3, 3, n));
 #endif
+    // A loop over a count fixed here is unrolled with constant indices; one bounded by the
+    // light_count uniform is run by llvmpipe for every pixel with variable indices into the
+    // lights' arrays, which cost half of a plain frame (docs/performance.md).
+#if LIGHTS > 0
+    for (int i = SHADOW_MAPS; i < LIGHTS; ++i)
+        add_light(c, i, n, to_eye, base, 1.0);
+#else
     for (int i = SHADOW_MAPS; i < MAX_LIGHTS && i < light_count; ++i)
         add_light(c, i, n, to_eye, base, 1.0);
+#endif
 
 #ifdef REFLECTION
     c = mix(c, texture(skybox, reflect(-to_eye, n)).rgb, reflectivity);

@@ -22,6 +22,8 @@ std::string header(uint32_t features) {
     (void)std::snprintf(max_line, sizeof max_line, "#define SHADOW_MAPS %d\n",
                         shadow_maps(features));
     h += max_line;
+    (void)std::snprintf(max_line, sizeof max_line, "#define LIGHTS %d\n", lights(features));
+    h += max_line;
     if (features & ANI_SHADE_TEXTURE) h += "#define TEXTURE 1\n";
     if (features & ANI_SHADE_REFLECTION) h += "#define REFLECTION 1\n";
     if (features & ANI_SHADE_REFRACTION) h += "#define REFRACTION 1\n";
@@ -65,6 +67,9 @@ static_assert(sizeof kShadowUniforms / sizeof kShadowUniforms[0] == 3 * ANI_MAX_
 std::string check_features(uint32_t features) {
     if (features & ~kKnownFeatures) return "unknown shading feature bits";
     if (shadow_maps(features) > ANI_MAX_SHADOW_LIGHTS) return "more shadow maps than it can read";
+    if (lights(features) > ANI_MAX_LIGHTS) return "more lights than a scene has";
+    if (lights(features) > 0 && lights(features) < shadow_maps(features))
+        return "fewer lights than shadow maps";
     if ((features & ANI_SHADE_SKYBOX_PASS) && features != ANI_SHADE_SKYBOX_PASS)
         return "the skybox pass takes no other feature";
     return "";
@@ -87,8 +92,14 @@ ProgramSource build_program(uint32_t features) {
     add(u, "model", ANI_UNIFORM_MAT4, "model");
     add(u, "normal_matrix", ANI_UNIFORM_MAT3, "normal_matrix");
     add(u, "camera_position", ANI_UNIFORM_VEC3, "camera_position");
-    add(u, "light_count", ANI_UNIFORM_INT, "light_count");
-    u.insert(u.end(), std::begin(kLightUniforms), std::end(kLightUniforms));
+    // The lights it adds up: as many as the feature bits say (ABI 1.11), or every one of them up
+    // to "light_count" when they do not say.
+    if (const int n = lights(features); n > 0) {
+        u.insert(u.end(), std::begin(kLightUniforms), std::begin(kLightUniforms) + 3 * n);
+    } else {
+        add(u, "light_count", ANI_UNIFORM_INT, "light_count");
+        u.insert(u.end(), std::begin(kLightUniforms), std::end(kLightUniforms));
+    }
     // The shadow maps it reads, their number fixed by the feature bits (shading.h, ABI 1.10).
     u.insert(u.end(), std::begin(kShadowUniforms), std::begin(kShadowUniforms) + 3 * shadow_maps(features));
     add(u, "ambient", ANI_UNIFORM_VEC3, "ambient");

@@ -20,9 +20,10 @@ Document plain_scene() {
     return doc;
 }
 
-// The feature sets asked for, but for the shadow maps' count (shadows are on by default).
+// The feature sets asked for, but for the shadow maps' count (shadows are on by default) and the
+// lights' (every model's program says how many lights it adds up).
 uint32_t effects_used(const Rendered &r) {
-    return r.stats.features_used & ~uint32_t(ANI_SHADE_SHADOW_MAPS_MASK);
+    return r.stats.features_used & ~uint32_t(ANI_SHADE_SHADOW_MAPS_MASK | ANI_SHADE_LIGHTS_MASK);
 }
 
 void set_model(Document &doc, const std::string &name, const std::function<void(Model &)> &edit) {
@@ -40,7 +41,8 @@ TEST_CASE("a scene without effects binds no skybox and no texture and asks for n
     const Rendered r = render_document(plain_scene(), 160, 120, {}, no_shadows);
     CHECK(r.log.empty());
     CHECK(r.stats.models_drawn == 3);
-    CHECK(r.stats.features_used == 0u);
+    // (The one light, the camera's: the program adds up exactly one, shading.h, ABI 1.11.)
+    CHECK(r.stats.features_used == uint32_t(ANI_SHADE_LIGHTS(1)));
     CHECK(r.stats.texture_binds == 0);
     CHECK(r.stats.cube_map_binds == 0);
     CHECK_FALSE(r.stats.skybox_drawn);
@@ -49,7 +51,7 @@ TEST_CASE("a scene without effects binds no skybox and no texture and asks for n
     // map, no more (shading.h, ABI 1.10).
     const Rendered shadowed = render_document(plain_scene());
     CHECK(shadowed.stats.shadow_maps == 1);
-    CHECK(shadowed.stats.features_used == uint32_t(ANI_SHADE_SHADOW_MAPS(1)));
+    CHECK(shadowed.stats.features_used == uint32_t(ANI_SHADE_SHADOW_MAPS(1) | ANI_SHADE_LIGHTS(1)));
     CHECK(shadowed.stats.program_binds == 1);
 }
 

@@ -64,6 +64,20 @@ TEST_CASE("shading.phong hands over a program with exactly the uniforms of each 
         CHECK_FALSE(has(plain, unused));
     CHECK(std::strstr(plain.fragment_source, "#define TEXTURE") == nullptr);
     CHECK(std::strstr(plain.fragment_source, "#define SHADOW_MAPS 0") != nullptr);
+    // With the lights' count said (ABI 1.11): those lights' uniforms only, and a loop over a
+    // count fixed when compiled, not over "light_count".
+    for (int n = 1; n <= ANI_MAX_LIGHTS; ++n) {
+        CAPTURE(n);
+        ani_shader_program counted{};
+        REQUIRE(program_for(ANI_SHADE_LIGHTS(n), counted) == ANI_OK);
+        CHECK_FALSE(has(counted, "light_count"));
+        for (int i = 0; i < ANI_MAX_LIGHTS; ++i)
+            for (const char *what : {"light_position:", "light_colour:", "light_falloff:"})
+                CHECK(has(counted, (what + std::to_string(i)).c_str()) == (i < n));
+        CHECK(std::strstr(counted.fragment_source, ("#define LIGHTS " + std::to_string(n) + "\n").c_str()) !=
+              nullptr);
+    }
+    CHECK(std::strstr(plain.fragment_source, "#define LIGHTS 0\n") != nullptr);
     // With n shadow maps: each one's matrix, map and texel size, for maps 0..n-1 only.
     for (int n = 1; n <= ANI_MAX_SHADOW_LIGHTS; ++n) {
         CAPTURE(n);
@@ -91,7 +105,11 @@ TEST_CASE("shading.phong hands over a program with exactly the uniforms of each 
           ANI_ERR_INVALID_ARGUMENT);
     CHECK(program_for(ANI_SHADE_SHADOW_MAPS(ANI_MAX_SHADOW_LIGHTS + 1), refused) ==
           ANI_ERR_INVALID_ARGUMENT);
-    CHECK(program_for(1u << 9, refused) == ANI_ERR_INVALID_ARGUMENT);
+    CHECK(program_for(ANI_SHADE_LIGHTS(ANI_MAX_LIGHTS + 1), refused) == ANI_ERR_INVALID_ARGUMENT);
+    // (The lights with a shadow map are among the lights added up.)
+    CHECK(program_for(ANI_SHADE_SHADOW_MAPS(2) | ANI_SHADE_LIGHTS(1), refused) ==
+          ANI_ERR_INVALID_ARGUMENT);
+    CHECK(program_for(1u << 13, refused) == ANI_ERR_INVALID_ARGUMENT);
 }
 
 TEST_CASE("every shading.phong program compiles and links on Mesa, with every uniform filled") {
@@ -101,20 +119,33 @@ TEST_CASE("every shading.phong program compiles and links on Mesa, with every un
     std::vector<std::string> log;
     ShadingPrograms programs(std::make_unique<PluginInstance>(*info, environment().plugins.host()),
                              [&](const std::string &m) { log.push_back(m); });
-    for (uint32_t model = 0; model <= kModelFeatures; ++model) {
-      for (int n = 0; n <= ANI_MAX_SHADOW_LIGHTS; ++n) {
-        const uint32_t features = model | ANI_SHADE_SHADOW_MAPS(n);
+    // Each model feature set with each count of shadow maps, its lights not said (0) or as few
+    // as can be; every count of lights for no model feature and for all of them.
+    std::vector<uint32_t> sets;
+    for (uint32_t model = 0; model <= kModelFeatures; ++model)
+        for (int n = 0; n <= ANI_MAX_SHADOW_LIGHTS; ++n) {
+            const int fewest = std::max(n, 1);
+            for (int lights = 0; lights <= ANI_MAX_LIGHTS; ++lights)
+                if (lights == 0 || lights == fewest ||
+                    ((model == 0 || model == kModelFeatures) && lights > fewest))
+                    sets.push_back(model | ANI_SHADE_SHADOW_MAPS(n) | ANI_SHADE_LIGHTS(lights));
+        }
+    for (const uint32_t features : sets) {
+      {
+        const int n = static_cast<int>(ANI_SHADE_SHADOW_MAP_COUNT(features));
+        const auto lights = static_cast<size_t>(ANI_SHADE_LIGHT_COUNT(features));
         CAPTURE(feature_names(features));
         const LinkedProgram &p = programs.get(features);
         CHECK_FALSE(p.built_in);
-        // Each element of the lights' arrays is found and filled: lights 0..7, once each.
+        // Each element of the lights' arrays is found and filled, once each: lights 0..7 when
+        // their count is not said, else that many.
         std::set<int> positions, falloffs;
         for (const BoundUniform &u : p.uniforms) {
             if (u.semantic == UniformSemantic::LightPositionAt) positions.insert(u.light);
             if (u.semantic == UniformSemantic::LightFalloffAt) falloffs.insert(u.light);
         }
-        CHECK(positions.size() == kMaxShadingLights);
-        CHECK(falloffs.size() == kMaxShadingLights);
+        CHECK(positions.size() == (lights ? lights : kMaxShadingLights));
+        CHECK(falloffs.size() == (lights ? lights : kMaxShadingLights));
         // And each shadow map's sampler, matrix and texel, once each.
         std::set<int> maps, matrices, texels;
         for (const BoundUniform &u : p.uniforms) {
@@ -133,5 +164,7 @@ TEST_CASE("every shading.phong program compiles and links on Mesa, with every un
     CHECK(programs.fallbacks() == 0);
     CHECK(feature_names(ANI_SHADE_TEXTURE | ANI_SHADE_CEL) == "texture|cel");
     CHECK(feature_names(ANI_SHADE_TEXTURE | ANI_SHADE_SHADOW_MAPS(2)) == "texture|2 shadow maps");
+    CHECK(feature_names(ANI_SHADE_SHADOW_MAPS(1) | ANI_SHADE_LIGHTS(3)) == "1 shadow map|3 lights");
+    CHECK(feature_names(ANI_SHADE_LIGHTS(1) | (1u << 13)) == "1 light|bit 13");
     CHECK(feature_names(0) == "none");
 }

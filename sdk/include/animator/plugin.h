@@ -27,7 +27,7 @@ extern "C" {
 /* ABI version. A plugin built against another major version, or a newer minor version than
  * the host's, is refused. Minor versions only append fields and functions. */
 #define ANI_ABI_MAJOR 1
-#define ANI_ABI_MINOR 10
+#define ANI_ABI_MINOR 11
 
 #define ANI_ENTRY_SYMBOL "animator_plugin_entry"
 

@@ -53,6 +53,21 @@ typedef enum ani_uniform_type {
 #define ANI_SHADE_SHADOW_MAP_COUNT(features)                                                       \
     (((uint32_t)(features) & ANI_SHADE_SHADOW_MAPS_MASK) >> ANI_SHADE_SHADOW_MAPS_SHIFT)
 
+/* Since ABI 1.11: how many of the scene's lights a model's program adds up, 1 to ANI_MAX_LIGHTS
+ * (document.h), in the four bits above the shadow maps': features & ANI_SHADE_LIGHTS_MASK is
+ * ANI_SHADE_LIGHTS(n), and "light_count" is then n for every draw with it, so the program may
+ * loop over a count fixed when it is compiled and read only those lights' uniforms. 0 (no bits)
+ * says nothing: the program reads "light_count" (so does every program of an older plugin). Why:
+ * llvmpipe runs a loop bounded by a uniform, and indexes the lights' arrays with a variable, for
+ * every pixel at a cost that halved the frame rate of a plain scene with one light
+ * (docs/performance.md). A host asks for these bits only of a plugin built for ABI 1.11 or newer. */
+#define ANI_SHADE_LIGHTS_SHIFT 9
+#define ANI_SHADE_LIGHTS_MASK (15u << ANI_SHADE_LIGHTS_SHIFT)
+#define ANI_SHADE_LIGHTS(n) ((uint32_t)(n) << ANI_SHADE_LIGHTS_SHIFT)
+/* The n of a feature set's ANI_SHADE_LIGHTS(n) (0: not said). */
+#define ANI_SHADE_LIGHT_COUNT(features)                                                            \
+    (((uint32_t)(features) & ANI_SHADE_LIGHTS_MASK) >> ANI_SHADE_LIGHTS_SHIFT)
+
 /* A uniform and what the host puts in it. Semantics (docs/sdk.md lists them): "model",
  * "view", "projection", "normal_matrix", "camera_position", "light_position", "light_colour",
  * "ambient", "kd", "ks", "shininess", "tint", "reflectivity", "transparency",
