@@ -122,17 +122,25 @@ void OffscreenFramebuffer::copy_to(const RenderTarget &target) const {
 }
 
 void OffscreenFramebuffer::read_rgb(std::vector<std::uint8_t> &out) const {
-    const size_t row = static_cast<size_t>(width_) * 3;
-    out.resize(row * static_cast<size_t>(height_));
+    const auto w = static_cast<size_t>(width_), h = static_cast<size_t>(height_);
+    out.resize(w * h * 3);
+    // Read as the colour buffer stores it, RGBA: llvmpipe copies that as it is, where GL_RGB had
+    // it convert every pixel (1.8 ms of a 1280x720 frame, docs/performance.md). Then the alpha
+    // dropped here, with the rows turned top first as images are stored (GL's run bottom up).
+    rgba_.resize(w * h * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved());
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, out.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba_.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    // GL's rows run bottom up; images are stored top first.
-    for (size_t top = 0, bottom = static_cast<size_t>(height_) - 1; top < bottom; ++top, --bottom)
-        std::swap_ranges(out.begin() + static_cast<std::ptrdiff_t>(top * row),
-                         out.begin() + static_cast<std::ptrdiff_t>((top + 1) * row),
-                         out.begin() + static_cast<std::ptrdiff_t>(bottom * row));
+    for (size_t y = 0; y < h; ++y) {
+        const std::uint8_t *from = rgba_.data() + (h - 1 - y) * w * 4;
+        std::uint8_t *to = out.data() + y * w * 3;
+        for (size_t x = 0; x < w; ++x, from += 4, to += 3) {
+            to[0] = from[0];
+            to[1] = from[1];
+            to[2] = from[2];
+        }
+    }
 }
 
 } // namespace animator

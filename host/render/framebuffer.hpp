@@ -65,6 +65,7 @@ class OffscreenFramebuffer {
     unsigned framebuffer_ = 0, colour_ = 0, depth_ = 0;
     unsigned resolve_framebuffer_ = 0, resolve_colour_ = 0; // only when multisampled
     int width_, height_, samples_, actual_samples_ = 1;
+    mutable std::vector<std::uint8_t> rgba_; // read_rgb's pixels as read, kept for the next frame
 };
 
 } // namespace animator
