@@ -8,6 +8,7 @@
 #include "audio/mixer.hpp"
 #include "io/document_io.hpp"
 #include "io/environment.hpp"
+#include "render/frame_rate_note.hpp"
 #include "render/framebuffer.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/png_frame_writer.hpp"
@@ -23,12 +24,14 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <set>
 #include <sstream>
+#include <vector>
 
 namespace animator::cli {
 
@@ -40,7 +43,8 @@ extern "C" char **environ;
 std::string parse_frames(const std::string &s, int *first = nullptr, int *last = nullptr) {
     int a = -1, b = -1;
     char dash = 0, extra = 0;
-    if (std::sscanf(s.c_str(), "%d%c%d%c", &a, &dash, &b, &extra) != 3 || dash != '-' || a < 0 || b < a)
+    if (std::sscanf(s.c_str(), "%d%c%d%c", &a, &dash, &b, &extra) != 3 || dash != '-' || a < 0 ||
+        b < a)
         return "expected A-B, the first and last frame (0 is the first, A <= B), got '" + s + "'";
     if (first) *first = a;
     if (last) *last = b;
@@ -56,7 +60,7 @@ struct RenderCommandOptions {
     std::string bake;   // a bake file (animator bake --save) used in place of baking
     std::vector<std::string> params;
     double from = 0.0, to = -1.0, fps = 30.0;
-    int compression = 5;
+    int compression = 3;
     int reflections = RenderOptions{}.reflection_size;
     double detail = RenderOptions{}.detail_pixels; // levels of detail: pixels a surface may move
     int msaa = 4; // samples a pixel (multisample anti-aliasing); 1 is none
@@ -189,9 +193,9 @@ int run_render(const RenderCommandOptions &o) {
             return kUsage;
         }
         if (o.to >= 0.0 || o.fps_given || !o.video.empty() || !o.frames.empty()) {
-            std::cerr
-                << "animator: --to, --fps, --frames and --video make frames: they need --out (without "
-                   "it one still is drawn, at --from, into the document's render output)\n";
+            std::cerr << "animator: --to, --fps, --frames and --video make frames: they need --out "
+                         "(without "
+                         "it one still is drawn, at --from, into the document's render output)\n";
             return kUsage;
         }
         still_file = doc.settings().render_output;
@@ -199,7 +203,8 @@ int run_render(const RenderCommandOptions &o) {
             still_file = std::filesystem::path(o.file).parent_path() / still_file;
     }
     if (!o.frames.empty() && !o.video.empty()) {
-        std::cerr << "animator: --frames renders a share of the frames, --video needs them all: render the "
+        std::cerr << "animator: --frames renders a share of the frames, --video needs them all: "
+                     "render the "
                      "shares, then put them together with ffmpeg (docs/rendering.md)\n";
         return kUsage;
     }
@@ -216,8 +221,9 @@ int run_render(const RenderCommandOptions &o) {
     if (!o.frames.empty()) {
         parse_frames(o.frames, &first, &last);
         if (last >= count) {
-            std::cerr << "animator: " << o.file << ": --frames " << o.frames << ": the frames are 0 to "
-                      << count - 1 << " (" << o.from << " s to " << to << " s at " << o.fps << " fps)\n";
+            std::cerr << "animator: " << o.file << ": --frames " << o.frames
+                      << ": the frames are 0 to " << count - 1 << " (" << o.from << " s to " << to
+                      << " s at " << o.fps << " fps)\n";
             return kBadInput;
         }
     }
@@ -278,9 +284,18 @@ int run_render(const RenderCommandOptions &o) {
 
         const int drawn = last - first + 1;
         ProgressBar bar("rendering");
+        // How long each frame took to draw and read back (not to encode), and whether it drew
+        // shadow maps and reflections of other models: said after when slower than 30 a second.
+        std::vector<double> frame_seconds;
+        bool shadowed = false, reflected = false;
         for (int k = first; k <= last; ++k) {
+            const auto start = std::chrono::steady_clock::now();
             renderer.draw(timeline.evaluate(frame_time(k)), framebuffer.target());
             framebuffer.read_rgb(writer.next_buffer());
+            frame_seconds.push_back(
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+            shadowed = shadowed || renderer.stats().shadow_maps > 0;
+            reflected = reflected || renderer.stats().reflection_maps > 0;
             writer.write(k); // named by its place in the whole sequence
             bar(static_cast<double>(k - first + 1) / drawn);
             // For a program that runs this one (the editor's Render): one line a frame handed to
@@ -291,6 +306,15 @@ int run_render(const RenderCommandOptions &o) {
         std::cout << "wrote " << drawn << " frame" << (drawn == 1 ? "" : "s") << " of " << width
                   << "x" << height << " to " << o.out << " (" << PngFrameWriter::file_name(first)
                   << (drawn > 1 ? " .. " + PngFrameWriter::file_name(last) : "") << ")\n";
+        // (The median: the first frame also compiles the shading programs it needs.)
+        std::nth_element(frame_seconds.begin(),
+                         frame_seconds.begin() +
+                             static_cast<std::ptrdiff_t>(frame_seconds.size() / 2),
+                         frame_seconds.end());
+        const std::string slow =
+            slow_frames_note(frame_seconds[frame_seconds.size() / 2], framebuffer.actual_samples(),
+                             shadowed, reflected);
+        if (!slow.empty()) std::cout << slow << "\n";
         if (!o.video.empty()) return write_video(o, timeline, sounds, to);
         return kSuccess;
     } catch (const std::exception &e) {
@@ -341,13 +365,13 @@ void add_render_command(CLI::App &app, std::function<int()> &run) {
         "--param", o->params,
         "a parameter of the physics backend or the shading plugin, NAME=VALUE (repeatable)");
     cmd->add_option("--compression", o->compression,
-                    "PNG compression 5..9 (default 5, the fastest; higher is smaller and slower)")
-        ->check(CLI::Range(5, 9));
+                    "PNG compression, zlib's level 1..9 (default 3; 1 is the fastest, higher is "
+                    "smaller and slower)")
+        ->check(CLI::Range(1, 9));
     cmd->add_option("--reflections", o->reflections,
                     "the side in pixels of the cube map each reflective or transparent model sees "
                     "the models around it in, drawn every frame (default " +
-                        std::to_string(o->reflections) +
-                        "); 0: they show the skybox only")
+                        std::to_string(o->reflections) + "); 0: they show the skybox only")
         ->check(CLI::Range(0, 2048));
     cmd->add_option("--detail", o->detail,
                     "levels of detail: a model far from the camera is drawn with a simpler copy of "
