@@ -27,6 +27,7 @@ find_package(X11 REQUIRED)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL) # EGL: off-screen rendering without a display
 # meshoptimizer: the renderer's levels of detail (host/render/mesh_lod.hpp).
 find_package(meshoptimizer REQUIRED)
+find_package(PNG REQUIRED) # libpng: rendered frames written as PNG (render/png_frame_writer.hpp)
 # Dear ImGui (static, with the GLFW and OpenGL3 backends) and stb.
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui stb)
 find_package(SFML 2.5 COMPONENTS audio system REQUIRED)

@@ -16,6 +16,7 @@ packages=(
   ffmpeg  # `animator render --video` and the editor's Render > Video (tests: render_video)
   libtinygltf-dev  # `animator export` writes glTF with tinygltf
   libmeshoptimizer-dev  # the renderer's levels of detail (host/render/mesh_lod.hpp)
+  libpng-dev  # rendered frames written as PNG, three times faster than stb's encoder
   blender python3-numpy  # the export tests: Blender imports every export (its importer needs numpy)
   nodejs  # the export tests: the Khronos glTF Validator runs on Node (tools/gltf-validator)
 )

@@ -1,8 +1,7 @@
-// Writes frames as numbered PNG files (DIR/frame_00000.png, ...) on worker threads. Encoding, not
-// drawing, bounds frame export (docs/rendering.md: about 114 ms per 720p frame at stb's default
-// compression 8, 0.2 ms to read it back), so frames are compressed at a lower level while the
-// renderer draws the next ones. A few buffers are recycled, so an export of any length allocates
-// no frame buffers after the first.
+// Writes frames as numbered PNG files (DIR/frame_00000.png, ...) on worker threads, with libpng at
+// a low zlib level (docs/rendering.md, "PNG encoding": about 11 ms a 1280x720 frame, a third of
+// stb's encoder at its lowest level), while the renderer draws the next ones. A few buffers are
+// recycled, so an export of any length allocates no frame buffers after the first.
 #pragma once
 
 #include <condition_variable>
@@ -18,10 +17,11 @@ namespace animator {
 
 class PngFrameWriter {
   public:
-    // `threads` 0 uses every core. `compression` is stb's zlib level, 5 (fastest, the default)
-    // to 9; stb's own default is 8. The folder must exist.
+    // `threads` 0 uses every core. `compression` is zlib's level, 1 (fastest) to 9 (smallest);
+    // 3, the default, makes files smaller than stb's encoder did at its lowest level. The folder
+    // must exist.
     PngFrameWriter(std::filesystem::path folder, int width, int height, unsigned threads = 0,
-                   int compression = 5);
+                   int compression = 3);
     // Waits for every frame handed over (errors then go unreported: call finish() first).
     ~PngFrameWriter();
     PngFrameWriter(const PngFrameWriter &) = delete;
@@ -46,7 +46,7 @@ class PngFrameWriter {
     void work();
 
     std::filesystem::path folder_;
-    int width_, height_;
+    int width_, height_, compression_;
     std::vector<std::vector<std::uint8_t>> buffers_;
     std::vector<std::vector<std::uint8_t> *> free_;
     std::vector<std::uint8_t> *filling_ = nullptr;
@@ -60,9 +60,9 @@ class PngFrameWriter {
 };
 
 // Writes one image (width * height * 3 bytes of RGB, rows top first) as the PNG file `file`, at
-// stb's zlib level `compression` (5 to 9), on this thread. Throws RenderError when it cannot.
+// zlib's level `compression` (1 to 9), on this thread. Throws RenderError when it cannot.
 void write_png(const std::filesystem::path &file, int width, int height,
-               const std::vector<std::uint8_t> &rgb, int compression = 5);
+               const std::vector<std::uint8_t> &rgb, int compression = 3);
 
 // The number of frames `animator render` writes for [from, to] seconds at `fps`: one at `from`,
 // then one every 1/fps up to `to` (the command line's and the editor's Render dialog's count).

@@ -127,6 +127,38 @@ TEST_CASE("animator render takes shading parameters and reports bad input") {
                Catch::Contains("--out") && Catch::Contains("--size") && Catch::Contains("--fps"));
 }
 
+TEST_CASE("animator render --compression writes the same pixels at every zlib level, smaller at "
+          "higher ones") {
+    const std::string drop = (test::source_dir() / "assets/animations/drop.ani").string();
+    const fs::path out = test::fresh_dir("render_compression");
+    std::map<int, std::uintmax_t> bytes;
+    for (const int level : {1, 3, 9}) {
+        const fs::path dir = out / std::to_string(level);
+        const auto r = test::run_animator("render " + drop + " --out " + dir.string() +
+                                              " --from 0.88 --to 0.88 --size 320x240 --compression " +
+                                              std::to_string(level),
+                                          kNoDisplay);
+        REQUIRE(r.exit_code == 0);
+        bytes[level] = fs::file_size(dir / "frame_00000.png");
+    }
+    // Read back by stb's decoder (not the encoder's library): the same image at each level.
+    const Image fastest = load_image(out / "1" / "frame_00000.png");
+    CHECK(fastest.width == 320);
+    CHECK(fastest.height == 240);
+    for (const int level : {3, 9}) {
+        CAPTURE(level);
+        CHECK(test::compare_images(load_image(out / std::to_string(level) / "frame_00000.png"), fastest)
+                  .max == 0.0);
+    }
+    CHECK(bytes[9] < bytes[1]);
+    for (const char *level : {"0", "10"}) {
+        CAPTURE(level);
+        CHECK(test::run_animator("render " + drop + " --out " + out.string() + " --to 0 --compression " +
+                                 level)
+                  .exit_code == 2);
+    }
+}
+
 TEST_CASE("animator render --detail 0 draws every mesh whole, the picture the levels of detail keep") {
     const std::string gas = (test::source_dir() / "assets/animations/gas.ani").string();
     const fs::path out = test::fresh_dir("render_detail");
