@@ -43,8 +43,7 @@ extern "C" char **environ;
 std::string parse_frames(const std::string &s, int *first = nullptr, int *last = nullptr) {
     int a = -1, b = -1;
     char dash = 0, extra = 0;
-    if (std::sscanf(s.c_str(), "%d%c%d%c", &a, &dash, &b, &extra) != 3 || dash != '-' || a < 0 ||
-        b < a)
+    if (std::sscanf(s.c_str(), "%d%c%d%c", &a, &dash, &b, &extra) != 3 || dash != '-' || a < 0 || b < a)
         return "expected A-B, the first and last frame (0 is the first, A <= B), got '" + s + "'";
     if (first) *first = a;
     if (last) *last = b;
@@ -193,9 +192,9 @@ int run_render(const RenderCommandOptions &o) {
             return kUsage;
         }
         if (o.to >= 0.0 || o.fps_given || !o.video.empty() || !o.frames.empty()) {
-            std::cerr << "animator: --to, --fps, --frames and --video make frames: they need --out "
-                         "(without "
-                         "it one still is drawn, at --from, into the document's render output)\n";
+            std::cerr
+                << "animator: --to, --fps, --frames and --video make frames: they need --out (without "
+                   "it one still is drawn, at --from, into the document's render output)\n";
             return kUsage;
         }
         still_file = doc.settings().render_output;
@@ -203,8 +202,7 @@ int run_render(const RenderCommandOptions &o) {
             still_file = std::filesystem::path(o.file).parent_path() / still_file;
     }
     if (!o.frames.empty() && !o.video.empty()) {
-        std::cerr << "animator: --frames renders a share of the frames, --video needs them all: "
-                     "render the "
+        std::cerr << "animator: --frames renders a share of the frames, --video needs them all: render the "
                      "shares, then put them together with ffmpeg (docs/rendering.md)\n";
         return kUsage;
     }
@@ -221,9 +219,8 @@ int run_render(const RenderCommandOptions &o) {
     if (!o.frames.empty()) {
         parse_frames(o.frames, &first, &last);
         if (last >= count) {
-            std::cerr << "animator: " << o.file << ": --frames " << o.frames
-                      << ": the frames are 0 to " << count - 1 << " (" << o.from << " s to " << to
-                      << " s at " << o.fps << " fps)\n";
+            std::cerr << "animator: " << o.file << ": --frames " << o.frames << ": the frames are 0 to "
+                      << count - 1 << " (" << o.from << " s to " << to << " s at " << o.fps << " fps)\n";
             return kBadInput;
         }
     }
@@ -371,7 +368,8 @@ void add_render_command(CLI::App &app, std::function<int()> &run) {
     cmd->add_option("--reflections", o->reflections,
                     "the side in pixels of the cube map each reflective or transparent model sees "
                     "the models around it in, drawn every frame (default " +
-                        std::to_string(o->reflections) + "); 0: they show the skybox only")
+                        std::to_string(o->reflections) +
+                        "); 0: they show the skybox only")
         ->check(CLI::Range(0, 2048));
     cmd->add_option("--detail", o->detail,
                     "levels of detail: a model far from the camera is drawn with a simpler copy of "

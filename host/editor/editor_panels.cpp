@@ -229,32 +229,33 @@ void Panels::view_menu() {
         view_.reflections = !view_.reflections;
     tip("Reflective and transparent models show the models around them (a cube map each, drawn "
         "every frame); off: the skybox only, and faster");
-    // (Each submenu's tip only while it is closed: at the mouse it covered the choices, as File >
-    // Open Recent's would.)
+    // Each submenu's tip on its item only while it is closed (at the mouse it covered the
+    // choices, as File > Open Recent's would), and on each of its choices.
+    const char *const samples_tip =
+        "Smooth edges in the 3D view: samples per pixel (multisampling); Off draws faster";
     const bool samples_open = ImGui::BeginMenu("Anti-aliasing");
-    if (!samples_open)
-        tip("Smooth edges in the 3D view: samples per pixel (multisampling); Off draws faster");
+    if (!samples_open) tip("%s", samples_tip);
     if (samples_open) {
         for (const int samples : {1, 2, 4, 8}) {
             const std::string label =
                 samples == 1 ? std::string("Off") : std::to_string(samples) + "x";
             if (ImGui::MenuItem(label.c_str(), nullptr, view_.msaa == samples))
                 view_.msaa = samples;
-            tip("Smooth edges in the 3D view: samples per pixel (multisampling); Off draws faster");
+            tip("%s", samples_tip);
         }
         ImGui::EndMenu();
     }
+    const char *const resolution_tip =
+        "The share of the 3D view's pixels drawn along each side: below 100% the scene is drawn\n"
+        "smaller and stretched onto the view, softer but faster (Blender's viewport resolution)";
     const bool resolution_open = ImGui::BeginMenu("Resolution");
-    if (!resolution_open)
-        tip("The share of the 3D view's pixels drawn along each side: below 100%% the scene is drawn\n"
-            "smaller and stretched onto the view, softer but faster (Blender's viewport resolution)");
+    if (!resolution_open) tip("%s", resolution_tip);
     if (resolution_open) {
         for (const int percent : kResolutions) {
             const std::string label = std::to_string(percent) + "%";
             if (ImGui::MenuItem(label.c_str(), nullptr, view_.resolution == percent))
                 view_.resolution = percent;
-            tip("The share of the 3D view's pixels drawn along each side: below 100%% the scene is drawn\n"
-                "smaller and stretched onto the view, softer but faster (Blender's viewport resolution)");
+            tip("%s", resolution_tip);
         }
         ImGui::EndMenu();
     }

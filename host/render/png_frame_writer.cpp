@@ -16,7 +16,7 @@ namespace {
 
 // Writes an RGB image (rows top first) as a PNG file with libpng at zlib level `level`, every
 // row with the Up filter: on rendered frames as small as stb's encoder at its lowest level with
-// Paeth, or smaller, in a third of its time (docs/rendering.md, "PNG encoding"). False when the
+// Paeth, or smaller, in a third of its time (docs/rendering.md, `animator render`). False when the
 // file cannot be written (libpng's errors come back through its longjmp, caught here).
 bool encode_png(const std::filesystem::path &file, int width, int height, const std::uint8_t *rgb,
                 int level) {
