@@ -125,7 +125,7 @@ void OffscreenFramebuffer::read_rgb(std::vector<std::uint8_t> &out) const {
     const auto w = static_cast<size_t>(width_), h = static_cast<size_t>(height_);
     out.resize(w * h * 3);
     // Read as the colour buffer stores it, RGBA: llvmpipe copies that as it is, where GL_RGB had
-    // it convert every pixel (1.8 ms of a 1280x720 frame, docs/performance.md). Then the alpha
+    // it convert every pixel (1.5 ms of a 1280x720 frame, docs/performance.md). Then the alpha
     // dropped here, with the rows turned top first as images are stored (GL's run bottom up).
     rgba_.resize(w * h * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved());
