@@ -1,5 +1,5 @@
 // Writes frames as numbered PNG files (DIR/frame_00000.png, ...) on worker threads, with libpng at
-// a low zlib level (docs/rendering.md, "PNG encoding": about 11 ms a 1280x720 frame, a third of
+// a low zlib level (docs/rendering.md, `animator render`: about 11 ms a 1280x720 frame, a third of
 // stb's encoder at its lowest level), while the renderer draws the next ones. A few buffers are
 // recycled, so an export of any length allocates no frame buffers after the first.
 #pragma once

@@ -64,8 +64,9 @@ ShadingPrograms::ShadingPrograms(std::unique_ptr<PluginInstance> plugin, LogSink
         param_ids_.emplace_back(d.params[i].id);
         param_values_.push_back(plugin_->get_param(d.params[i].id));
     }
-    takes_shadow_maps_ = plugin_->info().abi.minor >= 10;
-    takes_light_counts_ = plugin_->info().abi.minor >= 11;
+    const uint32_t minor = plugin_->info().abi.minor;
+    unknown_to_plugin_ = (minor < 10 ? ANI_SHADE_SHADOW_MAPS_MASK : 0u) |
+                         (minor < 11 ? ANI_SHADE_LIGHTS_MASK : 0u);
 }
 
 ShadingPrograms::~ShadingPrograms() = default;
@@ -164,8 +165,7 @@ const LinkedProgram &ShadingPrograms::built_in(bool skybox_pass) {
 const LinkedProgram &ShadingPrograms::get(uint32_t features) {
     if (features >= kFeatureSets)
         throw RenderError("no shading program for unknown features " + feature_names(features));
-    if (!takes_shadow_maps_) features &= ~ANI_SHADE_SHADOW_MAPS_MASK;
-    if (!takes_light_counts_) features &= ~ANI_SHADE_LIGHTS_MASK;
+    features &= ~unknown_to_plugin_;
     if (resolved_[features]) return *resolved_[features];
     const bool skybox_pass = (features & ANI_SHADE_SKYBOX_PASS) != 0;
     std::unique_ptr<LinkedProgram> own = plugin_ ? from_plugin(features) : nullptr;

@@ -75,11 +75,10 @@ class ShadingPrograms {
     LogSink log_;
     std::vector<std::string> param_ids_;
     std::vector<std::array<double, 4>> param_values_;
-    // A plugin built for ABI 1.10 or newer is asked for the shadow maps' bits; an older one's
-    // programs read "shadow_lights" (shading.h), so the bits are left out of what it is asked.
-    bool takes_shadow_maps_ = false;
-    // Likewise the lights' count (ABI 1.11): an older plugin's programs read "light_count".
-    bool takes_light_counts_ = false;
+    // The feature bits newer than the plugin, left out of what it is asked: a plugin built for
+    // ABI 1.10 or newer is asked for the shadow maps' count, one for 1.11 or newer for the
+    // lights' count; an older one's programs read "shadow_lights" and "light_count" (shading.h).
+    uint32_t unknown_to_plugin_ = 0;
     // Every combination of ani_shading_feature bits, shadow-map counts (0..7 in 3 bits) and
     // light counts (0..15 in 4 bits).
     static constexpr size_t kFeatureSets = std::size_t{1} << (ANI_SHADE_LIGHTS_SHIFT + 4);
