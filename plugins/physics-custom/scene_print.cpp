@@ -2,55 +2,86 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 
 namespace physics_custom {
 
+namespace {
+// xxHash64's round (a multiply-rotate-multiply of every word), in two accumulators started from
+// different seeds, the second also taking each word's place in the stream.
+constexpr uint64_t kPrime1 = 0x9e3779b185ebca87ull, kPrime2 = 0xc2b2ae3d27d4eb4full;
+uint64_t mix(uint64_t acc, uint64_t w) {
+    acc += w * kPrime2;
+    acc = (acc << 31) | (acc >> 33);
+    return acc * kPrime1;
+}
+} // namespace
+
+void ScenePrint::add_word(uint64_t w) {
+    a = mix(a, w);
+    b = mix(b, w ^ (count * kPrime1));
+    ++count;
+}
+
+void ScenePrint::add(double x) {
+    if (std::isnan(x)) unknown = true;
+    if (x == 0.0) x = 0.0; // -0 as 0
+    uint64_t w = 0;
+    std::memcpy(&w, &x, sizeof w);
+    add_word(w);
+}
+
+void ScenePrint::add(const void *p) {
+    add_word(static_cast<uint64_t>(reinterpret_cast<uintptr_t>(p)));
+}
+
 ScenePrint scene_print(const ani_physics_scene &scene, const KeyedEvaluator &evaluate) {
     ScenePrint print;
-    std::vector<double> &x = print.numbers;
-    x.push_back(scene.gravity);
-    x.push_back(scene.down_axis);
-    x.push_back(scene.model_count);
-    print.meshes.reserve(2 * static_cast<std::size_t>(scene.model_count));
-    x.reserve(32 * static_cast<std::size_t>(scene.model_count)); // a model keyed once: 29
-
+    print.add(scene.gravity);
+    print.add(static_cast<double>(scene.down_axis));
+    print.add(static_cast<double>(scene.model_count));
     for (uint32_t i = 0; i < scene.model_count; ++i) {
         const ani_physics_model &m = scene.models[i];
-        print.meshes.push_back(m.mesh);
-        print.meshes.push_back(m.mesh ? m.mesh->positions : nullptr);
-        if (m.mesh)
-            x.insert(x.end(), {double(m.mesh->vertex_count), double(m.mesh->triangle_count)});
-        else
-            x.insert(x.end(), {-1.0, -1.0});
-        x.push_back(m.group);
+        print.add(static_cast<const void *>(m.mesh));
+        print.add(static_cast<const void *>(m.mesh ? m.mesh->positions : nullptr));
+        print.add(m.mesh ? double(m.mesh->vertex_count) : -1.0);
+        print.add(m.mesh ? double(m.mesh->triangle_count) : -1.0);
+        print.add(m.group);
         if (m.desc) {
-            x.insert(x.end(), {double(m.desc->dynamics), double(m.desc->gravity), m.desc->mass});
-            if (ANI_MODEL_DESC_HAS_BODY(m.desc))
-                x.insert(x.end(), {1.0, m.desc->restitution, m.desc->friction,
-                                   double(m.desc->rotates), m.desc->angular_velocity.x,
-                                   m.desc->angular_velocity.y, m.desc->angular_velocity.z});
-            else
-                x.push_back(0.0);
+            print.add(double(m.desc->dynamics));
+            print.add(double(m.desc->gravity));
+            print.add(m.desc->mass);
+            if (ANI_MODEL_DESC_HAS_BODY(m.desc)) {
+                for (double x : {1.0, m.desc->restitution, m.desc->friction, double(m.desc->rotates),
+                                 m.desc->angular_velocity.x, m.desc->angular_velocity.y,
+                                 m.desc->angular_velocity.z})
+                    print.add(x);
+            } else {
+                print.add(0.0);
+            }
         } else {
-            x.push_back(-1.0);
+            print.add(-1.0);
         }
-        x.push_back(m.keyed_span_count);
-        for (uint32_t k = 0; k < m.keyed_span_count; ++k)
-            x.insert(x.end(), {m.keyed_spans[k].begin, m.keyed_spans[k].end});
+        print.add(m.keyed_span_count);
+        for (uint32_t k = 0; k < m.keyed_span_count; ++k) {
+            print.add(m.keyed_spans[k].begin);
+            print.add(m.keyed_spans[k].end);
+        }
         const bool has_keys =
             m.struct_size >= offsetof(ani_physics_model, key_count) + sizeof(m.key_count) &&
             m.key_times;
-        x.push_back(has_keys ? m.key_count : 0);
+        print.add(has_keys ? m.key_count : 0);
         for (uint32_t k = 0; has_keys && k < m.key_count; ++k) {
-            x.push_back(m.key_times[k]);
+            print.add(m.key_times[k]);
             ani_model_state s{};
             ani_vec3 v{};
             const bool known = evaluate ? evaluate(i, m.key_times[k], s, v)
                                         : scene.evaluate_keyed(scene.host_context, i,
                                                                m.key_times[k], &s, &v) == ANI_OK;
-            if (!known) x.push_back(std::nan("")); // equal to nothing
-            x.insert(x.end(), {s.center.x, s.center.y, s.center.z, s.angles.x, s.angles.y,
-                               s.angles.z, s.scale.x, s.scale.y, s.scale.z, v.x, v.y, v.z});
+            if (!known) print.unknown = true; // equal to nothing
+            for (double x : {s.center.x, s.center.y, s.center.z, s.angles.x, s.angles.y, s.angles.z,
+                             s.scale.x, s.scale.y, s.scale.z, v.x, v.y, v.z})
+                print.add(x);
         }
     }
     return print;

@@ -8,19 +8,29 @@
 
 #include <cstdint>
 #include <functional>
-#include <vector>
 
 namespace physics_custom {
 
-// All of it, model after model, in two flat lists (one allocation each, not several per model:
-// a gas of 100,000 balls is printed at every bake's start): the meshes' addresses, and every
-// number with the count of each variable-length part before it.
+// All of it, model after model, folded into two 64-bit hashes as it is read
+// (nothing stored: the numbers of a gas of 100,000 balls took 25 MB, written at every bake's
+// start, a tenth of the bake's time at that size; docs/performance.md, the gas), with how many
+// numbers went in. Two prints of different scenes are equal only if both hashes collide at once
+// (about 2^-128 for unrelated numbers; not a defence against a scene made to collide).
 struct ScenePrint {
-    std::vector<const void *> meshes; // per model: its mesh view and its positions
-    std::vector<double> numbers;
+    uint64_t a = 0x60ea27eeadc0b5d6ull, b = 0x61c8864e7a143579ull; // (xxHash64's seeds' forms)
+    uint64_t count = 0;
+    bool unknown = false; // a key that could not be evaluated, or a number that is NaN
     bool operator==(const ScenePrint &o) const {
-        return meshes == o.meshes && numbers == o.numbers;
+        return !unknown && !o.unknown && a == o.a && b == o.b && count == o.count;
     }
+    bool operator!=(const ScenePrint &o) const { return !(*this == o); }
+    // Adds a number (0 and -0 alike, as == has them; a NaN makes the print equal to no other)
+    // and an address (a mesh and its positions: the same view is the same mesh).
+    void add(double x);
+    void add(const void *p);
+
+  private:
+    void add_word(uint64_t w);
 };
 
 // The keys' state of model m at t and their velocity there, or false when they cannot say.
