@@ -57,16 +57,16 @@ class Simulation {
     double r_, d2_;                  // radius, and (2r)^2
     std::array<double, 3> lo_, hi_;  // the walls
     double wall_lo_[3], wall_hi_[3]; // where the centres meet them: lo + r, hi - r
-    std::vector<Sphere> s_;
-    std::vector<Event> e_;
-    std::vector<double> mass_;
+    ani::HugeVector<Sphere> s_;
+    ani::HugeVector<Event> e_;
+    ani::HugeVector<double> mass_;
     // The cell list: real cells 1 .. n_[a] per axis, a layer of empty cells around them.
     double cell_lo_[3], width_[3]; // where cell 1 starts (lo + r), cell widths
     int n_[3];
     std::int64_t stride_[3];
-    std::vector<std::uint32_t> head_;
-    std::vector<std::array<int, 3>> coord_; // each sphere's cell
-    std::vector<std::uint32_t> prev_;       // the previous sphere in its cell, or kNone
+    ani::HugeVector<std::uint32_t> head_;
+    ani::HugeVector<std::array<int, 3>> coord_; // each sphere's cell
+    ani::HugeVector<std::uint32_t> prev_;       // the previous sphere in its cell, or kNone
     std::int64_t around_[27];               // the offsets of the 27 cells around a cell
     std::int64_t beyond_[6][9]; // after a crossing along axis a, way d: the 9 new, at 2a + d
     physics_custom::CalendarQueue queue_;
@@ -77,7 +77,7 @@ Simulation::Simulation(const Gas &gas, std::vector<Collision> *log)
     const std::size_t n = gas.position.size();
     s_.resize(n);
     e_.resize(n);
-    mass_ = gas.mass;
+    mass_.assign(gas.mass.begin(), gas.mass.end());
     coord_.resize(n);
     prev_.assign(n, kNone);
     // Cells at least 2r wide over the centres' range [lo + r, hi - r], and at most about 4 per
@@ -316,7 +316,7 @@ Gas Simulation::state(double t) const {
     g.radius = r_;
     g.lo = lo_;
     g.hi = hi_;
-    g.mass = mass_;
+    g.mass.assign(mass_.begin(), mass_.end());
     g.position.resize(s_.size());
     g.velocity.resize(s_.size());
     for (std::size_t i = 0; i < s_.size(); ++i) {

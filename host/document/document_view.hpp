@@ -5,6 +5,7 @@
 #include "document/document.hpp"
 
 #include <animator/document.h>
+#include <animator/huge_pages.hpp>
 
 #include <string>
 #include <vector>
@@ -21,7 +22,7 @@ class DocumentView {
     const ani_document_view &view() const { return view_; }
 
   private:
-    std::vector<ani_model_desc> models_;
+    ani::HugeVector<ani_model_desc> models_; // (at 100,000 models, 36 MB: huge_pages.hpp)
     std::vector<std::vector<ani_model_state>> states_;
     std::vector<std::vector<int32_t>> keyed_;
     std::vector<ani_keyframe_view> keyframes_;

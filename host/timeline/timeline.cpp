@@ -1,5 +1,7 @@
 #include "timeline/timeline.hpp"
 
+#include <animator/huge_pages.hpp>
+
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtx/euler_angles.hpp>
 
@@ -62,18 +64,19 @@ struct BakeContext {
     // they grow), filed by model at its end (file_segments): each model's list then grows once
     // per call, not at every segment (at 100,000 balls growing them one by one took a sixth of
     // the bake).
-    static constexpr std::size_t kChunk = 1 << 14;
-    std::vector<std::unique_ptr<ani_motion_segment[]>> log = {};
+    // Chunks of 6 MB, in huge pages (huge_pages.hpp).
+    static constexpr std::size_t kChunk = 1 << 16;
+    std::vector<ani::HugeVector<ani_motion_segment>> log = {};
     std::size_t logged = 0;
 
     void log_segment(const ani_motion_segment &s) {
-        if (logged == log.size() * kChunk) log.emplace_back(new ani_motion_segment[kChunk]);
-        log[logged / kChunk][logged % kChunk] = s;
+        if (logged == log.size() * kChunk) log.emplace_back().reserve(kChunk);
+        log[logged / kChunk].push_back(s);
         ++logged;
     }
     template <class F> void each_logged(F &&f) const {
         for (std::size_t k = 0; k < logged; k += kChunk) {
-            const ani_motion_segment *chunk = log[k / kChunk].get();
+            const ani_motion_segment *chunk = log[k / kChunk].data();
             for (std::size_t i = 0, n = std::min(kChunk, logged - k); i < n; ++i) f(chunk[i]);
         }
     }
@@ -86,6 +89,7 @@ struct BakeContext {
             if (count[m] > 0 && list.capacity() < need) list.reserve(std::max(need, 2 * list.capacity()));
         }
         each_logged([&](const ani_motion_segment &s) { (*segments)[s.model].push_back(s); });
+        for (auto &chunk : log) chunk.clear();
         logged = 0;
     }
 
@@ -101,7 +105,7 @@ struct BakeContext {
 struct KeyedAnswers {
     const KeyedMotion *keyed;
     double from;
-    std::vector<std::optional<ModelPose>> at_from; // per model
+    ani::HugeVector<std::optional<ModelPose>> at_from; // per model
 };
 
 // What every kind of rotation segment gives: its model, its span and its orientation at t0.
@@ -372,9 +376,8 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     const DocumentView view(doc_);
     const auto &models = doc_.models();
     const double end_of_time = static_cast<double>(doc_.settings().max_time_ms) / 1000.0;
-    std::vector<ani_physics_model> scene_models(models.size());
-    std::vector<ani_time_span> spans(models.size());
-    std::vector<ani_body_state> starts(models.size());
+    ani::HugeVector<ani_physics_model> scene_models(models.size());
+    ani::HugeVector<ani_time_span> spans(models.size());
     // Every model's key times, in one array (a vector each was an allocation a model: 100,000 for
     // a gas), the model's from key_from[m] to key_from[m + 1].
     std::vector<double> key_times;
@@ -388,10 +391,10 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     // The backend asks for the keyed pose of every model that starts on its keys, at `from`:
     // the answers are the poses found here (evaluating them again took a tenth of a bake of
     // 100,000 balls).
-    KeyedAnswers answers{keyed_.get(), from, std::vector<std::optional<ModelPose>>(models.size())};
-    for (size_t m = 0; m < models.size(); ++m) starts[m] = state_at(static_cast<int>(m), from, &answers.at_from[m]);
+    KeyedAnswers answers{keyed_.get(), from, ani::HugeVector<std::optional<ModelPose>>(models.size())};
     for (size_t m = 0; m < models.size(); ++m) {
         ani_physics_model &pm = scene_models[m];
+        pm.start = state_at(static_cast<int>(m), from, &answers.at_from[m]);
         pm.struct_size = sizeof pm;
         pm.desc = &view.view().models[m];
         pm.mesh = m < meshes_.size() && meshes_[m] ? &meshes_[m]->view : nullptr;
@@ -403,13 +406,12 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         pm.group = static_cast<uint32_t>(root_child);
         pm.keyed_spans = &spans[m];
         pm.keyed_span_count = 1;
-        pm.start = starts[m];
         if (const RotationSegment *r = rotation_at(static_cast<int>(m), from)) {
             const glm::dquat q = orientation_at(*r, from);
             pm.start_orientation = ani_quat{q.w, q.x, q.y, q.z};
             pm.start_angular_velocity = to_ani(angular_velocity_at(*r, from));
             pm.start_turning = 1;
-        } else if (starts[m].motion == ANI_MOTION_FREE && carried_at(static_cast<int>(m), from)) {
+        } else if (pm.start.motion == ANI_MOTION_FREE && carried_at(static_cast<int>(m), from)) {
             const Placement p = placement(static_cast<int>(m), from);
             pm.start_orientation = ani_quat{p.q.w, p.q.x, p.q.y, p.q.z};
             pm.start_angular_velocity = to_ani(p.w);

@@ -7,6 +7,8 @@
 // deterministic. Nothing is allocated after init.
 #pragma once
 
+#include <animator/huge_pages.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -52,7 +54,7 @@ class CalendarQueue {
     std::int64_t base_ = 0;            // the heap's bucket
     std::size_t ring_ = 1;             // buckets in the ring
     std::size_t listed_ = 0, far_ = 0; // items in lists, in the far list
-    std::vector<Entry> heap_;          // room for every item reserved: it never allocates
+    ani::HugeVector<Entry> heap_;          // room for every item reserved: it never allocates
     // Each item's time, where it is (its heap slot, or -1 - its list; ring_: the far list), and
     // its neighbours in its list: together, one cache miss per item touched, not four.
     struct Slot {
@@ -60,8 +62,8 @@ class CalendarQueue {
         std::int32_t where;
         std::uint32_t prev, next;
     };
-    std::vector<Slot> slot_;
-    std::vector<std::uint32_t> head_; // each list's first item
+    ani::HugeVector<Slot> slot_;
+    ani::HugeVector<std::uint32_t> head_; // each list's first item
 };
 
 } // namespace physics_custom

@@ -26,6 +26,7 @@
 #include "calendar_queue.hpp"
 #include "time_of_impact.hpp"
 
+#include <animator/huge_pages.hpp>
 #include <animator/physics.h>
 
 #include <array>
@@ -145,16 +146,16 @@ class GasLane {
     bool falls_;        // a_ is not 0: paths are parabolas
     Grid grid_;
     std::vector<Triangle> triangles_;
-    std::vector<Sphere> s_;
-    std::vector<Event> e_;
-    std::vector<double> mass_;
-    std::vector<uint32_t> model_;
-    std::vector<int> motion_;
+    ani::HugeVector<Sphere> s_;
+    ani::HugeVector<Event> e_;
+    ani::HugeVector<double> mass_;
+    ani::HugeVector<uint32_t> model_;
+    ani::HugeVector<int> motion_;
     // The cells: a layer of empty cells around the grid's (no bounds tests); each cell's first
     // sphere, each sphere's previous one, and each cell's triangles (CSR).
     std::array<int64_t, 3> stride_{};
-    std::vector<uint32_t> head_, prev_;
-    std::vector<Contact> contact_; // each sphere's with the triangle of its event, if any
+    ani::HugeVector<uint32_t> head_, prev_;
+    ani::HugeVector<Contact> contact_; // each sphere's with the triangle of its event, if any
     std::vector<uint32_t> near_from_, near_;
     int64_t around_[27];
     int64_t beyond_[6][9]; // after a crossing along axis a, way d: the 9 new cells, at 2a + d
