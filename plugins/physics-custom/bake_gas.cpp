@@ -84,7 +84,7 @@ bool EventBake::enter_gas_lane() {
     }
     for (const Obstacle &o : obstacles_) walls.push_back(&materials_[o.model]);
     if (!elastic(balls, walls)) return false;
-    std::vector<GasLane::Start> spheres(bodies_.size());
+    ani::HugeVector<GasLane::Start> spheres(bodies_.size());
     for (size_t i = 0; i < bodies_.size(); ++i) {
         const Body &b = bodies_[i];
         spheres[i] = {b.model, b.mass, b.motion, b.t0, b.path.p, b.path.v};
@@ -140,7 +140,7 @@ bool EventBake::gas_from_scene() {
     for (uint32_t i : spheres) balls.push_back(&materials[i]);
     for (uint32_t w : walls) wall_materials.push_back(&materials[w]);
     if (!elastic(balls, wall_materials)) return false;
-    std::vector<GasLane::Start> starts;
+    ani::HugeVector<GasLane::Start> starts;
     starts.reserve(spheres.size());
     glm::dvec3 a(0.0); // one for all: gravity (Gravity on), or none
     for (uint32_t i : spheres) {

@@ -34,7 +34,7 @@ ani_vec3 ani(const glm::dvec3 &v) {
 } // namespace
 
 GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid,
-                 std::vector<Triangle> triangles, const std::vector<Start> &spheres, double now,
+                 std::vector<Triangle> triangles, const ani::HugeVector<Start> &spheres, double now,
                  bool check)
     : r_(radius), reach2_((radius + radius) * (radius + radius)), a_(acceleration),
       falls_(acceleration != glm::dvec3(0.0)), grid_(grid), triangles_(std::move(triangles)) {

@@ -78,7 +78,7 @@ class GasLane {
     // triangles: the general engine's checks have run, or `check` asks the lane to see to it
     // (admissible() says whether they are; if not, the lane must not be run).
     GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid,
-            std::vector<Triangle> triangles, const std::vector<Start> &spheres, double now,
+            std::vector<Triangle> triangles, const ani::HugeVector<Start> &spheres, double now,
             bool check = false);
     bool admissible() const { return admissible_; }
 
