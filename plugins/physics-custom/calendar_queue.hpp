@@ -54,7 +54,7 @@ class CalendarQueue {
     std::int64_t base_ = 0;            // the heap's bucket
     std::size_t ring_ = 1;             // buckets in the ring
     std::size_t listed_ = 0, far_ = 0; // items in lists, in the far list
-    ani::HugeVector<Entry> heap_;          // room for every item reserved: it never allocates
+    ani::HugeVector<Entry> heap_; // room for every item reserved: it never allocates
     // Each item's time, where it is (its heap slot, or -1 - its list; ring_: the far list), and
     // its neighbours in its list: together, one cache miss per item touched, not four.
     struct Slot {
