@@ -51,8 +51,8 @@ struct Largest {
 };
 
 // Events of `a` with no event of `b` between the same two models within `tolerance` seconds.
-std::vector<const ani_collision_event *> unmatched(const std::vector<ani_collision_event> &a,
-                                                   const std::vector<ani_collision_event> &b,
+std::vector<const ani_collision_event *> unmatched(const EventList &a,
+                                                   const EventList &b,
                                                    double tolerance) {
     std::vector<bool> used(b.size(), false);
     std::vector<const ani_collision_event *> out;

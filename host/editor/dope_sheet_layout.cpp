@@ -170,7 +170,7 @@ std::vector<ReleasedSpan> released_spans(const std::vector<ani_motion_segment> &
     return spans;
 }
 
-std::vector<EventTick> event_ticks(const DopeSheetLayout &layout, const std::vector<ani_collision_event> &events,
+std::vector<EventTick> event_ticks(const DopeSheetLayout &layout, const ani::HugeVector<ani_collision_event> &events,
                                    int models) {
     std::vector<EventTick> ticks;
     const double t0 = layout.time_at(layout.track_x0() - layout.metrics().track_pad);

@@ -9,6 +9,7 @@
 #include "document/key_edits.hpp"
 #include "editor/view_layout.hpp"
 
+#include <animator/huge_pages.hpp>
 #include <animator/physics.h>
 
 #include <algorithm>
@@ -136,7 +137,7 @@ struct EventTick {
     double x = 0.0;
     int row = 0;
 };
-std::vector<EventTick> event_ticks(const DopeSheetLayout &layout, const std::vector<ani_collision_event> &events,
+std::vector<EventTick> event_ticks(const DopeSheetLayout &layout, const ani::HugeVector<ani_collision_event> &events,
                                    int models);
 
 } // namespace animator

@@ -52,7 +52,7 @@ bool same_physics(const Model &a, const Model &b) {
 struct BakeContext {
     Timeline *timeline;
     std::vector<std::vector<ani_motion_segment>> *segments;
-    std::vector<ani_collision_event> *events;
+    EventList *events;
     const std::function<bool(double)> *progress;
     std::map<std::string, double> *counts;
     std::vector<std::vector<RotationSegment>> *rotations;

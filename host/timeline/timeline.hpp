@@ -9,6 +9,7 @@
 #include "timeline/keyed_motion.hpp"
 
 #include <animator/free_rotation.hpp>
+#include <animator/huge_pages.hpp>
 #include <animator/pendulum.hpp>
 
 #include <glm/gtc/quaternion.hpp>
@@ -67,6 +68,10 @@ struct RotationSegment : ani_rotation_segment {
 std::shared_ptr<const ani::FreeRotation> free_rotation_of(const RotationSegment &s);
 std::shared_ptr<const ani::Pendulum> hinge_of(const RotationSegment &s);
 
+// The collisions of a bake in time order: several megabytes at 100,000 balls, in 2 MB pages once
+// large (animator/huge_pages.hpp), so that growing them does not fault 4 KB pages one by one.
+using EventList = ani::HugeVector<ani_collision_event>;
+
 // What a bake made: every model's motion and rotation segments, the collisions and overlaps,
 // and how far it reaches. A timeline gives it (to save it) and takes one made elsewhere
 // (timeline/bake_file.hpp).
@@ -75,7 +80,7 @@ struct BakedState {
     std::vector<std::vector<ani_motion_segment>> segments; // per model, in time order
     std::vector<std::vector<RotationSegment>> rotations;   // per model, in time order
     std::vector<std::vector<ani_carried_segment>> carried; // per model, in time order
-    std::vector<ani_collision_event> events;
+    EventList events;
     std::vector<ani_overlap> overlaps;
 };
 
@@ -143,7 +148,7 @@ class Timeline {
     static double affected_from(const Document &before, const Document &after);
 
     const std::vector<ani_motion_segment> &segments(int model) const { return segments_[static_cast<size_t>(model)]; }
-    const std::vector<ani_collision_event> &events() const { return events_; }
+    const EventList &events() const { return events_; }
     // The backend's rotation segments of a model (only for a backend that turns models).
     const std::vector<RotationSegment> &rotations(int model) const { return rotations_[static_cast<size_t>(model)]; }
     // The pairs of models the backend found overlapping (each once, when found), in the order found.
@@ -193,7 +198,7 @@ class Timeline {
     };
     std::vector<std::shared_ptr<const MeshView>> meshes_; // per model (shared by models with one mesh), null without
     std::vector<std::vector<ani_motion_segment>> segments_;
-    std::vector<ani_collision_event> events_;
+    EventList events_;
     std::vector<std::vector<RotationSegment>> rotations_; // per model, in time order
     std::vector<std::vector<ani_carried_segment>> carried_; // per model, in time order
     std::vector<ani_overlap> overlaps_;

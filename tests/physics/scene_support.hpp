@@ -84,7 +84,7 @@ inline void key(Document &doc, std::int64_t ms, int model, const ModelState &sta
 // How far the first `count` events are from the bounces of a drop that first lands at t0 at
 // speed v0 with restitution e: bounce k at t0 (1 + 2 e (1 - e^k) / (1 - e)), met at e^k v0
 // (derived in restitution_test.cpp's first test). The largest differences in time and in speed.
-inline std::pair<double, double> bounce_errors(const std::vector<ani_collision_event> &events,
+inline std::pair<double, double> bounce_errors(const animator::EventList &events,
                                                size_t count, double t0, double v0, double e) {
     double worst_t = 0.0, worst_v = 0.0;
     for (size_t k = 0; k < count; ++k) {

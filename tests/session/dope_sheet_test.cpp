@@ -184,7 +184,7 @@ TEST_CASE("released spans: free flight and rest, joined where contiguous, keyed 
 
 TEST_CASE("a collision ticks the rows of both its models where its time is", "[dope_sheet]") {
     const DopeSheetLayout l = fitted(5.0, 4);
-    std::vector<ani_collision_event> events(3);
+    ani::HugeVector<ani_collision_event> events(3);
     events[0].t = 0.903;
     events[0].a = 1;
     events[0].b = 0;
