@@ -74,7 +74,7 @@ DocumentView::DocumentView(const Document &doc) {
     keyed_.reserve(doc.keyframes().size());
     keyframes_.reserve(doc.keyframes().size());
     for (const Keyframe &k : doc.keyframes()) {
-        std::vector<ani_model_state> states;
+        ani::HugeVector<ani_model_state> states;
         std::vector<int32_t> keyed;
         states.reserve(k.states.size());
         keyed.reserve(k.states.size());

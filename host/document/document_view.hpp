@@ -23,7 +23,7 @@ class DocumentView {
 
   private:
     ani::HugeVector<ani_model_desc> models_; // (at 100,000 models, 36 MB: huge_pages.hpp)
-    std::vector<std::vector<ani_model_state>> states_;
+    std::vector<ani::HugeVector<ani_model_state>> states_; // per keyframe, a state per model
     std::vector<std::vector<int32_t>> keyed_;
     std::vector<ani_keyframe_view> keyframes_;
     std::vector<ani_param_setting> params_;

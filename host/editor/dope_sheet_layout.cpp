@@ -157,7 +157,7 @@ std::int64_t retime_offset(const DopeSheetLayout &layout, const KeyRef &grabbed,
     return std::clamp<std::int64_t>(lands - grabbed.time_ms, lo, hi);
 }
 
-std::vector<ReleasedSpan> released_spans(const std::vector<ani_motion_segment> &segments) {
+std::vector<ReleasedSpan> released_spans(SegmentSpan segments) {
     std::vector<ReleasedSpan> spans;
     for (const ani_motion_segment &s : segments) {
         if (s.motion != ANI_MOTION_FREE && s.motion != ANI_MOTION_REST && s.motion != ANI_MOTION_CARRIED) continue;

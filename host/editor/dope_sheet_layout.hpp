@@ -8,6 +8,7 @@
 
 #include "document/key_edits.hpp"
 #include "editor/view_layout.hpp"
+#include "timeline/segment_store.hpp"
 
 #include <animator/huge_pages.hpp>
 #include <animator/physics.h>
@@ -130,7 +131,7 @@ struct ReleasedSpan {
     double t0 = 0.0, t1 = 0.0;
     int motion = ANI_MOTION_FREE;
 };
-std::vector<ReleasedSpan> released_spans(const std::vector<ani_motion_segment> &segments);
+std::vector<ReleasedSpan> released_spans(SegmentSpan segments);
 
 // A collision on the rows of its two models (a world boundary has no row), in the tracks.
 struct EventTick {

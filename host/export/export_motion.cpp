@@ -35,15 +35,6 @@ std::vector<double> breakpoints(const std::set<double> &cuts, double from, doubl
     return out;
 }
 
-// The motion segment that holds t (as the timeline looks it up).
-const ani_motion_segment *segment_at(const std::vector<ani_motion_segment> &list, double t) {
-    auto it =
-        std::upper_bound(list.begin(), list.end(), t,
-                         [](double time, const ani_motion_segment &s) { return time < s.t0; });
-    if (it == list.begin()) return list.empty() ? nullptr : &list.front();
-    return &*(it - 1);
-}
-
 class ModelMotion {
   public:
     ModelMotion(const Timeline &timeline, int model, const MotionKeyOptions &options,
@@ -74,7 +65,7 @@ class ModelMotion {
         for (size_t i = 0; i + 1 < times.size() || (i == 0 && times.size() == 1); ++i) {
             const double a = times[i], b = i + 1 < times.size() ? times[i + 1] : a;
             const double mid = 0.5 * (a + b);
-            const ani_motion_segment *s = root ? segment_at(segments, mid) : nullptr;
+            const ani_motion_segment *s = root ? timeline_.segment_at(m_, mid) : nullptr;
             Piece piece;
             if (!s || s->motion == ANI_MOTION_KEYED) {
                 piece.value = [this](double t) { return timeline_.keyed().model(m_, t).center; };

@@ -51,7 +51,7 @@ bool same_physics(const Model &a, const Model &b) {
 
 struct BakeContext {
     Timeline *timeline;
-    std::vector<std::vector<ani_motion_segment>> *segments;
+    SegmentStore *segments;
     EventList *events;
     const std::function<bool(double)> *progress;
     std::map<std::string, double> *counts;
@@ -61,9 +61,9 @@ struct BakeContext {
     const std::vector<Model> *models;
     std::string refused = {}; // a free-rotation segment the host cannot evaluate
     // The motion segments of this bake call in the order reported, in chunks (never moved as
-    // they grow), filed by model at its end (file_segments): each model's list then grows once
-    // per call, not at every segment (at 100,000 balls growing them one by one took a sixth of
-    // the bake).
+    // they grow), filed by model at its end (file_segments): each model's run in the store then
+    // grows once per call, not at every segment (at 100,000 balls growing them one by one took a
+    // sixth of the bake).
     // Chunks of 6 MB, in huge pages (huge_pages.hpp).
     static constexpr std::size_t kChunk = 1 << 16;
     std::vector<ani::HugeVector<ani_motion_segment>> log = {};
@@ -81,14 +81,9 @@ struct BakeContext {
         }
     }
     void file_segments() {
-        std::vector<uint32_t> count(segments->size(), 0);
+        std::vector<uint32_t> count(segments->models(), 0);
         each_logged([&](const ani_motion_segment &s) { ++count[s.model]; });
-        for (std::size_t m = 0; m < count.size(); ++m) {
-            auto &list = (*segments)[m];
-            const std::size_t need = list.size() + count[m];
-            if (count[m] > 0 && list.capacity() < need) list.reserve(std::max(need, 2 * list.capacity()));
-        }
-        each_logged([&](const ani_motion_segment &s) { (*segments)[s.model].push_back(s); });
+        segments->append(count, [&](auto &&put) { each_logged(put); });
         for (auto &chunk : log) chunk.clear();
         logged = 0;
     }
@@ -184,7 +179,7 @@ Timeline::Timeline(const Document &doc, PluginRegistry &plugins, const std::stri
       rotations_(doc_.models().size()), carried_(doc_.models().size()) {}
 
 const ani_motion_segment *Timeline::segment_at(int model, double t) const {
-    const auto &list = segments_[static_cast<size_t>(model)];
+    const SegmentSpan list = segments_[static_cast<size_t>(model)];
     auto it = std::upper_bound(list.begin(), list.end(), t,
                                [](double time, const ani_motion_segment &s) { return time < s.t0; });
     if (it == list.begin()) return list.empty() ? nullptr : &list.front();
@@ -350,11 +345,7 @@ void Timeline::set_meshes(const std::vector<std::shared_ptr<const Mesh>> &meshes
 }
 
 void Timeline::truncate(double from) {
-    for (auto &list : segments_) {
-        list.erase(std::remove_if(list.begin(), list.end(), [&](const ani_motion_segment &s) { return s.t0 >= from; }),
-                   list.end());
-        if (!list.empty() && list.back().t1 > from) list.back().t1 = from;
-    }
+    segments_.truncate(from);
     events_.erase(std::remove_if(events_.begin(), events_.end(), [&](const ani_collision_event &e) { return e.t >= from; }),
                   events_.end());
     for (auto &list : rotations_) {
@@ -450,7 +441,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     sink.context = &context;
     sink.segment = [](void *c, const ani_motion_segment *s) {
         auto *ctx = static_cast<BakeContext *>(c);
-        if (s->model < ctx->segments->size()) ctx->log_segment(*s);
+        if (s->model < ctx->segments->models()) ctx->log_segment(*s);
     };
     sink.event = [](void *c, const ani_collision_event *e) { static_cast<BakeContext *>(c)->events->push_back(*e); };
     sink.progress = [](void *c, double fraction) -> int32_t {
@@ -541,7 +532,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     };
     sink.overlap = [](void *c, const ani_overlap *o) {
         auto *ctx = static_cast<BakeContext *>(c);
-        const std::size_t n = ctx->segments->size();
+        const std::size_t n = ctx->segments->models();
         if (o->a < n && o->b < n && o->a != o->b && std::isfinite(o->t) && std::isfinite(o->depth))
             ctx->overlaps->push_back(*o);
     };
@@ -573,7 +564,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
 }
 
 BakedState Timeline::baked_state() const {
-    return BakedState{baked_any_ ? baked_until_ : 0.0, segments_, rotations_, carried_, events_, overlaps_};
+    return BakedState{baked_any_ ? baked_until_ : 0.0, segments_.lists(), rotations_, carried_, events_, overlaps_};
 }
 
 void Timeline::restore(BakedState state) {
@@ -581,7 +572,7 @@ void Timeline::restore(BakedState state) {
     if (state.segments.size() != n || state.rotations.size() != n || state.carried.size() != n)
         throw std::invalid_argument("a bake of " + std::to_string(state.segments.size()) + " models for a document of " +
                                     std::to_string(n));
-    segments_ = std::move(state.segments);
+    segments_.assign(state.segments);
     rotations_ = std::move(state.rotations);
     carried_ = std::move(state.carried);
     events_ = std::move(state.events);
@@ -679,8 +670,8 @@ void Timeline::edit(const Document &doc) {
     if (physics) physics_ = std::move(physics);
     if (new_interpolation) interpolators_ = std::move(interpolators);
     keyed_ = std::make_unique<KeyedMotion>(doc_, interpolators_);
-    if (doc_.models().size() != segments_.size()) {
-        segments_.assign(doc_.models().size(), {});
+    if (doc_.models().size() != segments_.models()) {
+        segments_.reset(doc_.models().size());
         rotations_.assign(doc_.models().size(), {});
         carried_.assign(doc_.models().size(), {});
         overlaps_.clear();

@@ -7,6 +7,7 @@
 #include "assets/mesh.hpp"
 #include "document/document_view.hpp"
 #include "timeline/keyed_motion.hpp"
+#include "timeline/segment_store.hpp"
 
 #include <animator/free_rotation.hpp>
 #include <animator/huge_pages.hpp>
@@ -147,7 +148,10 @@ class Timeline {
     // when the edit changes no motion (a colour, the camera).
     static double affected_from(const Document &before, const Document &after);
 
-    const std::vector<ani_motion_segment> &segments(int model) const { return segments_[static_cast<size_t>(model)]; }
+    // A model's motion segments in time order (valid until the next bake or edit), and the one
+    // that holds t (the last starting at or before t; the first before them all), or null.
+    SegmentSpan segments(int model) const { return segments_[static_cast<size_t>(model)]; }
+    const ani_motion_segment *segment_at(int model, double t) const;
     const EventList &events() const { return events_; }
     // The backend's rotation segments of a model (only for a backend that turns models).
     const std::vector<RotationSegment> &rotations(int model) const { return rotations_[static_cast<size_t>(model)]; }
@@ -179,7 +183,6 @@ class Timeline {
     // model turned about a pivot has the pivot's motion in s.
     void origin_at(int model, const ani_motion_segment &s, double t, glm::dvec3 &center,
                    glm::dvec3 &velocity) const;
-    const ani_motion_segment *segment_at(int model, double t) const;
     Placement placement(int model, double t, std::size_t depth) const;
     // Empty, or why the carried segments reported since `from` cannot be evaluated.
     std::string carried_refusal(double from) const;
@@ -197,7 +200,7 @@ class Timeline {
         ani_mesh_view view{};
     };
     std::vector<std::shared_ptr<const MeshView>> meshes_; // per model (shared by models with one mesh), null without
-    std::vector<std::vector<ani_motion_segment>> segments_;
+    SegmentStore segments_;
     EventList events_;
     std::vector<std::vector<RotationSegment>> rotations_; // per model, in time order
     std::vector<std::vector<ani_carried_segment>> carried_; // per model, in time order

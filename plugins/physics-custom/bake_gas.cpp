@@ -112,7 +112,7 @@ bool EventBake::gas_from_scene() {
     if (!options_.gas_lane || options_.broad_phase == BroadPhase::kAllPairs || t_begin_ < 0.0)
         return false;
     const uint32_t n = scene_->model_count;
-    std::vector<Material> materials;
+    ani::HugeVector<Material> materials; // (at 100,000 balls 10 MB: huge_pages.hpp)
     materials.reserve(n);
     std::vector<uint32_t> spheres, walls;
     double r = -1.0;

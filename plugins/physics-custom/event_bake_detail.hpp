@@ -26,6 +26,7 @@
 #include "turning_contact.hpp"
 #include "zeno.hpp"
 
+#include <animator/huge_pages.hpp>
 #include <animator/plugin_cpp.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -657,7 +658,7 @@ class EventBake {
     glm::dvec3 gravity_;
     std::vector<Body> bodies_;
     std::vector<int> mesh_bodies_; // the bodies that are not spheres (what can carry a model)
-    std::vector<Material> materials_; // every model's, by model index (read once, in classify)
+    ani::HugeVector<Material> materials_; // every model's, by model index (read once, in classify)
     std::vector<Obstacle> obstacles_;
     std::size_t triangle_count_ = 0;
     std::unique_ptr<UniformGrid> grid_; // with many bodies
