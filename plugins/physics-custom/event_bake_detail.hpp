@@ -647,7 +647,7 @@ class EventBake {
         ani_model_state state{};
         glm::dvec3 velocity{0.0};
     };
-    mutable std::vector<KeyedMemo> keyed_memo_; // per model, for scene_
+    mutable ani::HugeVector<KeyedMemo> keyed_memo_; // per model, for scene_ (100,000: 12 MB)
 
     // The data, shared by every stage.
     const ani_physics_scene *scene_; // this call's (the host builds it anew for each)
