@@ -11,14 +11,20 @@ void SegmentStore::reset(std::size_t models) {
     live_ = 0;
 }
 
+// The room a run takes after `more` segments: as now if they fit, else (it moves) exactly them
+// for a run that had none, or the larger of what it needs and twice its room.
+std::size_t SegmentStore::room_for(const Run &r, std::uint32_t more) {
+    if (more == 0 || r.size + more <= r.capacity) return r.capacity;
+    return r.capacity == 0 ? more : std::max<std::size_t>(r.size + more, 2 * std::size_t{r.capacity});
+}
+
 void SegmentStore::make_room(const std::vector<std::uint32_t> &count) {
     // The runs that must move (to the end, with room to grow) and the room they take.
     std::size_t moved = 0, added = 0;
     for (std::size_t m = 0; m < runs_.size(); ++m) {
-        const Run &r = runs_[m];
         added += count[m];
-        if (count[m] > 0 && r.size + count[m] > r.capacity)
-            moved += r.capacity == 0 ? count[m] : std::max<std::size_t>(r.size + count[m], 2 * std::size_t{r.capacity});
+        const std::size_t room = room_for(runs_[m], count[m]);
+        if (room != runs_[m].capacity) moved += room;
     }
     live_ += added;
     if (moved == 0) return;
@@ -32,14 +38,12 @@ void SegmentStore::make_room(const std::vector<std::uint32_t> &count) {
     pool_.resize(end + moved);
     for (std::size_t m = 0; m < runs_.size(); ++m) {
         Run &r = runs_[m];
-        if (count[m] == 0 || r.size + count[m] <= r.capacity) continue;
-        const std::size_t capacity =
-            r.capacity == 0 ? count[m] : std::max<std::size_t>(r.size + count[m], 2 * std::size_t{r.capacity});
-        std::copy(pool_.begin() + static_cast<std::ptrdiff_t>(r.begin),
-                  pool_.begin() + static_cast<std::ptrdiff_t>(r.begin + r.size), pool_.begin() + static_cast<std::ptrdiff_t>(end));
+        const std::size_t room = room_for(r, count[m]);
+        if (room == r.capacity) continue;
+        std::copy(pool_.data() + r.begin, pool_.data() + r.begin + r.size, pool_.data() + end);
         r.begin = end;
-        r.capacity = static_cast<std::uint32_t>(capacity);
-        end += capacity;
+        r.capacity = static_cast<std::uint32_t>(room);
+        end += room;
     }
 }
 
@@ -49,8 +53,7 @@ void SegmentStore::compact_with(const std::vector<std::uint32_t> &count) {
     std::size_t end = 0;
     for (std::size_t m = 0; m < runs_.size(); ++m) {
         Run &r = runs_[m];
-        std::copy(pool_.begin() + static_cast<std::ptrdiff_t>(r.begin),
-                  pool_.begin() + static_cast<std::ptrdiff_t>(r.begin + r.size), pool.begin() + static_cast<std::ptrdiff_t>(end));
+        std::copy(pool_.data() + r.begin, pool_.data() + r.begin + r.size, pool.data() + end);
         r.begin = end;
         r.capacity = r.size + count[m];
         end += r.capacity;

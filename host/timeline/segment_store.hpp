@@ -72,6 +72,7 @@ class SegmentStore {
         std::size_t begin = 0;
         std::uint32_t size = 0, capacity = 0;
     };
+    static std::size_t room_for(const Run &r, std::uint32_t more);
     // Runs with room for `count` more segments each (live_ counts them).
     void make_room(const std::vector<std::uint32_t> &count);
     void compact_with(const std::vector<std::uint32_t> &count);
