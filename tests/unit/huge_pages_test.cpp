@@ -5,10 +5,13 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <sys/resource.h>
 
 namespace {
 
@@ -80,4 +83,93 @@ TEST_CASE("a large HugeVector is backed by 2 MB pages where the kernel grants th
     CAPTURE(mode, kb);
     // The kernel may be short of free 2 MB blocks; it grants most of them on a machine at rest.
     CHECK(kb >= 2048);
+}
+
+namespace {
+
+long minor_faults() {
+    rusage r{};
+    getrusage(RUSAGE_SELF, &r);
+    return r.ru_minflt;
+}
+
+} // namespace
+
+TEST_CASE("freed huge-page arrays are kept and handed to the next ones, split and joined") {
+    if (!huge_pages_built()) {
+        WARN("built without huge pages (AddressSanitizer, or not Linux): nothing to check");
+        return;
+    }
+    ani::huge_pages_trim(); // what earlier tests left kept would be handed out first
+    constexpr std::size_t mb = std::size_t{1} << 20;
+    const std::size_t n16 = 16 * mb / sizeof(std::uint32_t), n8 = n16 / 2;
+    const std::uint32_t *first = nullptr;
+    long fresh = 0;
+    {
+        const long before = minor_faults();
+        ani::HugeVector<std::uint32_t> a(n16, 7u); // 16 MB, written
+        fresh = minor_faults() - before;
+        first = a.data();
+    }
+    // Handed out again: the same memory, written again without the kernel's first-touch faults
+    // (one a 2 MB page where huge pages are granted, one a 4 KB page where not).
+    const long before = minor_faults();
+    ani::HugeVector<std::uint32_t> b(n16, 9u);
+    const long again = minor_faults() - before;
+    CHECK(b.data() == first);
+    CAPTURE(fresh, again);
+    CHECK(again * 2 <= fresh);
+    CHECK(std::all_of(b.begin(), b.end(), [](std::uint32_t v) { return v == 9u; }));
+    b = ani::HugeVector<std::uint32_t>();
+    // Two halves from the kept 16 MB: the head, then the tail next to it; given back, they are
+    // joined, and the whole 16 MB is handed out at its start.
+    ani::HugeVector<std::uint32_t> head(n8, 1u), tail(n8, 2u);
+    CHECK(head.data() == first);
+    CHECK(tail.data() == first + n8);
+    CHECK(std::all_of(head.begin(), head.end(), [](std::uint32_t v) { return v == 1u; }));
+    CHECK(std::all_of(tail.begin(), tail.end(), [](std::uint32_t v) { return v == 2u; }));
+    head = ani::HugeVector<std::uint32_t>();
+    tail = ani::HugeVector<std::uint32_t>();
+    ani::HugeVector<std::uint32_t> whole(n16, 3u);
+    CHECK(whole.data() == first);
+    CHECK(std::all_of(whole.begin(), whole.end(), [](std::uint32_t v) { return v == 3u; }));
+}
+
+TEST_CASE("no more than the limit of freed huge-page memory is kept") {
+    if (!huge_pages_built()) {
+        WARN("built without huge pages (AddressSanitizer, or not Linux): nothing to check");
+        return;
+    }
+    const std::size_t limit = ani::detail::huge_page_cache().limit;
+    CHECK(limit <= ani::kHugePagesKept);
+    CHECK(limit >= 64 * (std::size_t{1} << 20));
+    {
+        // Arrays of 1.5 times the limit together (reserved, not written), all freed: the kept
+        // memory stays within it.
+        std::vector<ani::HugeVector<char>> arrays(6);
+        for (auto &a : arrays) a.reserve(limit / 4);
+    }
+    ani::detail::HugePageCache &c = ani::detail::huge_page_cache();
+    std::lock_guard<std::mutex> hold(c.lock);
+    std::size_t kept = 0;
+    for (const auto &k : c.kept) kept += k.second;
+    CHECK(kept == c.kept_bytes);
+    CHECK(kept <= limit);
+    CHECK(kept >= limit / 2); // and some were kept
+}
+
+TEST_CASE("trimming hands every kept huge-page mapping back") {
+    if (!huge_pages_built()) {
+        WARN("built without huge pages (AddressSanitizer, or not Linux): nothing to check");
+        return;
+    }
+    const void *at = nullptr;
+    {
+        ani::HugeVector<double> a(ani::kHugePagesFrom / sizeof(double), 1.0);
+        at = a.data();
+    }
+    CHECK(huge_kb_at(at) >= 0); // kept: still mapped
+    ani::huge_pages_trim();
+    CHECK(ani::detail::huge_page_cache().kept_bytes == 0);
+    CHECK(huge_kb_at(at) == -1); // unmapped
 }
