@@ -9,8 +9,8 @@ namespace interp {
 
 namespace {
 
-[[noreturn]] void fail(const std::string &plugin_id, const std::string &message) {
-    throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, plugin_id + ": " + message);
+[[noreturn]] void fail(const char *plugin_id, const std::string &message) {
+    throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, std::string(plugin_id) + ": " + message);
 }
 
 std::string number(double x) {
@@ -49,11 +49,11 @@ const char *channel_kind_name(int32_t kind) {
 
 int channel_components(int32_t kind) { return kind == ANI_CHANNEL_CAMERA_ROTATION ? 4 : 3; }
 
-void check_channel(const std::string &plugin_id, const ani_channel *channel,
+void check_channel(const char *plugin_id, const ani_channel *channel,
                    uint32_t handled_mask, bool uses_initial_rate) {
     if (channel == nullptr) fail(plugin_id, "the channel is null");
     if (channel->struct_size < sizeof(ani_channel))
-        throw ani::Failure(ANI_ERR_VERSION, plugin_id + ": the channel has size " +
+        throw ani::Failure(ANI_ERR_VERSION, std::string(plugin_id) + ": the channel has size " +
                                                 std::to_string(channel->struct_size) +
                                                 ", smaller than the " +
                                                 std::to_string(sizeof(ani_channel)) + " it needs");
@@ -69,29 +69,31 @@ void check_channel(const std::string &plugin_id, const ani_channel *channel,
     const int components = channel_components(kind);
     const ani_key *keys = channel->keys;
     for (uint32_t k = 0; k < channel->key_count; ++k) {
-        const std::string key = "key " + std::to_string(k);
+        // Named only in a message: evaluated for every model at every bake, the checks make no
+        // string when nothing is wrong.
+        const auto key = [k] { return "key " + std::to_string(k); };
         if (!std::isfinite(keys[k].time))
-            fail(plugin_id, key + " has a time that is not finite (" + number(keys[k].time) + ")");
+            fail(plugin_id, key() + " has a time that is not finite (" + number(keys[k].time) + ")");
         if (k > 0) {
             if (!(keys[k].time > keys[k - 1].time))
-                fail(plugin_id, key + " has time " + number(keys[k].time) + ", not after key " +
+                fail(plugin_id, key() + " has time " + number(keys[k].time) + ", not after key " +
                                     std::to_string(k - 1) + "'s " + number(keys[k - 1].time) +
                                     ": key times must increase strictly");
             if (!std::isfinite(keys[k].time - keys[k - 1].time))
-                fail(plugin_id, key + " is too far in time from key " + std::to_string(k - 1));
+                fail(plugin_id, key() + " is too far in time from key " + std::to_string(k - 1));
         }
         for (int c = 0; c < components; ++c) {
             if (!std::isfinite(keys[k].value[c]))
-                fail(plugin_id, key + " has value[" + std::to_string(c) +
+                fail(plugin_id, key() + " has value[" + std::to_string(c) +
                                     "] that is not finite (" + number(keys[k].value[c]) + ")");
             if (kind == ANI_CHANNEL_ANGLES && !std::isfinite(keys[k].turn[c]))
-                fail(plugin_id, key + " has turn[" + std::to_string(c) + "] that is not finite");
+                fail(plugin_id, key() + " has turn[" + std::to_string(c) + "] that is not finite");
         }
         if (kind == ANI_CHANNEL_CAMERA_ROTATION) {
             const double *q = keys[k].value;
             const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
             if (!(std::fabs(n - 1.0) <= kUnitTolerance))
-                fail(plugin_id, key + " is not a unit quaternion (its length is " + number(n) + ")");
+                fail(plugin_id, key() + " is not a unit quaternion (its length is " + number(n) + ")");
         }
     }
     if (uses_initial_rate)
@@ -100,7 +102,7 @@ void check_channel(const std::string &plugin_id, const ani_channel *channel,
                 fail(plugin_id, "initial_rate[" + std::to_string(c) + "] is not finite");
 }
 
-void check_times(const std::string &plugin_id, const double *times, uint32_t count,
+void check_times(const char *plugin_id, const double *times, uint32_t count,
                  const double *values, const double *rates) {
     if (count == 0) return;
     if (times == nullptr) fail(plugin_id, "times is null");
@@ -116,7 +118,7 @@ void check_times(const std::string &plugin_id, const double *times, uint32_t cou
     }
 }
 
-void check_outputs(const std::string &plugin_id, const double *values, const double *rates,
+void check_outputs(const char *plugin_id, const double *values, const double *rates,
                    uint32_t count) {
     for (size_t i = 0; i < 4 * static_cast<size_t>(count); ++i)
         if (!std::isfinite(values[i]) || !std::isfinite(rates[i]))

@@ -19,16 +19,16 @@ int channel_components(int32_t kind);
 // it has at least one key; its key times are finite and strictly increasing with finite gaps;
 // the values it uses are finite; ANGLES turns are finite; CAMERA_ROTATION values are unit
 // quaternions (to 1e-4); and, when `uses_initial_rate`, initial_rate[0..2] is finite.
-void check_channel(const std::string &plugin_id, const ani_channel *channel,
+void check_channel(const char *plugin_id, const ani_channel *channel,
                    uint32_t handled_mask, bool uses_initial_rate);
 
 // The evaluate call's other arguments: when count > 0 no pointer is null, and the times are
 // finite and in non-decreasing order.
-void check_times(const std::string &plugin_id, const double *times, uint32_t count,
+void check_times(const char *plugin_id, const double *times, uint32_t count,
                  const double *values, const double *rates);
 
 // Every value and rate written is finite; enormous (finite) inputs can still overflow.
-void check_outputs(const std::string &plugin_id, const double *values, const double *rates,
+void check_outputs(const char *plugin_id, const double *values, const double *rates,
                    uint32_t count);
 
 } // namespace interp
