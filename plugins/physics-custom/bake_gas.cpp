@@ -237,6 +237,7 @@ void EventBake::fold_gas_counts() {
     count_.skipped += c.skipped - gas_counted_.skipped;
     count_.predictions += c.predictions - gas_counted_.predictions;
     count_.stale += c.stale - gas_counted_.stale;
+    count_.seconds += c.seconds - gas_counted_.seconds;
     count_.crossings += c.crossings - gas_counted_.crossings;
     count_.lane += c.events - gas_counted_.events;
     gas_counted_ = c;

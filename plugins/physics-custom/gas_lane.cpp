@@ -123,15 +123,20 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
 // it, is left to the general engine too.
 bool GasLane::apart(double now) const {
     const double closest = (r_ + r_) * (1.0 - 1e-6), beside = r_ * (1.0 + 1e-6);
+    const double closest2 = closest * closest;
     for (uint32_t i = 0; i < s_.size(); ++i) {
         const Event &e = e_[i];
         for (int a = 0; a < 3; ++a)
             if (e.cell[a] < 0 || e.cell[a] >= grid_.counts[a]) return false;
         const glm::dvec3 c = at(s_[i], now);
+        // Each pair once (from its lower index), squared distances (no root a pair).
         for (int q = 0; q < 27; ++q)
-            for (uint32_t k = head_[e.index + around_[q]]; k != kNone; k = s_[k].next)
-                if (k != i && glm::length(c - at(s_[k], now)) < closest) return false;
-        for (uint32_t k = e.near_from; k < e.near_to; ++k) {
+            for (uint32_t k = head_[e.index + around_[q]]; k != kNone; k = s_[k].next) {
+                if (k <= i) continue;
+                const glm::dvec3 d = c - at(s_[k], now);
+                if (glm::dot(d, d) < closest2) return false;
+            }
+        for (uint32_t k = near_from_[e.index]; k < near_from_[e.index + 1]; ++k) {
             const Triangle &tri = triangles_[near_[k]];
             if (glm::length(c - closest_point_on_triangle(c, tri.a, tri.b, tri.c)) < beside)
                 return false;
@@ -168,8 +173,6 @@ void GasLane::place(uint32_t i, const std::array<int64_t, 3> &c) {
     Event &e = e_[i];
     for (int a = 0; a < 3; ++a) e.cell[a] = static_cast<int32_t>(c[a]);
     e.index = static_cast<uint32_t>(cell_index(c));
-    e.near_from = near_from_[e.index];
-    e.near_to = near_from_[e.index + 1];
 }
 
 void GasLane::link(uint32_t i) {
@@ -292,20 +295,27 @@ void roots(Batch &b, const Scanner &s) {
 
 } // namespace
 
-// The earliest collision of i with the spheres of the cells at `offsets` from its cell, if
-// earlier than the pair part of its event (`all`: that part starts afresh). The candidates are
+// The earliest and second-earliest collisions of i with the spheres of the cells at `offsets`
+// from its cell, if earlier than the pair part of its event (`all`: that part starts afresh). The candidates are
 // gathered in batches and their roots computed together (roots: without branches, which would
 // be mispredicted, and several at a time); the earliest is taken in the order they were found.
 void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bool all) {
     const Sphere &a = s_[i];
     Event &e = e_[i];
-    if (all) {
-        e.pair_time = kInf;
-        e.partner = kNone;
+    // The earliest and second-earliest collisions, from now (rel) and when (at: those the event
+    // has keep their time to the bit): the event's, then any found earlier. Roots are looked for
+    // before the second.
+    struct Pick {
+        double rel, at;
+        uint32_t sphere, count;
+    };
+    Pick earliest{kInf, kInf, kNone, 0}, second{kInf, kInf, kNone, 0};
+    if (!all) {
+        earliest = {e.pair_time - now, e.pair_time, e.partner, e.partner_count};
+        second = {e.second_time - now, e.second_time, e.second, e.second_count};
     }
     const glm::dvec3 here = at(a, now), v = velocity(a, now);
-    Scanner s{now, here.x, here.y, here.z, v.x, v.y, v.z, reach2_, e.pair_time - now};
-    uint32_t partner = kNone, partner_count = 0;
+    Scanner s{now, here.x, here.y, here.z, v.x, v.y, v.z, reach2_, second.rel};
     std::size_t tests = 0;
     Batch batch;
     const auto take = [&] {
@@ -313,14 +323,20 @@ void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bo
         for (int n = batch.n; n % 4 != 0; ++n) batch.set(n, here, v, now);
         const int found = batch.n;
         batch.n = (batch.n + 3) / 4 * 4;
+        s.horizon = second.rel;
         roots(batch, s);
         batch.n = found;
-        for (int k = 0; k < batch.n; ++k)
-            if (batch.t[k] < s.horizon) {
-                s.horizon = batch.t[k];
-                partner = batch.sphere[k];
-                partner_count = batch.count[k];
+        for (int k = 0; k < batch.n; ++k) {
+            const double t = batch.t[k];
+            if (!(t < second.rel)) continue;
+            const Pick found_one{t, now + t, batch.sphere[k], batch.count[k]};
+            if (t < earliest.rel) { // (ties: the one found first stays the earliest)
+                second = earliest;
+                earliest = found_one;
+            } else {
+                second = found_one;
             }
+        }
         tests += static_cast<std::size_t>(batch.n);
         batch.n = 0;
     };
@@ -352,11 +368,12 @@ void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bo
     ++counts_.predictions;
     counts_.done += tests;
     if (all) counts_.skipped += s_.size() - 1 - tests;
-    if (partner != kNone) {
-        e.pair_time = now + s.horizon;
-        e.partner = partner;
-        e.partner_count = partner_count;
-    }
+    e.pair_time = earliest.at;
+    e.partner = earliest.sphere;
+    e.partner_count = earliest.count;
+    e.second_time = second.at;
+    e.second = second.sphere;
+    e.second_count = second.count;
 }
 
 void GasLane::predict_pairs(uint32_t i, double now) {
@@ -389,7 +406,7 @@ void GasLane::predict_move(uint32_t i, double now) {
         }
     }
     e.move_time = now + limit;
-    const uint32_t from = e.near_from, to = e.near_to;
+    const uint32_t from = near_from_[e.index], to = near_from_[e.index + 1];
     if (from == to) return;
     const Path here{c, v, glm::dvec3(0.0)};
     Box reach = swept_box(here, limit);
@@ -479,11 +496,12 @@ void GasLane::predict_fall(uint32_t i, double now, const Path &here) {
     e.move_time = now + limit;
     e.axis = static_cast<int8_t>(exit->axis);
     e.direction = static_cast<int8_t>(exit->direction);
-    if (e.near_from == e.near_to) return;
+    const uint32_t from = near_from_[e.index], to = near_from_[e.index + 1];
+    if (from == to) return;
     Box reach = swept_box(here, limit);
     reach.lo -= glm::dvec3(r_);
     reach.hi += glm::dvec3(r_);
-    for (uint32_t k = e.near_from; k < e.near_to; ++k) {
+    for (uint32_t k = from; k < to; ++k) {
         const Triangle &tri = triangles_[near_[k]];
         if (!reach.overlaps(tri.box)) continue;
         ++counts_.done;
@@ -512,7 +530,7 @@ bool GasLane::grazing(const glm::dvec3 &relative, const glm::dvec3 &n) const {
 bool GasLane::left_touching(uint32_t i, const glm::dvec3 &c, const glm::dvec3 &v) const {
     const Event &e = e_[i];
     const double tol = 1e-6 * r_;
-    for (uint32_t k = e.near_from; k < e.near_to; ++k) {
+    for (uint32_t k = near_from_[e.index]; k < near_from_[e.index + 1]; ++k) {
         const Triangle &tri = triangles_[near_[k]];
         if (tri.normal == glm::dvec3(0.0) ||
             !(std::abs(glm::dot(tri.normal, c) - tri.offset - r_) <= tol))
@@ -621,9 +639,22 @@ bool GasLane::run(double t_begin, double t_end, Sink &sink) {
         if (e.pair_time <= e.move_time) {
             const uint32_t j = e.partner;
             __builtin_prefetch(&e_[j]);           // (read after the collision: fetched meanwhile)
-            if (s_[j].count != e.partner_count) { // j changed course since: predict i anew
+            if (s_[j].count != e.partner_count) { // j changed course since
                 ++counts_.stale;
-                predict_pairs(i, t);
+                // The second-earliest partner, if it has not changed course either, is the next
+                // (those that have hold their own events with i, predicted since); else i is
+                // predicted anew.
+                const uint32_t k = e.second;
+                if (k != kNone && s_[k].count == e.second_count) {
+                    ++counts_.seconds;
+                    e.pair_time = std::max(e.second_time, t); // (found later: rounding)
+                    e.partner = k;
+                    e.partner_count = e.second_count;
+                    e.second_time = kInf;
+                    e.second = kNone;
+                } else {
+                    predict_pairs(i, t);
+                }
             } else {
                 if (!collide(i, j, t, sink)) {
                     stopped_at_ = t;

@@ -74,6 +74,7 @@ class GasLane {
     };
     struct Counts {
         std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0, events = 0;
+        std::size_t seconds = 0; // stale events answered by the second-earliest partner, unscanned
     };
 
     // Every sphere must start inside the grid's cells and apart from the others and the
@@ -110,18 +111,22 @@ class GasLane {
         uint32_t next;  // the next sphere in its cell, or kNone
     };
     // A sphere's next event: the earlier of its earliest pair collision and its next move (a
-    // cell crossing, or a static model within its cell); and its cell, with that cell's
-    // triangles (near_[near_from, near_to)). One cache line, read at its events.
+    // cell crossing, or a static model within its cell); its second-earliest pair collision (with
+    // another sphere: when the earliest's partner changes course first, it is the next one, if its
+    // own partner has not changed course either); and its cell (its triangles are
+    // near_[near_from_[index], near_from_[index + 1])). One cache line, read at its events.
     struct alignas(64) Event {
         double pair_time = kInf;
         uint32_t partner = kNone, partner_count = 0;
         double move_time = kInf;
+        double second_time = kInf;
+        uint32_t second = kNone, second_count = 0;
         std::array<int32_t, 3> cell{};
-        uint32_t index = 0; // of its cell in head_
-        uint32_t near_from = 0, near_to = 0;
+        uint32_t index = 0;        // of its cell in head_
         uint32_t triangle = kNone; // met at move_time, with contact_ (or kNone: a crossing)
         int8_t axis = 0, direction = 0;
     };
+    static_assert(sizeof(Event) == 64, "a sphere's event is one cache line");
 
     glm::dvec3 at(const Sphere &p, double t) const;
     glm::dvec3 velocity(const Sphere &p, double t) const;

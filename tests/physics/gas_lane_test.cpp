@@ -130,3 +130,26 @@ TEST_CASE("the gas lane bounces a ball off a face and stops where a ball leaves 
     // The grid's last cell along x ends at -5 + 7 * 1.5 = 5.5: reached after 3.5 s.
     CHECK(lane.stopped_at() == 3.5);
 }
+
+TEST_CASE("the gas lane takes balls only when every pair is apart by the general engine's "
+          "allowance") {
+    // Radius 0.5: two balls closer than 2r (1 - 1e-6) overlap for the general engine, and are not
+    // the lane's; farther, they are. Each pair whichever ball comes first, in one cell or two.
+    const auto admissible = [](glm::dvec3 p, glm::dvec3 q) {
+        return GasLane(0.5, glm::dvec3(0.0), grid(), {},
+                       {ball(1, p, glm::dvec3(0.0)), ball(2, {3.0, 3.0, 3.0}, glm::dvec3(0.0)),
+                        ball(3, q, glm::dvec3(0.0))},
+                       0.0, true)
+            .admissible();
+    };
+    const double inside = 1.0 * (1.0 - 2e-6), outside = 1.0 * (1.0 - 0.5e-6);
+    for (const glm::dvec3 at : {glm::dvec3(0.1, 0.2, 0.3), glm::dvec3(-0.7, -0.05, 0.0)}) {
+        for (const glm::dvec3 dir : {glm::dvec3(1.0, 0.0, 0.0), glm::normalize(glm::dvec3(1.0, -2.0, 2.0))}) {
+            CAPTURE(at.x, dir.y);
+            CHECK_FALSE(admissible(at, at + inside * dir));
+            CHECK_FALSE(admissible(at + inside * dir, at));
+            CHECK(admissible(at, at + outside * dir));
+            CHECK(admissible(at + outside * dir, at));
+        }
+    }
+}

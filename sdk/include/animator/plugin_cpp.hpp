@@ -26,6 +26,9 @@ struct Failure : std::exception {
     std::string message;
 };
 
+inline ani_status_code set_status(ani_status *status, ani_status_code code, const char *message) {
+    return ani_status_set(status, code, message);
+}
 inline ani_status_code set_status(ani_status *status, ani_status_code code,
                                   const std::string &message) {
     return ani_status_set(status, code, message.c_str());
