@@ -93,6 +93,7 @@ bool EventBake::enter_gas_lane() {
     grid.origin = grid_->origin();
     grid.cell = grid_->cell_size();
     grid.counts = grid_->counts();
+    if (!GasLane::fits(grid)) return false;
     // The lane keeps its own cells: the general grid is emptied until the lane hands back.
     for (size_t i = 0; i < bodies_.size(); ++i) unfile(static_cast<int>(i));
     gas_ = std::make_unique<GasLane>(r, a, grid, lane_triangles(), spheres, t_begin_);

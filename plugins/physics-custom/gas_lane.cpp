@@ -38,6 +38,10 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
                  bool check)
     : r_(radius), reach2_((radius + radius) * (radius + radius)), a_(acceleration),
       falls_(acceleration != glm::dvec3(0.0)), grid_(grid), triangles_(std::move(triangles)) {
+    if (!fits(grid_)) {
+        admissible_ = false;
+        return;
+    }
     const std::size_t n = spheres.size();
     s_.resize(n);
     e_.assign(n, Event{});
@@ -136,7 +140,7 @@ bool GasLane::apart(double now) const {
                 const glm::dvec3 d = c - at(s_[k], now);
                 if (glm::dot(d, d) < closest2) return false;
             }
-        for (uint32_t k = near_from_[e.index]; k < near_from_[e.index + 1]; ++k) {
+        for (uint32_t k = e.near_from; k < e.near_to; ++k) {
             const Triangle &tri = triangles_[near_[k]];
             if (glm::length(c - closest_point_on_triangle(c, tri.a, tri.b, tri.c)) < beside)
                 return false;
@@ -171,8 +175,10 @@ int64_t GasLane::cell_index(const std::array<int64_t, 3> &c) const {
 
 void GasLane::place(uint32_t i, const std::array<int64_t, 3> &c) {
     Event &e = e_[i];
-    for (int a = 0; a < 3; ++a) e.cell[a] = static_cast<int32_t>(c[a]);
+    for (int a = 0; a < 3; ++a) e.cell[a] = static_cast<int16_t>(c[a]);
     e.index = static_cast<uint32_t>(cell_index(c));
+    e.near_from = near_from_[e.index];
+    e.near_to = near_from_[e.index + 1];
 }
 
 void GasLane::link(uint32_t i) {
@@ -406,7 +412,7 @@ void GasLane::predict_move(uint32_t i, double now) {
         }
     }
     e.move_time = now + limit;
-    const uint32_t from = near_from_[e.index], to = near_from_[e.index + 1];
+    const uint32_t from = e.near_from, to = e.near_to;
     if (from == to) return;
     const Path here{c, v, glm::dvec3(0.0)};
     Box reach = swept_box(here, limit);
@@ -496,7 +502,7 @@ void GasLane::predict_fall(uint32_t i, double now, const Path &here) {
     e.move_time = now + limit;
     e.axis = static_cast<int8_t>(exit->axis);
     e.direction = static_cast<int8_t>(exit->direction);
-    const uint32_t from = near_from_[e.index], to = near_from_[e.index + 1];
+    const uint32_t from = e.near_from, to = e.near_to;
     if (from == to) return;
     Box reach = swept_box(here, limit);
     reach.lo -= glm::dvec3(r_);
@@ -530,7 +536,7 @@ bool GasLane::grazing(const glm::dvec3 &relative, const glm::dvec3 &n) const {
 bool GasLane::left_touching(uint32_t i, const glm::dvec3 &c, const glm::dvec3 &v) const {
     const Event &e = e_[i];
     const double tol = 1e-6 * r_;
-    for (uint32_t k = near_from_[e.index]; k < near_from_[e.index + 1]; ++k) {
+    for (uint32_t k = e.near_from; k < e.near_to; ++k) {
         const Triangle &tri = triangles_[near_[k]];
         if (tri.normal == glm::dvec3(0.0) ||
             !(std::abs(glm::dot(tri.normal, c) - tri.offset - r_) <= tol))
