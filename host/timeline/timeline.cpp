@@ -68,11 +68,13 @@ struct BakeContext {
     static constexpr std::size_t kChunk = 1 << 16;
     std::vector<ani::HugeVector<ani_motion_segment>> log = {};
     std::size_t logged = 0;
+    std::vector<uint32_t> logged_of = std::vector<uint32_t>(segments->models(), 0); // per model
 
     void log_segment(const ani_motion_segment &s) {
         if (logged == log.size() * kChunk) log.emplace_back().reserve(kChunk);
         log[logged / kChunk].push_back(s);
         ++logged;
+        ++logged_of[s.model]; // (counted as they come: no pass over the log to count them)
     }
     template <class F> void each_logged(F &&f) const {
         for (std::size_t k = 0; k < logged; k += kChunk) {
@@ -81,11 +83,10 @@ struct BakeContext {
         }
     }
     void file_segments() {
-        std::vector<uint32_t> count(segments->models(), 0);
-        each_logged([&](const ani_motion_segment &s) { ++count[s.model]; });
-        segments->append(count, [&](auto &&put) { each_logged(put); });
+        segments->append(logged_of, [&](auto &&put) { each_logged(put); });
         for (auto &chunk : log) chunk.clear();
         logged = 0;
+        std::fill(logged_of.begin(), logged_of.end(), 0u);
     }
 
     // Refuses the bake for model `model`'s segment of `kind` at t0 when `why` says something.
