@@ -112,9 +112,9 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
         admissible_ = false;
         return;
     }
+    predict_all_pairs(now);
     std::vector<double> times(n);
     for (uint32_t i = 0; i < n; ++i) {
-        predict_pairs(i, now);
         predict_move(i, now);
         times[i] = std::min(e_[i].pair_time, e_[i].move_time);
     }
@@ -384,6 +384,74 @@ void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bo
 
 void GasLane::predict_pairs(uint32_t i, double now) {
     scan(i, now, around_, 27, true);
+}
+
+// Every sphere's earliest and second-earliest collisions at the start, each pair's root computed
+// once (a scan per sphere computed each twice): each sphere scans its own cell's later spheres and
+// the 13 cells after its own (around_[14..26], the others' mirror images), and offers the root to
+// both. The root is the same number from either side (d and e change sign, their products do
+// not), so every sphere gets the times its own scan would have found.
+void GasLane::predict_all_pairs(double now) {
+    const auto offer = [](Event &ev, double at, uint32_t who, uint32_t count) {
+        if (!(at < ev.second_time)) return;
+        if (at < ev.pair_time) { // (ties: the one offered first stays the earliest)
+            ev.second_time = ev.pair_time;
+            ev.second = ev.partner;
+            ev.second_count = ev.partner_count;
+            ev.pair_time = at;
+            ev.partner = who;
+            ev.partner_count = count;
+        } else {
+            ev.second_time = at;
+            ev.second = who;
+            ev.second_count = count;
+        }
+    };
+    std::size_t tests = 0;
+    Batch batch;
+    for (uint32_t i = 0; i < s_.size(); ++i) {
+        const Sphere &a = s_[i];
+        const glm::dvec3 here = at(a, now), v = velocity(a, now);
+        const Scanner s{now, here.x, here.y, here.z, v.x, v.y, v.z, reach2_, kInf};
+        const auto take = [&] {
+            for (int n = batch.n; n % 4 != 0; ++n) batch.set(n, here, v, now);
+            const int found = batch.n;
+            batch.n = (batch.n + 3) / 4 * 4;
+            roots(batch, s);
+            batch.n = found;
+            for (int k = 0; k < batch.n; ++k) {
+                const double t = batch.t[k];
+                if (!(t < kInf)) continue;
+                offer(e_[i], now + t, batch.sphere[k], batch.count[k]);
+                offer(e_[batch.sphere[k]], now + t, i, a.count);
+            }
+            tests += static_cast<std::size_t>(batch.n);
+            batch.n = 0;
+        };
+        const auto gather = [&](uint32_t k) {
+            const Sphere &o = s_[k];
+            const int n = batch.n++;
+            if (falls_)
+                batch.set(n, at(o, now), velocity(o, now), now);
+            else
+                batch.set(n, vec(o.x), vec(o.v), o.t0);
+            batch.sphere[n] = k;
+            batch.count[n] = o.count;
+            if (batch.n == Batch::kSize) take();
+        };
+        const int64_t cell = e_[i].index;
+        for (uint32_t k = head_[static_cast<std::size_t>(cell)]; k != kNone; k = s_[k].next)
+            if (k > i) gather(k);
+        for (int q = 14; q < 27; ++q)
+            for (uint32_t k = head_[static_cast<std::size_t>(cell + around_[q])]; k != kNone;
+                 k = s_[k].next)
+                gather(k);
+        take();
+    }
+    const std::size_t n = s_.size();
+    counts_.predictions += n;
+    counts_.done += tests;
+    counts_.skipped += n * (n - 1) / 2 - tests;
 }
 
 // Its next move from now: out of its cell, or into a static model's triangle listed for its cell

@@ -143,6 +143,7 @@ class GasLane {
     void place(uint32_t i, const std::array<int64_t, 3> &c); // in cell c (its Event's fields)
     void scan(uint32_t i, double now, const int64_t *offsets, int count, bool all);
     void predict_pairs(uint32_t i, double now);
+    void predict_all_pairs(double now); // every sphere's, at the start
     void predict_move(uint32_t i, double now);
     void predict_fall(uint32_t i, double now, const Path &here);
     void schedule(uint32_t i);
