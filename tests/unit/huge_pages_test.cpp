@@ -85,6 +85,7 @@ TEST_CASE("a large HugeVector is backed by 2 MB pages where the kernel grants th
     CHECK(kb >= 2048);
 }
 
+#ifdef ANI_HUGE_PAGES
 namespace {
 
 long minor_faults() {
@@ -94,12 +95,12 @@ long minor_faults() {
 }
 
 } // namespace
+#endif
 
 TEST_CASE("freed huge-page arrays are kept and handed to the next ones, split and joined") {
-    if (!huge_pages_built()) {
-        WARN("built without huge pages (AddressSanitizer, or not Linux): nothing to check");
-        return;
-    }
+#ifndef ANI_HUGE_PAGES
+    WARN("built without huge pages (AddressSanitizer, or not Linux): nothing to check");
+#else
     ani::huge_pages_trim(); // what earlier tests left kept would be handed out first
     constexpr std::size_t mb = std::size_t{1} << 20;
     const std::size_t n16 = 16 * mb / sizeof(std::uint32_t), n8 = n16 / 2;
@@ -133,13 +134,13 @@ TEST_CASE("freed huge-page arrays are kept and handed to the next ones, split an
     ani::HugeVector<std::uint32_t> whole(n16, 3u);
     CHECK(whole.data() == first);
     CHECK(std::all_of(whole.begin(), whole.end(), [](std::uint32_t v) { return v == 3u; }));
+#endif
 }
 
 TEST_CASE("no more than the limit of freed huge-page memory is kept") {
-    if (!huge_pages_built()) {
-        WARN("built without huge pages (AddressSanitizer, or not Linux): nothing to check");
-        return;
-    }
+#ifndef ANI_HUGE_PAGES
+    WARN("built without huge pages (AddressSanitizer, or not Linux): nothing to check");
+#else
     const std::size_t limit = ani::detail::huge_page_cache().limit;
     CHECK(limit <= ani::kHugePagesKept);
     CHECK(limit >= 64 * (std::size_t{1} << 20));
@@ -156,13 +157,13 @@ TEST_CASE("no more than the limit of freed huge-page memory is kept") {
     CHECK(kept == c.kept_bytes);
     CHECK(kept <= limit);
     CHECK(kept >= limit / 2); // and some were kept
+#endif
 }
 
 TEST_CASE("trimming hands every kept huge-page mapping back") {
-    if (!huge_pages_built()) {
-        WARN("built without huge pages (AddressSanitizer, or not Linux): nothing to check");
-        return;
-    }
+#ifndef ANI_HUGE_PAGES
+    WARN("built without huge pages (AddressSanitizer, or not Linux): nothing to check");
+#else
     const void *at = nullptr;
     {
         ani::HugeVector<double> a(ani::kHugePagesFrom / sizeof(double), 1.0);
@@ -172,4 +173,5 @@ TEST_CASE("trimming hands every kept huge-page mapping back") {
     ani::huge_pages_trim();
     CHECK(ani::detail::huge_page_cache().kept_bytes == 0);
     CHECK(huge_kb_at(at) == -1); // unmapped
+#endif
 }

@@ -150,6 +150,8 @@ inline void huge_pages_trim() {
     c.kept.clear();
     c.kept_bytes = 0;
 }
+#else
+inline void huge_pages_trim() {} // (nothing is kept without huge pages)
 #endif
 
 // The standard allocator, but for arrays of kHugePagesFrom bytes or more (above): those mapped
