@@ -302,9 +302,10 @@ void roots(Batch &b, const Scanner &s) {
 } // namespace
 
 // The earliest and second-earliest collisions of i with the spheres of the cells at `offsets`
-// from its cell, if earlier than the pair part of its event (`all`: that part starts afresh). The candidates are
-// gathered in batches and their roots computed together (roots: without branches, which would
-// be mispredicted, and several at a time); the earliest is taken in the order they were found.
+// from its cell, if earlier than the pair part of its event (`all`: that part starts afresh).
+// The candidates are gathered in batches and their roots computed together (roots: without
+// branches, which would be mispredicted, and several at a time); the earliest is taken in the
+// order they were found.
 void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bool all) {
     const Sphere &a = s_[i];
     Event &e = e_[i];
@@ -570,12 +571,11 @@ void GasLane::predict_fall(uint32_t i, double now, const Path &here) {
     e.move_time = now + limit;
     e.axis = static_cast<int8_t>(exit->axis);
     e.direction = static_cast<int8_t>(exit->direction);
-    const uint32_t from = e.near_from, to = e.near_to;
-    if (from == to) return;
+    if (e.near_from == e.near_to) return;
     Box reach = swept_box(here, limit);
     reach.lo -= glm::dvec3(r_);
     reach.hi += glm::dvec3(r_);
-    for (uint32_t k = from; k < to; ++k) {
+    for (uint32_t k = e.near_from; k < e.near_to; ++k) {
         const Triangle &tri = triangles_[near_[k]];
         if (!reach.overlaps(tri.box)) continue;
         ++counts_.done;
@@ -721,7 +721,8 @@ bool GasLane::run(double t_begin, double t_end, Sink &sink) {
                 const uint32_t k = e.second;
                 if (k != kNone && s_[k].count == e.second_count) {
                     ++counts_.seconds;
-                    e.pair_time = std::max(e.second_time, t); // (found later: rounding)
+                    // (Found in an earlier scan, its time may round a hair before now.)
+                    e.pair_time = std::max(e.second_time, t);
                     e.partner = k;
                     e.partner_count = e.second_count;
                     e.second_time = kInf;

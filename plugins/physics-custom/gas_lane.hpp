@@ -10,8 +10,9 @@
 // - each sphere's hot data in one 64-byte record (its segment's start, velocity and start time,
 //   a collision counter, the next sphere in its cell), the rest in arrays read only at events;
 // - one event per sphere (its earliest pair collision, and its next move: a cell crossing or a
-//   static model), made stale lazily by the partner's counter; a crossing keeps the pair part
-//   and scans only the 9 cells newly in reach;
+//   static model), made stale lazily by the partner's counter, with its second-earliest pair
+//   collision to go on with when it is; a crossing keeps the pair part and scans only the 9
+//   cells newly in reach; the first predictions compute each pair once;
 // - a scan's candidates gathered and their roots computed four at a time with AVX2 where the
 //   processor has it (the same operations in the same order as one at a time);
 // - the static models' triangles listed per cell once, so a sphere far from every wall tests
