@@ -301,6 +301,20 @@ void roots(Batch &b, const Scanner &s) {
 
 } // namespace
 
+// Sphere k as a candidate of a scan at `now` (moved to now when paths fall: the roots then move
+// it by 0 s); true when the batch is full.
+template <class B> bool GasLane::gather(B &batch, uint32_t k, double now) const {
+    const Sphere &o = s_[k];
+    const int n = batch.n++;
+    if (falls_)
+        batch.set(n, at(o, now), velocity(o, now), now);
+    else
+        batch.set(n, vec(o.x), vec(o.v), o.t0);
+    batch.sphere[n] = k;
+    batch.count[n] = o.count;
+    return batch.n == B::kSize;
+}
+
 // The earliest and second-earliest collisions of i with the spheres of the cells at `offsets`
 // from its cell, if earlier than the pair part of its event (`all`: that part starts afresh).
 // The candidates are gathered in batches and their roots computed together (roots: without
@@ -359,18 +373,8 @@ void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bo
         m += k != kNone;
     }
     for (int q = 0; q < m; ++q)
-        for (uint32_t k = first[q]; k != kNone; k = s_[k].next) {
-            if (k == i) continue;
-            const Sphere &o = s_[k];
-            const int n = batch.n++;
-            if (falls_) // moved to now here (the roots then move it by 0 s)
-                batch.set(n, at(o, now), velocity(o, now), now);
-            else
-                batch.set(n, vec(o.x), vec(o.v), o.t0);
-            batch.sphere[n] = k;
-            batch.count[n] = o.count;
-            if (batch.n == Batch::kSize) take();
-        }
+        for (uint32_t k = first[q]; k != kNone; k = s_[k].next)
+            if (k != i && gather(batch, k, now)) take();
     take();
     ++counts_.predictions;
     counts_.done += tests;
@@ -429,24 +433,13 @@ void GasLane::predict_all_pairs(double now) {
             tests += static_cast<std::size_t>(batch.n);
             batch.n = 0;
         };
-        const auto gather = [&](uint32_t k) {
-            const Sphere &o = s_[k];
-            const int n = batch.n++;
-            if (falls_)
-                batch.set(n, at(o, now), velocity(o, now), now);
-            else
-                batch.set(n, vec(o.x), vec(o.v), o.t0);
-            batch.sphere[n] = k;
-            batch.count[n] = o.count;
-            if (batch.n == Batch::kSize) take();
-        };
         const int64_t cell = e_[i].index;
         for (uint32_t k = head_[static_cast<std::size_t>(cell)]; k != kNone; k = s_[k].next)
-            if (k > i) gather(k);
+            if (k > i && gather(batch, k, now)) take();
         for (int q = 14; q < 27; ++q)
             for (uint32_t k = head_[static_cast<std::size_t>(cell + around_[q])]; k != kNone;
                  k = s_[k].next)
-                gather(k);
+                if (gather(batch, k, now)) take();
         take();
     }
     const std::size_t n = s_.size();

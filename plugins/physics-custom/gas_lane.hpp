@@ -142,6 +142,7 @@ class GasLane {
     int64_t coordinate(double x, int a) const;
     int64_t cell_index(const std::array<int64_t, 3> &c) const;
     void place(uint32_t i, const std::array<int64_t, 3> &c); // in cell c (its Event's fields)
+    template <class B> bool gather(B &batch, uint32_t k, double now) const;
     void scan(uint32_t i, double now, const int64_t *offsets, int count, bool all);
     void predict_pairs(uint32_t i, double now);
     void predict_all_pairs(double now); // every sphere's, at the start
