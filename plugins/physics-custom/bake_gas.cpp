@@ -93,7 +93,6 @@ bool EventBake::enter_gas_lane() {
     grid.origin = grid_->origin();
     grid.cell = grid_->cell_size();
     grid.counts = grid_->counts();
-    if (!GasLane::fits(grid)) return false;
     // The lane keeps its own cells: the general grid is emptied until the lane hands back.
     for (size_t i = 0; i < bodies_.size(); ++i) unfile(static_cast<int>(i));
     gas_ = std::make_unique<GasLane>(r, a, grid, lane_triangles(), spheres, t_begin_);
@@ -238,7 +237,6 @@ void EventBake::fold_gas_counts() {
     count_.skipped += c.skipped - gas_counted_.skipped;
     count_.predictions += c.predictions - gas_counted_.predictions;
     count_.stale += c.stale - gas_counted_.stale;
-    count_.seconds += c.seconds - gas_counted_.seconds;
     count_.crossings += c.crossings - gas_counted_.crossings;
     count_.lane += c.events - gas_counted_.events;
     gas_counted_ = c;

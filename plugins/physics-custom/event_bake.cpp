@@ -278,7 +278,6 @@ void EventBake::report_counts() {
         {"bodies scanned after contacts", count_.scanned},
         {"gas lane events", count_.lane},
         {"gas lane hand-offs", count_.handoffs},
-        {"stale predictions answered by the second-earliest", count_.seconds},
     };
     // Each slice reports its own work: the host adds them up.
     for (size_t k = 0; k < std::size(counts); ++k) {

@@ -677,14 +677,14 @@ class EventBake {
     struct {
         std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0,
                     collisions = 0, advancements = 0, releases = 0, mesh_tests = 0, hinges = 0,
-                    reused = 0, scanned = 0, lane = 0, handoffs = 0, seconds = 0;
+                    reused = 0, scanned = 0, lane = 0, handoffs = 0;
     } count_;
     // The turning pairs predicted at the latest time, by (lower index, higher index).
     std::map<std::pair<int, int>, PairMemo> pair_memos_;
     std::size_t reports_ = 0;
     std::size_t sleepers_ = 0;         // bodies asleep on others
     std::size_t riders_ = 0;           // bodies on carriers, or carried
-    std::array<double, 15> counted_{}; // the counts reported by the earlier slices
+    std::array<double, 14> counted_{}; // the counts reported by the earlier slices
     std::vector<bool> is_body_;        // per model: a body (the others are reported each slice)
     double horizon_ = 0.0;             // how far predictions look
     ScenePrint fingerprint_;           // the scene the bake goes on with

@@ -10,9 +10,8 @@
 // - each sphere's hot data in one 64-byte record (its segment's start, velocity and start time,
 //   a collision counter, the next sphere in its cell), the rest in arrays read only at events;
 // - one event per sphere (its earliest pair collision, and its next move: a cell crossing or a
-//   static model), made stale lazily by the partner's counter, with its second-earliest pair
-//   collision to go on with when it is; a crossing keeps the pair part and scans only the 9
-//   cells newly in reach; the first predictions compute each pair once;
+//   static model), made stale lazily by the partner's counter; a crossing keeps the pair part
+//   and scans only the 9 cells newly in reach; the first predictions compute each pair once;
 // - a scan's candidates gathered and their roots computed four at a time with AVX2 where the
 //   processor has it (the same operations in the same order as one at a time);
 // - the static models' triangles listed per cell once, so a sphere far from every wall tests
@@ -75,23 +74,15 @@ class GasLane {
     };
     struct Counts {
         std::size_t done = 0, skipped = 0, predictions = 0, stale = 0, crossings = 0, events = 0;
-        std::size_t seconds = 0; // stale events answered by the second-earliest partner, unscanned
     };
 
     // Every sphere must start inside the grid's cells and apart from the others and the
     // triangles: the general engine's checks have run, or `check` asks the lane to see to it
-    // (admissible() says whether they are, and whether the grid fits(); if not, the lane must not
-    // be run).
+    // (admissible() says whether they are; if not, the lane must not be run).
     GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid,
             std::vector<Triangle> triangles, const ani::HugeVector<Start> &spheres, double now,
             bool check = false);
     bool admissible() const { return admissible_; }
-    // At most this many cells along an axis (a sphere's cell is kept in 16 bits a coordinate);
-    // a grid with more is not the lane's.
-    static constexpr int64_t kMostCells = 32766;
-    static bool fits(const Grid &g) {
-        return g.counts[0] <= kMostCells && g.counts[1] <= kMostCells && g.counts[2] <= kMostCells;
-    }
 
     // Runs the events up to t_end (the segments from t_begin, where this slice starts). False
     // when it stopped before an event it does not take, at stopped_at(): the general engine
@@ -119,23 +110,18 @@ class GasLane {
         uint32_t next;  // the next sphere in its cell, or kNone
     };
     // A sphere's next event: the earlier of its earliest pair collision and its next move (a
-    // cell crossing, or a static model within its cell); its second-earliest pair collision (with
-    // another sphere: when the earliest's partner changes course first, it is the next one, if its
-    // own partner has not changed course either); and its cell, with that cell's triangles
-    // (near_[near_from, near_to)). One cache line, read at its events.
+    // cell crossing, or a static model within its cell); and its cell, with that cell's
+    // triangles (near_[near_from, near_to)). One cache line, read at its events.
     struct alignas(64) Event {
         double pair_time = kInf;
         uint32_t partner = kNone, partner_count = 0;
         double move_time = kInf;
-        double second_time = kInf;
-        uint32_t second = kNone, second_count = 0;
-        std::array<int16_t, 3> cell{}; // (-1 to kMostCells: fits())
-        int8_t axis = 0, direction = 0;
-        uint32_t index = 0;        // of its cell in head_
-        uint32_t triangle = kNone; // met at move_time, with contact_ (or kNone: a crossing)
+        std::array<int32_t, 3> cell{};
+        uint32_t index = 0; // of its cell in head_
         uint32_t near_from = 0, near_to = 0;
+        uint32_t triangle = kNone; // met at move_time, with contact_ (or kNone: a crossing)
+        int8_t axis = 0, direction = 0;
     };
-    static_assert(sizeof(Event) == 64, "a sphere's event is one cache line");
 
     glm::dvec3 at(const Sphere &p, double t) const;
     glm::dvec3 velocity(const Sphere &p, double t) const;

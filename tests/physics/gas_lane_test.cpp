@@ -153,15 +153,3 @@ TEST_CASE("the gas lane takes balls only when every pair is apart by the general
         }
     }
 }
-
-TEST_CASE("the gas lane does not take a grid of more cells along an axis than it keeps") {
-    // A sphere's cell is kept in 16 bits a coordinate: 32,766 cells along an axis at most.
-    GasLane::Grid g = grid();
-    g.counts = {GasLane::kMostCells, 1, 1};
-    const std::vector<GasLane::Start> balls = {ball(1, {0.0, -4.0, -4.0}, {1.0, 0.0, 0.0})};
-    const ani::HugeVector<GasLane::Start> spheres(balls.begin(), balls.end());
-    CHECK(GasLane(0.5, glm::dvec3(0.0), g, {}, spheres, 0.0, true).admissible());
-    g.counts = {1, GasLane::kMostCells + 1, 1};
-    CHECK_FALSE(GasLane::fits(g));
-    CHECK_FALSE(GasLane(0.5, glm::dvec3(0.0), g, {}, spheres, 0.0, true).admissible());
-}
