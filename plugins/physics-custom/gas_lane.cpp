@@ -295,6 +295,16 @@ void roots(Batch &b, const Scanner &s) {
     roots_scalar(b, s, 0);
 }
 
+// The roots of a scan's batch, filled to a whole number of fours with the scanning sphere
+// itself (not approaching, never earlier); its count of candidates is kept.
+inline void solve(Batch &b, const Scanner &s) {
+    for (int n = b.n; n % 4 != 0; ++n) b.set(n, {s.x, s.y, s.z}, {s.vx, s.vy, s.vz}, s.now);
+    const int found = b.n;
+    b.n = (b.n + 3) / 4 * 4;
+    roots(b, s);
+    b.n = found;
+}
+
 } // namespace
 
 // Sphere k as a candidate of a scan at `now` (moved to now when paths fall: the roots then move
@@ -330,12 +340,7 @@ void GasLane::scan(uint32_t i, double now, const int64_t *offsets, int count, bo
     std::size_t tests = 0;
     Batch batch;
     const auto take = [&] {
-        // (Filled to a whole number of fours with itself: not approaching, never earlier.)
-        for (int n = batch.n; n % 4 != 0; ++n) batch.set(n, here, v, now);
-        const int found = batch.n;
-        batch.n = (batch.n + 3) / 4 * 4;
-        roots(batch, s);
-        batch.n = found;
+        solve(batch, s);
         for (int k = 0; k < batch.n; ++k)
             if (batch.t[k] < s.horizon) {
                 s.horizon = batch.t[k];
@@ -394,11 +399,7 @@ void GasLane::predict_all_pairs(double now) {
         const glm::dvec3 here = at(a, now), v = velocity(a, now);
         const Scanner s{now, here.x, here.y, here.z, v.x, v.y, v.z, reach2_, kInf};
         const auto take = [&] {
-            for (int n = batch.n; n % 4 != 0; ++n) batch.set(n, here, v, now);
-            const int found = batch.n;
-            batch.n = (batch.n + 3) / 4 * 4;
-            roots(batch, s);
-            batch.n = found;
+            solve(batch, s);
             for (int k = 0; k < batch.n; ++k) {
                 const double t = batch.t[k];
                 if (!(t < kInf)) continue;

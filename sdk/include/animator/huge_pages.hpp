@@ -7,8 +7,8 @@
 // 2 MB boundaries, and the kernel asked for transparent huge pages there (madvise: granted where
 // /sys/kernel/mm/transparent_hugepage/enabled says "madvise" or "always"), one fault a 2 MB page;
 // smaller ones come from the standard allocator. Freed, they are kept for the next large array
-// (huge_pages_take/give below; huge_pages_trim hands them back). Under AddressSanitizer every array comes from
-// the standard allocator, so that its overflows are still caught.
+// (huge_pages_take/give below; huge_pages_trim hands them back). Under AddressSanitizer every
+// array comes from the standard allocator, so that its overflows are still caught.
 #pragma once
 
 #include <cstddef>
