@@ -48,7 +48,7 @@ void SegmentStore::make_room(const std::vector<std::uint32_t> &count) {
 }
 
 void SegmentStore::compact_with(const std::vector<std::uint32_t> &count) {
-    ani::HugeVector<ani_motion_segment> pool;
+    Pool pool;
     pool.resize(live_);
     std::size_t end = 0;
     for (std::size_t m = 0; m < runs_.size(); ++m) {

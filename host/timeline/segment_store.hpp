@@ -12,6 +12,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <new>
+#include <utility>
 #include <vector>
 
 namespace animator {
@@ -77,8 +79,24 @@ class SegmentStore {
     void make_room(const std::vector<std::uint32_t> &count);
     void compact_with(const std::vector<std::uint32_t> &count);
 
+    // The pool's allocator leaves the room a resize adds unwritten (std::vector would zero it):
+    // every segment in it is written before it is read, and zeroing the room first cost a fifth
+    // of filing a bake's segments (docs/performance.md, the gas).
+    template <class T> struct Unwritten : ani::HugePageAllocator<T> {
+        template <class U> struct rebind {
+            using other = Unwritten<U>;
+        };
+        Unwritten() = default;
+        template <class U> Unwritten(const Unwritten<U> &) {}
+        template <class U> void construct(U *p) noexcept { ::new (static_cast<void *>(p)) U; }
+        template <class U, class... A> void construct(U *p, A &&...a) {
+            ::new (static_cast<void *>(p)) U(std::forward<A>(a)...);
+        }
+    };
+    using Pool = std::vector<ani_motion_segment, Unwritten<ani_motion_segment>>;
+
     std::vector<Run> runs_;
-    ani::HugeVector<ani_motion_segment> pool_;
+    Pool pool_;
     std::size_t live_ = 0;
 };
 
