@@ -510,14 +510,20 @@ void Renderer::draw_shadow_maps(int count) {
             shadow_projection(glm::dvec3(u.light_position[static_cast<size_t>(i)]), centre, radius,
                               options_.shadow_map_size);
         shadows_->begin(i, options_.shadow_map_size, p);
+        const glm::dvec3 light(u.light_position[static_cast<size_t>(i)]);
         for (int m = 0; m < count; ++m) {
             if (!gpu_meshes_[static_cast<size_t>(m)] || hidden_.count(m) ||
                 models_[static_cast<size_t>(m)].transparency > 0.0)
                 continue;
-            shadows_->draw(*gpu_meshes_[static_cast<size_t>(m)],
-                           glm::mat4(world_[static_cast<size_t>(m)]),
-                           counted_level(m));
+            const GpuMesh &mesh = *gpu_meshes_[static_cast<size_t>(m)];
+            glm::dvec3 c;
+            double r = 0.0;
+            bounds_of(m, c, r);
+            const bool one_sided = mesh.closed() && glm::length(light - c) > r;
+            shadows_->draw(mesh, glm::mat4(world_[static_cast<size_t>(m)]), counted_level(m),
+                           one_sided);
             ++stats_.shadow_casters;
+            if (one_sided) ++stats_.shadow_one_sided;
         }
         shadows_->finish();
         u.shadow_matrix[static_cast<size_t>(i)] = glm::mat4(p.world_to_map);

@@ -92,6 +92,7 @@ struct RenderStats {
     std::size_t cube_map_binds = 0; // skybox cube maps bound (the skybox, or reflection's)
     int shadow_maps = 0;            // shadow maps drawn (one a shadow-casting light)
     std::size_t shadow_casters = 0; // models drawn into them, summed over the maps
+    std::size_t shadow_one_sided = 0; // of those, drawn one-sided (closed, the light outside)
     bool skybox_drawn = false;
     std::size_t reflection_maps = 0; // cube maps of the models around drawn (six faces each)
     // Triangles of models drawn, summed over every pass (shadow maps, cube maps, the view), and

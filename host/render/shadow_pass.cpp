@@ -71,7 +71,7 @@ void ShadowPass::begin(int light, int size, const ShadowProjection &projection) 
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE); // open meshes (a floor) cast from either side
+    glCullFace(GL_BACK);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
@@ -83,13 +83,18 @@ void ShadowPass::begin(int light, int size, const ShadowProjection &projection) 
     glUniformMatrix4fv(view_projection_location_, 1, GL_FALSE, glm::value_ptr(vp));
 }
 
-void ShadowPass::draw(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level) {
+void ShadowPass::draw(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level, bool one_sided) {
+    if (one_sided)
+        glEnable(GL_CULL_FACE);
+    else
+        glDisable(GL_CULL_FACE); // open meshes (a floor) cast from either side
     glUniformMatrix4fv(model_location_, 1, GL_FALSE, glm::value_ptr(model));
     mesh.draw(level);
 }
 
 void ShadowPass::finish() {
     glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_CULL_FACE);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -31,7 +31,11 @@ class ShadowPass {
     // Starts light `light`'s map, `size` texels square (its texture is made or resized), seen
     // through `projection`. Draw the casters (each at a level of detail), then finish().
     void begin(int light, int size, const ShadowProjection &projection);
-    void draw(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level);
+    // A caster; `one_sided` when it is a closed mesh and the light is outside it (outside its
+    // bounding sphere): only its faces turned to the light are drawn. Its depth map is the same
+    // (the nearest surface along a ray entering a closed mesh is a face turned to the light),
+    // and llvmpipe drops the others before binning them: about half a ball's triangles.
+    void draw(const GpuMesh &mesh, const glm::mat4 &model, std::size_t level, bool one_sided);
     void finish();
 
     // Binds the maps of lights 0..count-1 to their units (kFirstShadowUnit + N).

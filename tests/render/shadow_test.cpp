@@ -172,6 +172,26 @@ TEST_CASE("shadows: a cube resting on the floor casts a shadow that starts at it
     }
 }
 
+TEST_CASE("shadows: closed casters go into the map one-sided while the light is outside them, "
+          "two-sided once it is inside") {
+    // The sphere is closed, the floor open: one caster of two drawn one-sided, and the floor's
+    // shadow as the geometry says (the faces turned away from the light were never the nearest).
+    const Rendered r = render_document(scene(kHoveringSphere), kSize, kSize);
+    CHECK(r.stats.shadow_casters == 2);
+    CHECK(r.stats.shadow_one_sided == 1);
+    check_floor(r.image, kHoveringSphere, true);
+    // A closed sphere around the light: every ray from it leaves through the sphere's inside,
+    // faces turned away from the light, so all of the floor is in its shadow; drawn one-sided
+    // (as a caster seen from outside is), the sphere would cast none.
+    const Shape around{true, kLight.position, glm::dvec3(0.5)};
+    const Rendered enclosed = render_document(scene(around), kSize, kSize);
+    CHECK(enclosed.stats.shadow_casters == 2);
+    CHECK(enclosed.stats.shadow_one_sided == 0);
+    const Counts n = check_floor(enclosed.image, around, true);
+    CHECK(n.lit == 0);
+    CHECK(n.shadowed > 5000);
+}
+
 TEST_CASE("golden: a sphere over a floor and its soft-edged shadow, anti-aliased") {
     Document doc = make_document(make_camera({0, 2.2, 6}, 0, -18));
     Settings s = doc.settings();
