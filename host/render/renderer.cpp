@@ -232,11 +232,25 @@ void Renderer::draw_skybox() {
     current_program_ = &program; // so that the next model binds its own
     bind(kSkyboxUnit, GL_TEXTURE_CUBE_MAP, skybox_->name(), stats_.cube_map_binds);
     apply_uniforms(program, *programs_, frame_uniforms_, nullptr);
-    // The seed: drawn first without writing depth, so every model covers it.
-    glDisable(GL_DEPTH_TEST);
+    // The seed drew it first without writing depth, so that every model covers it; it is drawn
+    // after the opaque models instead, at the far plane's depth (glDepthRange(1, 1)) where the
+    // depth buffer is still cleared to it (GL_LEQUAL), so only the pixels no model covers run its
+    // shader: the same picture, without shading the sky behind a floor (docs/performance.md).
+    // It writes neither depth nor stencil (transparent models drawn after see nothing opaque
+    // there).
+    glDisable(GL_CULL_FACE); // (seen from inside)
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthRange(1.0, 1.0);
     glDepthMask(GL_FALSE);
+    GLboolean stencil = GL_FALSE;
+    glGetBooleanv(GL_STENCIL_TEST, &stencil);
+    glDisable(GL_STENCIL_TEST);
     skybox_cube_->draw();
+    if (stencil) glEnable(GL_STENCIL_TEST);
     glDepthMask(GL_TRUE);
+    glDepthRange(0.0, 1.0);
+    glDepthFunc(GL_LESS);
     stats_.skybox_drawn = true;
 }
 
@@ -393,11 +407,11 @@ void Renderer::draw_reflections() {
                          view_ = face_view;
                          view_projection_ = projection * face_view;
                          frustum_ = Frustum(view_projection_);
-                         if (skybox_) draw_skybox();
                          glEnable(GL_DEPTH_TEST);
                          glDepthFunc(GL_LESS);
                          for (const auto &[features, o] : by_program_)
                              if (o != m && visible(o) && around(o)) draw_model(o, false, 0);
+                         if (skybox_) draw_skybox();
                      });
         ++stats_.reflection_maps;
     }
@@ -432,7 +446,6 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glDisable(GL_SCISSOR_TEST);
-    if (skybox_) draw_skybox();
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -462,6 +475,7 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     // surfaces coincide).
     group_by_program(by_program_);
     for (const auto &[features, m] : by_program_) draw_model(m, selected.count(m) > 0, 0);
+    if (skybox_) draw_skybox(); // behind the opaque models, only where none is (draw_skybox)
     // Transparent models last, the farthest first, each seen from outside only.
     std::sort(transparent_.begin(), transparent_.end());
     glEnable(GL_CULL_FACE);
