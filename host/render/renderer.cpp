@@ -10,6 +10,7 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <tuple>
 #include <iostream>
 #include <limits>
 
@@ -222,6 +223,23 @@ void Renderer::bind(unsigned unit, unsigned target, unsigned name, std::size_t &
     glBindTexture(target, name);
     bound_[unit] = name;
     ++counter;
+}
+
+void Renderer::order_front_to_back(std::vector<std::pair<std::uint32_t, int>> &draws) const {
+    // (open, program, distance of its nearest point, model): a total order, so the same frame
+    // draws the same way every time.
+    std::vector<std::tuple<bool, std::uint32_t, double, int>> keyed;
+    keyed.reserve(draws.size());
+    for (const auto &[features, m] : draws) {
+        glm::dvec3 centre;
+        double radius = 0.0;
+        bounds_of(m, centre, radius);
+        keyed.emplace_back(!gpu_meshes_[static_cast<size_t>(m)]->closed(), features,
+                           glm::length(centre - eye_) - radius, m);
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (std::size_t k = 0; k < draws.size(); ++k)
+        draws[k] = {std::get<1>(keyed[k]), std::get<3>(keyed[k])};
 }
 
 void Renderer::draw_skybox() {
@@ -469,11 +487,12 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
         }
         by_program_.emplace_back(features_of(m, selected.count(m) > 0, 0, nullptr), m);
     }
-    // Grouped by program (stable: in the document's order within a group), so each program is
-    // bound once: a program switch costs llvmpipe more than the draw of a small model
-    // (docs/performance.md). The depth test makes the order invisible (but where two models'
-    // surfaces coincide).
-    group_by_program(by_program_);
+    // Grouped by program, so each program is bound about once: a program switch costs llvmpipe
+    // more than the draw of a small model (docs/performance.md); closed meshes before open ones
+    // (a floor is mostly behind what stands on it) and the nearest first in a group, so that the
+    // depth test, which llvmpipe runs before the shader, leaves hidden pixels unshaded. The
+    // depth test makes the order invisible (but where two models' surfaces coincide).
+    order_front_to_back(by_program_);
     for (const auto &[features, m] : by_program_) draw_model(m, selected.count(m) > 0, 0);
     if (skybox_) draw_skybox(); // behind the opaque models, only where none is (draw_skybox)
     // Transparent models last, the farthest first, each seen from outside only.

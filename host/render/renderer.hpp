@@ -167,6 +167,8 @@ class Renderer {
     const GpuTexture *texture(const std::string &id);
     void load_skybox(const std::string &id);
     void draw_skybox();
+    // The view's opaque draws (by_program_) in the order they are drawn.
+    void order_front_to_back(std::vector<std::pair<std::uint32_t, int>> &draws) const;
     // The features model m is drawn with, less `without` (and its texture, when `image`).
     uint32_t features_of(int m, bool selected, uint32_t without, const GpuTexture **image);
     // Draws model m with the features it uses, less `without`.
