@@ -80,8 +80,8 @@ class SegmentStore {
     void compact_with(const std::vector<std::uint32_t> &count);
 
     // The pool's allocator leaves the room a resize adds unwritten (std::vector would zero it):
-    // every segment in it is written before it is read, and zeroing the room first cost a fifth
-    // of filing a bake's segments (docs/performance.md, the gas).
+    // every segment in it is written before it is read, and zeroing the room first cost a quarter
+    // as much as filing a bake's segments (docs/performance.md, the gas).
     template <class T> struct Unwritten : ani::HugePageAllocator<T> {
         template <class U> struct rebind {
             using other = Unwritten<U>;
