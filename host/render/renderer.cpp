@@ -181,6 +181,14 @@ void Renderer::bounds_of(int model, glm::dvec3 &centre, double &radius) const {
                               mesh.bound_radius, centre, radius);
 }
 
+bool Renderer::closed_seen_from_outside(int model, const glm::dvec3 &from) const {
+    if (!gpu_meshes_[static_cast<size_t>(model)]->closed()) return false;
+    glm::dvec3 centre;
+    double radius = 0.0;
+    bounds_of(model, centre, radius);
+    return glm::length(from - centre) > radius;
+}
+
 bool Renderer::visible(int model) const {
     if (hidden_.count(model)) return false;
     glm::dvec3 centre;
@@ -331,14 +339,10 @@ void Renderer::draw_model(int m, bool selected, uint32_t without) {
     const GpuMesh &mesh = *gpu_meshes_[static_cast<size_t>(m)];
     // (Transparent models in the view are drawn from outside only: draw_transparent culls.)
     if (model.transparency <= 0.0 || probing_ >= 0) {
-        // A closed mesh seen from outside its bounding sphere, so from outside itself: its back
-        // faces are hidden behind its front ones and are not drawn. Seen from within, or open (a
-        // floor is seen from below), both sides.
-        glm::dvec3 centre;
-        double radius = 0.0;
-        bounds_of(m, centre, radius);
-        const bool one_sided = mesh.closed() && glm::length(eye_ - centre) > radius;
-        if (one_sided) {
+        // A closed mesh seen from outside itself: its back faces are hidden behind its front
+        // ones and are not drawn. Seen from within, or open (a floor is seen from below), both
+        // sides.
+        if (closed_seen_from_outside(m, eye_)) {
             glEnable(GL_CULL_FACE);
             ++stats_.one_sided;
         } else {
@@ -548,13 +552,9 @@ void Renderer::draw_shadow_maps(int count) {
             if (!gpu_meshes_[static_cast<size_t>(m)] || hidden_.count(m) ||
                 models_[static_cast<size_t>(m)].transparency > 0.0)
                 continue;
-            const GpuMesh &mesh = *gpu_meshes_[static_cast<size_t>(m)];
-            glm::dvec3 c;
-            double r = 0.0;
-            bounds_of(m, c, r);
-            const bool one_sided = mesh.closed() && glm::length(light - c) > r;
-            shadows_->draw(mesh, glm::mat4(world_[static_cast<size_t>(m)]), counted_level(m),
-                           one_sided);
+            const bool one_sided = closed_seen_from_outside(m, light);
+            shadows_->draw(*gpu_meshes_[static_cast<size_t>(m)],
+                           glm::mat4(world_[static_cast<size_t>(m)]), counted_level(m), one_sided);
             ++stats_.shadow_casters;
             if (one_sided) ++stats_.shadow_one_sided;
         }

@@ -159,6 +159,10 @@ class Renderer {
     // Model m's bounding sphere in the world: its mesh's, under its world matrix.
     void bounds_of(int model, glm::dvec3 &centre, double &radius) const;
     bool visible(int model) const;
+    // Model m's mesh is closed and `from` (an eye, a light) is outside its bounding sphere, so
+    // outside the mesh: its faces turned away from `from` are behind its others and need not be
+    // drawn.
+    bool closed_seen_from_outside(int model, const glm::dvec3 &from) const;
     // The level of detail of model m's mesh (RenderOptions::detail_pixels) seen from `eye`, whose
     // pixels are `pixel_per_distance` wide at distance 1.
     std::size_t level_of(int model, const glm::dvec3 &eye, double pixel_per_distance) const;
