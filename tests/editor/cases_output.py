@@ -100,10 +100,20 @@ def case_render_cancel(c):
     e.wait_log(RENDER_STARTED, 'the render to start')
     folder = c.path('drop_render')
     e.wait_for(lambda: len(pngs(folder)) >= 3, 'the first frames to be written')
-    img = e.screenshot('render-progress')
-    filled = sum(1 for _, _, px in img.region(*PROGRESS_BOX) if near(px, HISTOGRAM_YELLOW, 30))
-    check(render_dialog_open(img), 'no Render dialog while rendering')
-    check(filled > 20, 'no progress bar filling in the Render dialog (%d yellow pixels in %s)' % (filled, PROGRESS_BOX))
+    # The editor draws the bar when it has read the child's progress lines and drawn a frame
+    # since: on a busy machine that can come after the files, so screenshots are taken until one
+    # shows the bar filling, not once (the render must not have ended meanwhile).
+    seen = {}
+
+    def bar_filling():
+        check(not re.search(RENDER_FINISHED, e.stdout(), re.M), 'the render ended before its progress bar was seen filling')
+        img = e.screenshot('render-progress')
+        seen['open'] = render_dialog_open(img)
+        seen['filled'] = sum(1 for _, _, px in img.region(*PROGRESS_BOX) if near(px, HISTOGRAM_YELLOW, 30))
+        check(seen['open'], 'no Render dialog while rendering')
+        return seen['filled'] > 20
+    e.wait_for(bar_filling, 'a progress bar filling in the Render dialog (yellow pixels in %s)' % (PROGRESS_BOX,))
+    c.log('the progress bar: %d yellow pixels' % seen['filled'])
     e.key('Escape', settle=False)
     m = e.wait_log(RENDER_CANCELLED, 'the editor to say the render was cancelled')
     k, n = int(m.group(1)), int(m.group(2))
