@@ -1,9 +1,14 @@
 #include "render/reflection_probes.hpp"
 
 #include "render/render_error.hpp"
+#include "render/shader_program.hpp"
 
 #include <glad/gl.h>
 #include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
 
 namespace animator {
 
@@ -20,13 +25,64 @@ struct CubeMapBound {
     ~CubeMapBound() { glBindTexture(GL_TEXTURE_CUBE_MAP, static_cast<GLuint>(held)); }
 };
 
+// A level of a cube map from the level above, its six faces in one draw: a triangle covering
+// the face, once a face (gl_Layer from the instance, GL_ARB_shader_viewport_layer_array), each
+// pixel the bilinear sample at the corner its 2x2 texels above share, which is their average: the
+// box filter glGenerateMipmap uses. The direction of a face's (s, t) inverts the GL
+// specification's cube-map face selection (its table of major axes and sc, tc).
+constexpr const char *kDownsampleVertex = R"(#version 330 core
+#extension GL_ARB_shader_viewport_layer_array : require
+out vec2 st;
+flat out int face;
+void main() {
+    vec2 p = vec2(float((gl_VertexID & 1) * 4 - 1), float((gl_VertexID & 2) * 2 - 1));
+    st = p;
+    face = gl_InstanceID;
+    gl_Layer = gl_InstanceID;
+    gl_Position = vec4(p, 0.0, 1.0);
+}
+)";
+
+constexpr const char *kDownsampleFragment = R"(#version 330 core
+uniform samplerCube above;
+uniform float above_level;
+in vec2 st;
+flat in int face;
+out vec4 colour;
+void main() {
+    float sc = st.x, tc = st.y;
+    vec3 d;
+    if (face == 0) d = vec3(1.0, -tc, -sc);
+    else if (face == 1) d = vec3(-1.0, -tc, sc);
+    else if (face == 2) d = vec3(sc, 1.0, tc);
+    else if (face == 3) d = vec3(sc, -1.0, -tc);
+    else if (face == 4) d = vec3(sc, -tc, 1.0);
+    else d = vec3(-sc, -tc, -1.0);
+    colour = textureLod(above, d, above_level);
+}
+)";
+
+bool has_extension(const char *name) {
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const auto *e = reinterpret_cast<const char *>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+        if (e && std::strcmp(e, name) == 0) return true;
+    }
+    return false;
+}
+
 } // namespace
 
 ReflectionProbes::~ReflectionProbes() {
     for (const auto &[model, probe] : probes_) glDeleteTextures(1, &probe.texture);
     if (depth_) glDeleteRenderbuffers(1, &depth_);
     if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
+    if (layers_framebuffer_) glDeleteFramebuffers(1, &layers_framebuffer_);
+    if (empty_vertices_) glDeleteVertexArrays(1, &empty_vertices_);
 }
+
+ReflectionProbes::ReflectionProbes() = default;
 
 glm::dmat4 ReflectionProbes::face_view(int face, const glm::dvec3 &centre) {
     static const glm::dvec3 forward[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
@@ -48,15 +104,17 @@ void ReflectionProbes::draw(
         if (probe.texture) glDeleteTextures(1, &probe.texture); // (unbound wherever it was)
         glGenTextures(1, &probe.texture);
         const CubeMapBound bound(probe.texture);
-        for (GLenum f = 0; f < 6; ++f)
-            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_RGBA8, size, size, 0, GL_RGBA,
-                         GL_UNSIGNED_BYTE, nullptr);
+        for (int level = 0; level <= kLastLevel; ++level)
+            for (GLenum f = 0; f < 6; ++f)
+                glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, level, GL_RGBA8,
+                             std::max(1, size >> level), std::max(1, size >> level), 0, GL_RGBA,
+                             GL_UNSIGNED_BYTE, nullptr);
         // Mipmapped as the skybox is: along a silhouette the shading is extrapolated, and a
         // reflected direction there jumps from pixel to pixel; a single level then sparkles.
         // Three levels are enough for that (a fifth of the frame's time went to making all eight
         // of a 128-pixel map on llvmpipe; with three, it looked the same).
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 2);
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, kLastLevel);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
             glTexParameteri(GL_TEXTURE_CUBE_MAP, wrap, GL_CLAMP_TO_EDGE);
@@ -89,8 +147,67 @@ void ReflectionProbes::draw(
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         draw_face(face_view(f, centre), projection);
     }
+    unleveled_.push_back(model);
+}
+
+void ReflectionProbes::finish() {
+    // After every probe's faces: on llvmpipe the first level drawn waits for all the faces drawn
+    // before it, once, where making each probe's levels after its faces waited six times.
+    for (int model : unleveled_) make_levels(probes_.at(model));
+    unleveled_.clear();
+}
+
+bool ReflectionProbes::layered() {
+    if (!tried_layers_) {
+        tried_layers_ = true;
+        if (!std::getenv("ANIMATOR_PROBE_MIPMAPS") && has_extension("GL_ARB_shader_viewport_layer_array")) {
+            try {
+                downsample_ = std::make_unique<ShaderProgram>(kDownsampleVertex, kDownsampleFragment);
+            } catch (const ShaderError &) {
+                downsample_.reset(); // glGenerateMipmap then
+            }
+        }
+    }
+    return downsample_ != nullptr;
+}
+
+void ReflectionProbes::make_levels(const Probe &probe) {
     const CubeMapBound bound(probe.texture);
-    glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    if (!layered()) {
+        glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+        return;
+    }
+    // glGenerateMipmap on llvmpipe blits each face of each level apart, a draw and a wait each:
+    // twelve a probe, a fifth of the frame with six probes (docs/performance.md). Here: two.
+    GLint program = 0, vertices = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertices);
+    if (!layers_framebuffer_) glGenFramebuffers(1, &layers_framebuffer_);
+    if (!empty_vertices_) glGenVertexArrays(1, &empty_vertices_);
+    glBindFramebuffer(GL_FRAMEBUFFER, layers_framebuffer_);
+    glBindVertexArray(empty_vertices_);
+    glUseProgram(downsample_->name());
+    GLint unit = 0;
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &unit);
+    glUniform1i(downsample_->uniform_location("above"), unit - GL_TEXTURE0);
+    const GLint level_at = downsample_->uniform_location("above_level");
+    glDisable(GL_DEPTH_TEST);
+    for (int level = 1; level <= kLastLevel; ++level) {
+        // Only the level above is sampled while this one is drawn (no feedback).
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BASE_LEVEL, level - 1);
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, level - 1);
+        glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, probe.texture, level);
+        const int side = std::max(1, probe.size >> level);
+        glViewport(0, 0, side, side);
+        glUniform1f(level_at, static_cast<float>(level - 1));
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 3, 6);
+    }
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BASE_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, kLastLevel);
+    glEnable(GL_DEPTH_TEST);
+    glBindVertexArray(static_cast<GLuint>(vertices));
+    glUseProgram(static_cast<GLuint>(program));
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
 }
 
 unsigned ReflectionProbes::texture(int model) const {
@@ -105,6 +222,7 @@ void ReflectionProbes::keep_only(const std::function<bool(int)> &kept) {
             continue;
         }
         glDeleteTextures(1, &it->second.texture);
+        unleveled_.erase(std::remove(unleveled_.begin(), unleveled_.end(), it->first), unleveled_.end());
         it = probes_.erase(it);
     }
 }

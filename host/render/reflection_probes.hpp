@@ -10,12 +10,16 @@
 
 #include <functional>
 #include <map>
+#include <memory>
+#include <vector>
 
 namespace animator {
 
+class ShaderProgram;
+
 class ReflectionProbes {
   public:
-    ReflectionProbes() = default;
+    ReflectionProbes();
     ~ReflectionProbes();
     ReflectionProbes(const ReflectionProbes &) = delete;
     ReflectionProbes &operator=(const ReflectionProbes &) = delete;
@@ -32,19 +36,36 @@ class ReflectionProbes {
     // draw_face(view, projection). Leaves the framebuffer it bound bound.
     void draw(int model, int size, const glm::dvec3 &centre, const glm::vec3 &background,
               const std::function<void(const glm::dmat4 &, const glm::dmat4 &)> &draw_face);
+    // Makes the mipmap levels of the cube maps drawn since the last call: call it after the
+    // last draw() of a frame, before the cube maps are sampled.
+    void finish();
     // Model `model`'s cube map (a GL texture name) if drawn, else 0.
     unsigned texture(int model) const;
     // Frees the cube maps of the models `kept` says false of.
     void keep_only(const std::function<bool(int)> &kept);
+    // Whether finish() draws each level layered, all six faces at once: the OpenGL has
+    // GL_ARB_shader_viewport_layer_array, the program compiled, and ANIMATOR_PROBE_MIPMAPS is not
+    // set (it asks for glGenerateMipmap, to compare). Decided on the first call.
+    bool layered();
 
   private:
     struct Probe {
         unsigned texture = 0;
         int size = 0;
     };
+    // The cube maps' last mipmap level (three levels: see draw()).
+    static constexpr int kLastLevel = 2;
+    // Makes levels 1 .. kLastLevel of `probe`'s cube map from level 0: in one layered draw a
+    // level where the OpenGL can (layered()), else by glGenerateMipmap.
+    void make_levels(const Probe &probe);
+
     std::map<int, Probe> probes_;
     unsigned framebuffer_ = 0, depth_ = 0;
     int depth_size_ = 0;
+    bool tried_layers_ = false;
+    std::unique_ptr<ShaderProgram> downsample_;
+    unsigned layers_framebuffer_ = 0, empty_vertices_ = 0;
+    std::vector<int> unleveled_; // the models whose cube maps draw() drew, finish() to level
 };
 
 } // namespace animator

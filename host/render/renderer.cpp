@@ -437,6 +437,7 @@ void Renderer::draw_reflections() {
                      });
         ++stats_.reflection_maps;
     }
+    probes_.finish();
     probing_ = -1;
     eye_ = camera_eye;
     frame_uniforms_ = camera;

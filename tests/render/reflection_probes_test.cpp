@@ -10,7 +10,11 @@
 #include "render/scene_math.hpp"
 
 #include <catch2/catch.hpp>
+#include <glad/gl.h>
 #include <glm/gtc/matrix_transform.hpp>
+
+#include <cstdlib>
+#include <vector>
 
 using namespace animator;
 using namespace animator::test;
@@ -251,4 +255,92 @@ TEST_CASE("reflections of other models are kept to the nearest few, said once") 
     CHECK(r.stats.reflection_maps == 3);
     REQUIRE(r.log.size() == 1);
     CHECK(r.log[0].find("the 3 nearest the camera") != std::string::npos);
+}
+
+namespace {
+
+// Level `level` of face `face` of cube map `texture`, RGBA8, rows from t = 0.
+std::vector<unsigned char> cube_level(unsigned texture, int face, int level, int side) {
+    std::vector<unsigned char> texels(static_cast<std::size_t>(side * side * 4));
+    GLint held = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_CUBE_MAP, &held);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, texture);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_CUBE_MAP_POSITIVE_X + static_cast<GLenum>(face), level, GL_RGBA,
+                  GL_UNSIGNED_BYTE, texels.data());
+    glBindTexture(GL_TEXTURE_CUBE_MAP, static_cast<GLuint>(held));
+    return texels;
+}
+
+// The greatest difference, over every texel and channel of every face and of levels 1 and 2,
+// between what `probes` made of model 0's cube map (`side` texels at level 0) and the average of
+// the 2x2 texels of the level above.
+int worst_level_error(ReflectionProbes &probes, int side) {
+    int worst = 0;
+    for (int face = 0; face < 6; ++face)
+        for (int level = 1; level <= 2; ++level) {
+            const int above_side = side >> (level - 1), here_side = side >> level;
+            const auto above = cube_level(probes.texture(0), face, level - 1, above_side);
+            const auto here = cube_level(probes.texture(0), face, level, here_side);
+            for (int y = 0; y < here_side; ++y)
+                for (int x = 0; x < here_side; ++x)
+                    for (int c = 0; c < 4; ++c) {
+                        int sum = 0;
+                        for (int dy = 0; dy < 2; ++dy)
+                            for (int dx = 0; dx < 2; ++dx)
+                                sum += above[static_cast<std::size_t>(
+                                    ((2 * y + dy) * above_side + 2 * x + dx) * 4 + c)];
+                        const int got = here[static_cast<std::size_t>((y * here_side + x) * 4 + c)];
+                        worst = std::max(worst, std::abs(got - (sum + 2) / 4));
+                    }
+        }
+    return worst;
+}
+
+// Draws model 0's cube map with faces of small squares of colours that differ face to face, so
+// that each texel of level 1 and 2 averages four different ones.
+void draw_checkered(ReflectionProbes &probes, int side) {
+    int face = 0;
+    probes.draw(0, side, glm::dvec3(0.0), glm::vec3(0.0f), [&](const glm::dmat4 &, const glm::dmat4 &) {
+        glEnable(GL_SCISSOR_TEST);
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x) {
+                glScissor(x, y, 1, 1);
+                const int k = (x * 7 + y * 13 + face * 29) % 17;
+                glClearColor(static_cast<float>(k) / 16.0f, static_cast<float>((k * 5) % 17) / 16.0f,
+                             static_cast<float>(x % 3) / 2.0f, (y % 2) ? 1.0f : 0.5f);
+                glClear(GL_COLOR_BUFFER_BIT);
+            }
+        glDisable(GL_SCISSOR_TEST);
+        ++face;
+    });
+    probes.finish();
+}
+
+} // namespace
+
+TEST_CASE("each mipmap level of a model's cube map averages the 2x2 texels of the level above, on "
+          "every face, as glGenerateMipmap does") {
+    gl_context();
+    constexpr int kSide = 16;
+    // Drawn layered (one draw a level) where the OpenGL can: llvmpipe can.
+    ReflectionProbes probes;
+    draw_checkered(probes, kSide);
+    CHECK(probes.layered());
+    CHECK(worst_level_error(probes, kSide) <= 1);
+    // The same with glGenerateMipmap, which the layered draw replaces: the truth it must match.
+    setenv("ANIMATOR_PROBE_MIPMAPS", "1", 1);
+    ReflectionProbes generated;
+    draw_checkered(generated, kSide);
+    unsetenv("ANIMATOR_PROBE_MIPMAPS");
+    CHECK_FALSE(generated.layered());
+    CHECK(worst_level_error(generated, kSide) <= 1);
+    // And the two agree texel for texel.
+    for (int face = 0; face < 6; ++face)
+        for (int level = 1; level <= 2; ++level) {
+            CAPTURE(face, level);
+            CHECK(cube_level(probes.texture(0), face, level, kSide >> level) ==
+                  cube_level(generated.texture(0), face, level, kSide >> level));
+        }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
