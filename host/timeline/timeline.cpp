@@ -177,7 +177,20 @@ Timeline::Timeline(const Document &doc, PluginRegistry &plugins, const std::stri
     : doc_(doc), plugins_(plugins), interpolators_(Interpolators::load(plugins, doc)),
       keyed_(std::make_unique<KeyedMotion>(doc_, interpolators_)), backend_override_(backend),
       physics_(physics_instance(plugins, doc_, backend)), segments_(doc_.models().size()),
-      rotations_(doc_.models().size()), carried_(doc_.models().size()) {}
+      rotations_(doc_.models().size()), carried_(doc_.models().size()) {
+    describe_document();
+}
+
+void Timeline::describe_document() {
+    view_ = std::make_unique<DocumentView>(doc_);
+    const auto &models = doc_.models();
+    groups_.resize(models.size());
+    for (size_t m = 0; m < models.size(); ++m) {
+        int root = static_cast<int>(m);
+        while (models[static_cast<size_t>(root)].parent >= 0) root = models[static_cast<size_t>(root)].parent;
+        groups_[m] = static_cast<uint32_t>(root);
+    }
+}
 
 const ani_motion_segment *Timeline::segment_at(int model, double t) const {
     const SegmentSpan list = segments_[static_cast<size_t>(model)];
@@ -365,7 +378,7 @@ void Timeline::truncate(double from) {
 }
 
 void Timeline::run_bake(double from, double until, const std::function<bool(double)> &progress) {
-    const DocumentView view(doc_);
+    const DocumentView &view = *view_;
     const auto &models = doc_.models();
     const double end_of_time = static_cast<double>(doc_.settings().max_time_ms) / 1000.0;
     ani::HugeVector<ani_physics_model> scene_models(models.size());
@@ -391,11 +404,9 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
         pm.desc = &view.view().models[m];
         pm.mesh = m < meshes_.size() && meshes_[m] ? &meshes_[m]->view : nullptr;
         // Parts of a jointed model move with their parent: keyed (relative to it) throughout.
-        spans[m] = models[m].parent >= 0 ? ani_time_span{0.0, std::max(end_of_time, until)}
-                                         : keyed_->keyed_span(static_cast<int>(m));
-        int root_child = static_cast<int>(m);
-        while (models[static_cast<size_t>(root_child)].parent >= 0) root_child = models[static_cast<size_t>(root_child)].parent;
-        pm.group = static_cast<uint32_t>(root_child);
+        pm.group = groups_[m];
+        spans[m] = pm.group != m ? ani_time_span{0.0, std::max(end_of_time, until)}
+                                 : keyed_->keyed_span(static_cast<int>(m));
         pm.keyed_spans = &spans[m];
         pm.keyed_span_count = 1;
         if (const RotationSegment *r = rotation_at(static_cast<int>(m), from)) {
@@ -671,6 +682,7 @@ void Timeline::edit(const Document &doc) {
     if (physics) physics_ = std::move(physics);
     if (new_interpolation) interpolators_ = std::move(interpolators);
     keyed_ = std::make_unique<KeyedMotion>(doc_, interpolators_);
+    describe_document();
     if (doc_.models().size() != segments_.models()) {
         segments_.reset(doc_.models().size());
         rotations_.assign(doc_.models().size(), {});

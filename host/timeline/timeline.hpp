@@ -187,11 +187,18 @@ class Timeline {
     // Empty, or why the carried segments reported since `from` cannot be evaluated.
     std::string carried_refusal(double from) const;
     void run_bake(double from, double until, const std::function<bool(double)> &progress);
+    // Makes view_ and groups_ of doc_ (when it is set).
+    void describe_document();
 
     Document doc_;
     PluginRegistry &plugins_;
     Interpolators interpolators_;
     std::unique_ptr<KeyedMotion> keyed_;
+    // Made with doc_ (edit()), for every bake of it: the editor bakes a document in slices, and
+    // at 100,000 balls remaking the view and walking the models for their roots took a twentieth
+    // of a bake.
+    std::unique_ptr<DocumentView> view_;  // doc_ as the plugins read it
+    std::vector<uint32_t> groups_;         // each model's root (itself unless jointed)
     std::string backend_override_; // a backend chosen over the document's, or ""
     std::unique_ptr<PluginInstance> physics_;
     struct MeshView {
