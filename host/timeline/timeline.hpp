@@ -106,6 +106,9 @@ class Timeline {
     // `backend` overrides the document's physics backend when not empty. Throws PluginError for
     // a missing interpolator or backend.
     Timeline(const Document &doc, PluginRegistry &plugins, const std::string &backend = "");
+    // Not copied or moved: view_ points into doc_ (its strings, some held in place).
+    Timeline(const Timeline &) = delete;
+    Timeline &operator=(const Timeline &) = delete;
 
     // Bakes [baked_until(), until] seconds. `progress` gets [0, 1] and returns false to cancel
     // (throws BakeCancelled; what was baked before stays). Throws PluginError if the backend
