@@ -182,6 +182,7 @@ void ReflectionProbes::make_levels(const Probe &probe) {
     GLint program = 0, vertices = 0;
     glGetIntegerv(GL_CURRENT_PROGRAM, &program);
     glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertices);
+    const GLboolean depth_test = glIsEnabled(GL_DEPTH_TEST);
     if (!layers_framebuffer_) glGenFramebuffers(1, &layers_framebuffer_);
     if (!empty_vertices_) glGenVertexArrays(1, &empty_vertices_);
     glBindFramebuffer(GL_FRAMEBUFFER, layers_framebuffer_);
@@ -204,7 +205,7 @@ void ReflectionProbes::make_levels(const Probe &probe) {
     }
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BASE_LEVEL, 0);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, kLastLevel);
-    glEnable(GL_DEPTH_TEST);
+    if (depth_test) glEnable(GL_DEPTH_TEST);
     glBindVertexArray(static_cast<GLuint>(vertices));
     glUseProgram(static_cast<GLuint>(program));
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
