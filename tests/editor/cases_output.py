@@ -108,9 +108,8 @@ def case_render_cancel(c):
     def bar_filling():
         check(not re.search(RENDER_FINISHED, e.stdout(), re.M), 'the render ended before its progress bar was seen filling')
         img = e.screenshot('render-progress')
-        seen['open'] = render_dialog_open(img)
+        check(render_dialog_open(img), 'no Render dialog while rendering')
         seen['filled'] = sum(1 for _, _, px in img.region(*PROGRESS_BOX) if near(px, HISTOGRAM_YELLOW, 30))
-        check(seen['open'], 'no Render dialog while rendering')
         return seen['filled'] > 20
     e.wait_for(bar_filling, 'a progress bar filling in the Render dialog (yellow pixels in %s)' % (PROGRESS_BOX,))
     c.log('the progress bar: %d yellow pixels' % seen['filled'])
