@@ -133,7 +133,7 @@ Simulation::Simulation(const Gas &gas, std::vector<Collision> *log)
         predict_move(i);
         times[i] = std::min(e_[i].pair_time, e_[i].move_time);
     }
-    queue_.init(times, 0.0, kPerBucket);
+    queue_.init(times.data(), times.size(), 0.0, kPerBucket);
 }
 
 void Simulation::advance(std::uint32_t i, double t) {

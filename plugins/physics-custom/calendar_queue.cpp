@@ -5,12 +5,11 @@
 
 namespace physics_custom {
 
-void CalendarQueue::init(const std::vector<double> &times, double now, double per_bucket) {
-    const std::size_t n = times.size();
+void CalendarQueue::init(const double *times, std::size_t n, double now, double per_bucket) {
     double sum = 0.0;
     std::size_t finite = 0;
-    for (double t : times)
-        if (t < 1e300) sum += t - now, ++finite;
+    for (std::size_t i = 0; i < n; ++i)
+        if (times[i] < 1e300) sum += times[i] - now, ++finite;
     // Events come at about n / mean(time from now) per unit time; the ring spans 8 mean times.
     const double mean = finite ? sum / static_cast<double>(finite) : 1.0;
     width_ = mean > 0.0 ? per_bucket * mean / static_cast<double>(n) : 1.0;

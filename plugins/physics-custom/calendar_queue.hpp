@@ -18,9 +18,9 @@ namespace physics_custom {
 
 class CalendarQueue {
   public:
-    // Every item's time (infinite: none), none before `now`; `per_bucket`: about how many
-    // events a bucket holds.
-    void init(const std::vector<double> &times, double now, double per_bucket = 16.0);
+    // Every item's time (times[0, n); infinite: none), none before `now`; `per_bucket`: about
+    // how many events a bucket holds.
+    void init(const double *times, std::size_t n, double now, double per_bucket = 16.0);
     // The earliest time (infinite when there is none), and its item.
     double top_time() {
         while (heap_.empty())

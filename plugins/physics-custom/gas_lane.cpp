@@ -109,12 +109,12 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
         return;
     }
     predict_all_pairs(now);
-    std::vector<double> times(n);
+    ani::HugeVector<double> times(n);
     for (uint32_t i = 0; i < n; ++i) {
         predict_move(i, now);
         times[i] = std::min(e_[i].pair_time, e_[i].move_time);
     }
-    queue_.init(times, now);
+    queue_.init(times.data(), n, now);
 }
 
 // Whether every sphere is inside the grid's cells, no two overlap (closer than 2r less the
@@ -129,13 +129,17 @@ bool GasLane::apart(double now) const {
         for (int a = 0; a < 3; ++a)
             if (e.cell[a] < 0 || e.cell[a] >= grid_.counts[a]) return false;
         const glm::dvec3 c = at(s_[i], now);
-        // Each pair once (from its lower index), squared distances (no root a pair).
-        for (int q = 0; q < 27; ++q)
-            for (uint32_t k = head_[e.index + around_[q]]; k != kNone; k = s_[k].next) {
-                if (k <= i) continue;
-                const glm::dvec3 d = c - at(s_[k], now);
-                if (glm::dot(d, d) < closest2) return false;
-            }
+        // Each pair once, as predict_all_pairs takes them (the later spheres of its own cell and
+        // the spheres of the 13 cells after it), squared distances (no root a pair).
+        const auto close = [&](uint32_t k) {
+            const glm::dvec3 d = c - at(s_[k], now);
+            return glm::dot(d, d) < closest2;
+        };
+        for (uint32_t k = head_[e.index]; k != kNone; k = s_[k].next)
+            if (k > i && close(k)) return false;
+        for (int q = 14; q < 27; ++q)
+            for (uint32_t k = head_[e.index + around_[q]]; k != kNone; k = s_[k].next)
+                if (close(k)) return false;
         for (uint32_t k = e.near_from; k < e.near_to; ++k) {
             const Triangle &tri = triangles_[near_[k]];
             if (glm::length(c - closest_point_on_triangle(c, tri.a, tri.b, tri.c)) < beside)

@@ -17,9 +17,19 @@ uint64_t mix(uint64_t acc, uint64_t w) {
 }
 } // namespace
 
+// Each lane starts from its own pair of unrelated values.
+ScenePrint::ScenePrint() {
+    uint64_t sa = 0x60ea27eeadc0b5d6ull, sb = 0x61c8864e7a143579ull;
+    for (int k = 0; k < kLanes; ++k) {
+        a[static_cast<std::size_t>(k)] = sa = mix(sa, static_cast<uint64_t>(k) + 1);
+        b[static_cast<std::size_t>(k)] = sb = mix(sb, static_cast<uint64_t>(k) + 1);
+    }
+}
+
 void ScenePrint::add_word(uint64_t w) {
-    a = mix(a, w);
-    b = mix(b, w ^ (count * kPrime1));
+    const std::size_t k = static_cast<std::size_t>(count % kLanes);
+    a[k] = mix(a[k], w);
+    b[k] = mix(b[k], w ^ (count * kPrime1));
     ++count;
 }
 
