@@ -76,8 +76,9 @@ class KinematicCurve : public Curve {
 
 } // namespace
 
-std::unique_ptr<Curve> make_kinematic_curve(const ani_channel &channel) {
-    return std::make_unique<KinematicCurve>(channel);
+void evaluate_kinematic(const ani_channel &channel, const double *times, uint32_t count, double *values,
+                        double *rates) {
+    evaluate_curve(KinematicCurve(channel), channel.keys, channel.key_count, times, count, values, rates);
 }
 
 } // namespace interp

@@ -5,7 +5,6 @@
 #include "hermite.hpp"
 #include "segments.hpp"
 
-#include <memory>
 #include <vector>
 
 namespace interp {
@@ -29,7 +28,9 @@ std::vector<KinematicSegment> kinematic_segments(const std::vector<double> &time
 // starts at p0.
 ValueRate kinematic_at(double p0, const KinematicSegment &segment, double tau);
 
-// The kinematic curve of a validated POSITION channel. Keeps pointers into the channel's keys.
-std::unique_ptr<Curve> make_kinematic_curve(const ani_channel &channel);
+// A validated POSITION channel on its kinematic curve at `count` sorted times (evaluate_curve;
+// the curve made on the stack).
+void evaluate_kinematic(const ani_channel &channel, const double *times, uint32_t count, double *values,
+                        double *rates);
 
 } // namespace interp

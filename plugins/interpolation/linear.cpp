@@ -68,13 +68,16 @@ class LinearAngleCurve : public Curve {
 
 } // namespace
 
-std::unique_ptr<Curve> make_linear_curve(const ani_channel &channel) {
+void evaluate_linear(const ani_channel &channel, const double *times, uint32_t count, double *values,
+                     double *rates) {
+    const auto on = [&](const Curve &curve) {
+        evaluate_curve(curve, channel.keys, channel.key_count, times, count, values, rates);
+    };
     switch (channel.kind) {
-    case ANI_CHANNEL_ANGLES: return std::make_unique<LinearAngleCurve>(channel.keys);
+    case ANI_CHANNEL_ANGLES: return on(LinearAngleCurve(channel.keys));
     // A blend tangent of 1 is the blend s itself: plain slerp.
-    case ANI_CHANNEL_CAMERA_ROTATION:
-        return std::make_unique<SlerpCurve>(channel.keys, channel.key_count, 1.0);
-    default: return std::make_unique<LinearVectorCurve>(channel.keys);
+    case ANI_CHANNEL_CAMERA_ROTATION: return on(SlerpCurve(channel.keys, channel.key_count, 1.0));
+    default: return on(LinearVectorCurve(channel.keys));
     }
 }
 

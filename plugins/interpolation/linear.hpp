@@ -5,7 +5,7 @@
 
 #include "segments.hpp"
 
-#include <memory>
+#include <cstdint>
 
 namespace interp {
 
@@ -16,7 +16,9 @@ double lerp(double prev, double next, double s);
 // direction `turn` (see turn_delta), wrapped into [0, 360).
 double lerp_angle(double prev, double next, double turn, double s);
 
-// The linear curve of a validated channel of any kind. Keeps pointers into the channel's keys.
-std::unique_ptr<Curve> make_linear_curve(const ani_channel &channel);
+// A validated channel of any kind on its linear curve at `count` sorted times (evaluate_curve;
+// the curve made on the stack: the host asks for every model's start, one call a channel).
+void evaluate_linear(const ani_channel &channel, const double *times, uint32_t count, double *values,
+                     double *rates);
 
 } // namespace interp

@@ -35,20 +35,19 @@ void *create_instance(const ani_plugin_descriptor &descriptor, ani_status *statu
 
 void destroy_instance(void *instance) { delete static_cast<Instance *>(instance); }
 
-// Checks everything, builds the plugin's curve for the channel, sweeps the times once, and
+// Checks everything, evaluates the plugin's curve for the channel (one sweep of the times), and
 // refuses to hand back anything that is not finite.
-template <class MakeCurve>
+template <class Evaluate>
 ani_status_code evaluate_with(const char *plugin_id, uint32_t mask, bool uses_initial_rate,
                               void *instance, const ani_channel *channel, const double *times,
                               uint32_t count, double *values, double *rates, ani_status *status,
-                              MakeCurve make_curve) {
+                              Evaluate evaluate) {
     return ani::guarded(status, [&] {
         if (instance == nullptr)
             throw ani::Failure(ANI_ERR_INVALID_ARGUMENT, std::string(plugin_id) + ": the instance is null");
         interp::check_channel(plugin_id, channel, mask, uses_initial_rate);
         interp::check_times(plugin_id, times, count, values, rates);
-        const auto curve = make_curve(*static_cast<const Instance *>(instance), *channel);
-        interp::evaluate_curve(*curve, channel->keys, channel->key_count, times, count, values, rates);
+        evaluate(*static_cast<const Instance *>(instance), *channel, times, count, values, rates);
         interp::check_outputs(plugin_id, values, rates, count);
     });
 }
@@ -62,8 +61,8 @@ void *linear_create(const ani_host *, ani_status *status) { return create_instan
 ani_status_code linear_evaluate(void *instance, const ani_channel *channel, const double *times,
                                 uint32_t count, double *values, double *rates, ani_status *status) {
     return evaluate_with(kLinearId, kEveryChannel, false, instance, channel, times, count, values,
-                         rates, status, [](const Instance &, const ani_channel &c) {
-                             return interp::make_linear_curve(c);
+                         rates, status, [](const Instance &, const ani_channel &c, auto... out) {
+                             interp::evaluate_linear(c, out...);
                          });
 }
 
@@ -99,8 +98,8 @@ void *kinematic_create(const ani_host *, ani_status *status) {
 ani_status_code kinematic_evaluate(void *instance, const ani_channel *channel, const double *times,
                                    uint32_t count, double *values, double *rates, ani_status *status) {
     return evaluate_with(kKinematicId, bit(ANI_CHANNEL_POSITION), true, instance, channel, times,
-                         count, values, rates, status, [](const Instance &, const ani_channel &c) {
-                             return interp::make_kinematic_curve(c);
+                         count, values, rates, status, [](const Instance &, const ani_channel &c, auto... out) {
+                             interp::evaluate_kinematic(c, out...);
                          });
 }
 
@@ -142,11 +141,11 @@ void *smooth_create(const ani_host *, ani_status *status) { return create_instan
 ani_status_code smooth_evaluate(void *instance, const ani_channel *channel, const double *times,
                                 uint32_t count, double *values, double *rates, ani_status *status) {
     return evaluate_with(kSmoothId, kEveryChannel, false, instance, channel, times, count, values,
-                         rates, status, [](const Instance &self, const ani_channel &c) {
+                         rates, status, [](const Instance &self, const ani_channel &c, auto... out) {
                              interp::SmoothSettings settings;
                              settings.tension = self.params.number("tension");
                              settings.ease = self.params.number("ease") >= 0.5;
-                             return interp::make_smooth_curve(c, settings);
+                             interp::evaluate_curve(*interp::make_smooth_curve(c, settings), c.keys, c.key_count, out...);
                          });
 }
 
