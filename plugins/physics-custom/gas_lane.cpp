@@ -104,11 +104,14 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
               {coordinate(c.x, 0), coordinate(c.y, 1), coordinate(c.z, 2)});
         link(static_cast<uint32_t>(i));
     }
-    if (check && !apart(now)) {
+    if (check && !clear(now)) {
         admissible_ = false;
         return;
     }
-    predict_all_pairs(now);
+    if (!predict_all_pairs(now, check)) {
+        admissible_ = false;
+        return;
+    }
     ani::HugeVector<double> times(n);
     for (uint32_t i = 0; i < n; ++i) {
         predict_move(i, now);
@@ -117,29 +120,18 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     queue_.init(times.data(), n, now);
 }
 
-// Whether every sphere is inside the grid's cells, no two overlap (closer than 2r less the
-// general engine's touching allowance, 1e-6 r each: EventBake::overlaps_body) and none is within
-// r (and that allowance) of a triangle: one touching a face, which the general engine may put on
-// it, is left to the general engine too.
-bool GasLane::apart(double now) const {
-    const double closest = (r_ + r_) * (1.0 - 1e-6), beside = r_ * (1.0 + 1e-6);
-    const double closest2 = closest * closest;
+// Whether every sphere is inside the grid's cells and none is within r (and the general engine's
+// touching allowance, 1e-6 r: EventBake::overlaps_body) of a triangle: one touching a face, which
+// the general engine may put on it, is left to the general engine too. (That no two overlap is
+// checked by predict_all_pairs, which reads every pair anyway.)
+bool GasLane::clear(double now) const {
+    const double beside = r_ * (1.0 + 1e-6);
     for (uint32_t i = 0; i < s_.size(); ++i) {
         const Event &e = e_[i];
         for (int a = 0; a < 3; ++a)
             if (e.cell[a] < 0 || e.cell[a] >= grid_.counts[a]) return false;
+        if (e.near_from == e.near_to) continue;
         const glm::dvec3 c = at(s_[i], now);
-        // Each pair once, as predict_all_pairs takes them (the later spheres of its own cell and
-        // the spheres of the 13 cells after it), squared distances (no root a pair).
-        const auto close = [&](uint32_t k) {
-            const glm::dvec3 d = c - at(s_[k], now);
-            return glm::dot(d, d) < closest2;
-        };
-        for (uint32_t k = head_[e.index]; k != kNone; k = s_[k].next)
-            if (k > i && close(k)) return false;
-        for (int q = 14; q < 27; ++q)
-            for (uint32_t k = head_[e.index + around_[q]]; k != kNone; k = s_[k].next)
-                if (close(k)) return false;
         for (uint32_t k = e.near_from; k < e.near_to; ++k) {
             const Triangle &tri = triangles_[near_[k]];
             if (glm::length(c - closest_point_on_triangle(c, tri.a, tri.b, tri.c)) < beside)
@@ -387,8 +379,12 @@ void GasLane::predict_pairs(uint32_t i, double now) {
 // once (a scan per sphere computed each twice): each sphere scans its own cell's later spheres and
 // the 13 cells after its own (around_[14..26], the others' mirror images), and offers the root to
 // both. The root is the same number from either side (d and e change sign, their products do
-// not), so every sphere gets the times its own scan would have found.
-void GasLane::predict_all_pairs(double now) {
+// not), so every sphere gets the times its own scan would have found. With `check`, false (and
+// the predictions unfinished) when two spheres are closer than 2r less the general engine's
+// touching allowance (1e-6 r each: EventBake::overlaps_body): the squared distance of each pair
+// from the batch its root was computed from.
+bool GasLane::predict_all_pairs(double now, bool check) {
+    const double closest = (r_ + r_) * (1.0 - 1e-6), closest2 = closest * closest;
     const auto offer = [](Event &ev, double at, uint32_t who, uint32_t count) {
         if (at < ev.pair_time) { // (ties: the one offered first stays)
             ev.pair_time = at;
@@ -402,8 +398,17 @@ void GasLane::predict_all_pairs(double now) {
         const Sphere &a = s_[i];
         const glm::dvec3 here = at(a, now), v = velocity(a, now);
         const Scanner s{now, here.x, here.y, here.z, v.x, v.y, v.z, reach2_, kInf};
+        bool overlap = false;
         const auto take = [&] {
             solve(batch, s);
+            for (int k = 0; check && k < batch.n; ++k) {
+                // (d as the roots have it: here - the candidate moved to now)
+                const double dt = now - batch.t0[k];
+                const double dx = s.x - (batch.x[k] + batch.vx[k] * dt),
+                             dy = s.y - (batch.y[k] + batch.vy[k] * dt),
+                             dz = s.z - (batch.z[k] + batch.vz[k] * dt);
+                overlap |= dx * dx + dy * dy + dz * dz < closest2;
+            }
             for (int k = 0; k < batch.n; ++k) {
                 const double t = batch.t[k];
                 if (!(t < kInf)) continue;
@@ -421,11 +426,13 @@ void GasLane::predict_all_pairs(double now) {
                  k = s_[k].next)
                 if (gather(batch, k, now)) take();
         take();
+        if (overlap) return false;
     }
     const std::size_t n = s_.size();
     counts_.predictions += n;
     counts_.done += tests;
     counts_.skipped += n * (n - 1) / 2 - tests;
+    return true;
 }
 
 // Its next move from now: out of its cell, or into a static model's triangle listed for its cell

@@ -131,7 +131,7 @@ class GasLane {
     template <class B> bool gather(B &batch, uint32_t k, double now) const;
     void scan(uint32_t i, double now, const int64_t *offsets, int count, bool all);
     void predict_pairs(uint32_t i, double now);
-    void predict_all_pairs(double now); // every sphere's, at the start
+    bool predict_all_pairs(double now, bool check); // every sphere's, at the start
     void predict_move(uint32_t i, double now);
     void predict_fall(uint32_t i, double now, const Path &here);
     void schedule(uint32_t i);
@@ -166,7 +166,7 @@ class GasLane {
     CalendarQueue queue_;
     Counts counts_;
     bool admissible_ = true;
-    bool apart(double now) const;
+    bool clear(double now) const;
     double stopped_at_ = kInf;
     double t_begin_ = 0.0, t_end_ = 0.0; // the slice's
     std::size_t at_once_ = 0;

@@ -20,21 +20,49 @@ uint64_t mix(uint64_t acc, uint64_t w) {
 // Each lane starts from its own pair of unrelated values.
 ScenePrint::ScenePrint() {
     uint64_t sa = 0x60ea27eeadc0b5d6ull, sb = 0x61c8864e7a143579ull;
-    for (int k = 0; k < kLanes; ++k) {
-        a[static_cast<std::size_t>(k)] = sa = mix(sa, static_cast<uint64_t>(k) + 1);
-        b[static_cast<std::size_t>(k)] = sb = mix(sb, static_cast<uint64_t>(k) + 1);
+    for (std::size_t k = 0; k < kLanes; ++k) {
+        a_[k] = sa = mix(sa, k + 1);
+        b_[k] = sb = mix(sb, k + 1);
     }
 }
 
-void ScenePrint::add_word(uint64_t w) {
-    const std::size_t k = static_cast<std::size_t>(count % kLanes);
-    a[k] = mix(a[k], w);
-    b[k] = mix(b[k], w ^ (count * kPrime1));
-    ++count;
+// Word i of the stream goes to lane i mod 4: into a as it is, into b with its place mixed in.
+void ScenePrint::fold() {
+    uint64_t a0 = a_[0], a1 = a_[1], a2 = a_[2], a3 = a_[3];
+    uint64_t b0 = b_[0], b1 = b_[1], b2 = b_[2], b3 = b_[3];
+    const std::size_t n = static_cast<std::size_t>(filled_);
+    std::size_t i = 0;
+    uint64_t at = count_;
+    for (; i + kLanes <= n; i += kLanes, at += kLanes) {
+        a0 = mix(a0, words_[i]);
+        b0 = mix(b0, words_[i] ^ (at * kPrime1));
+        a1 = mix(a1, words_[i + 1]);
+        b1 = mix(b1, words_[i + 1] ^ ((at + 1) * kPrime1));
+        a2 = mix(a2, words_[i + 2]);
+        b2 = mix(b2, words_[i + 2] ^ ((at + 2) * kPrime1));
+        a3 = mix(a3, words_[i + 3]);
+        b3 = mix(b3, words_[i + 3] ^ ((at + 3) * kPrime1));
+    }
+    a_ = {a0, a1, a2, a3};
+    b_ = {b0, b1, b2, b3};
+    for (; i < n; ++i, ++at) { // (only at the end: a block is a whole number of turns)
+        const std::size_t k = static_cast<std::size_t>(at % kLanes);
+        a_[k] = mix(a_[k], words_[i]);
+        b_[k] = mix(b_[k], words_[i] ^ (at * kPrime1));
+    }
+    count_ = at;
+    filled_ = 0;
+}
+
+bool ScenePrint::operator==(const ScenePrint &o) const {
+    ScenePrint x = *this, y = o;
+    x.fold();
+    y.fold();
+    return !x.unknown_ && !y.unknown_ && x.a_ == y.a_ && x.b_ == y.b_ && x.count_ == y.count_;
 }
 
 void ScenePrint::add(double x) {
-    if (std::isnan(x)) unknown = true;
+    if (std::isnan(x)) unknown_ = true;
     if (x == 0.0) x = 0.0; // -0 as 0
     uint64_t w = 0;
     std::memcpy(&w, &x, sizeof w);
@@ -88,7 +116,7 @@ ScenePrint scene_print(const ani_physics_scene &scene, const KeyedEvaluator &eva
             const bool known = evaluate ? evaluate(i, m.key_times[k], s, v)
                                         : scene.evaluate_keyed(scene.host_context, i,
                                                                m.key_times[k], &s, &v) == ANI_OK;
-            if (!known) print.unknown = true; // equal to nothing
+            if (!known) print.unknowable(); // equal to nothing
             for (double x : {s.center.x, s.center.y, s.center.z, s.angles.x, s.angles.y, s.angles.z,
                              s.scale.x, s.scale.y, s.scale.z, v.x, v.y, v.z})
                 print.add(x);

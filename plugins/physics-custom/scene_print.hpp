@@ -12,31 +12,40 @@
 
 namespace physics_custom {
 
-// All of it, model after model, folded into hashes as it is read (nothing stored: the numbers
-// of a gas of 100,000 balls took 25 MB, written at every bake's start, a tenth of the bake's time
-// at that size; docs/performance.md, the gas), with how many numbers went in. The words are dealt
-// to four lanes in turn, each lane two 64-bit hashes (a word goes into both of its lane's), so
-// that eight chains of multiplications run side by side rather than two one after the other
-// (the print of 100,000 balls took 3.7% of their bake with two). Two prints of different scenes
-// are equal only if both hashes of a lane collide at once (about 2^-128 for unrelated numbers;
-// not a defence against a scene made to collide).
-struct ScenePrint {
+// All of it, model after model, folded into hashes as it is read (nothing kept: the numbers of
+// a gas of 100,000 balls took 25 MB, written at every bake's start, a tenth of the bake's time at
+// that size; docs/performance.md, the gas), with how many numbers went in. The words are dealt to
+// four lanes in turn, each lane two 64-bit hashes (a word goes into both of its lane's), a block
+// of words at a time with the lanes held in registers, so that eight chains of multiplications
+// run side by side (two chains, word after word through memory, took 3.7% of a bake of 100,000
+// balls). Two prints of different scenes are equal only if both hashes of a lane collide at once
+// (about 2^-128 for unrelated numbers; not a defence against a scene made to collide).
+class ScenePrint {
+  public:
     static constexpr int kLanes = 4;
-    std::array<uint64_t, kLanes> a{}, b{};
-    uint64_t count = 0;
-    bool unknown = false; // a key that could not be evaluated, or a number that is NaN
     ScenePrint();
-    bool operator==(const ScenePrint &o) const {
-        return !unknown && !o.unknown && a == o.a && b == o.b && count == o.count;
-    }
-    bool operator!=(const ScenePrint &o) const { return !(*this == o); }
     // Adds a number (0 and -0 alike, as == has them; a NaN makes the print equal to no other)
     // and an address (a mesh and its positions: the same view is the same mesh).
     void add(double x);
     void add(const void *p);
+    void unknowable() { unknown_ = true; } // a key that could not be evaluated
+    bool unknown() const { return unknown_; }
+    // Two prints of everything added.
+    bool operator==(const ScenePrint &o) const;
+    bool operator!=(const ScenePrint &o) const { return !(*this == o); }
 
   private:
-    void add_word(uint64_t w);
+    static constexpr int kBlock = 64;
+    void add_word(uint64_t w) {
+        words_[filled_++] = w;
+        if (filled_ == kBlock) fold();
+    }
+    void fold(); // the words waiting into the lanes
+    std::array<uint64_t, kLanes> a_{}, b_{};
+    uint64_t count_ = 0; // words folded
+    bool unknown_ = false;
+    int filled_ = 0;
+    std::array<uint64_t, kBlock> words_{};
 };
 
 // The keys' state of model m at t and their velocity there, or false when they cannot say.

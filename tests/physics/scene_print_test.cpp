@@ -115,7 +115,7 @@ TEST_CASE("a scene's print takes -0 as 0, and a key it cannot evaluate or a NaN 
 
     s.fails = true;
     const auto failing = scene_print(s.get());
-    CHECK(failing.unknown);
+    CHECK(failing.unknown());
     CHECK(failing != scene_print(s.get()));
     CHECK(failing != before);
 
