@@ -16,7 +16,8 @@ void CalendarQueue::init(const double *times, std::size_t n, double now, double 
     ring_ = std::max<std::size_t>(
         16, static_cast<std::size_t>(8.0 * static_cast<double>(n) / per_bucket));
     heap_.reserve(n);
-    slot_.assign(n, Slot{std::numeric_limits<double>::infinity(), 0, kNone, kNone});
+    slot_.assign(n, Slot{std::numeric_limits<double>::infinity(), 0, kNone});
+    next_.assign(n, kNone);
     head_.assign(ring_ + 1, kNone);
     base_ = std::max<std::int64_t>(bucket(now), 0);
     for (std::uint32_t i = 0; i < n; ++i) insert(i, times[i]);
@@ -25,8 +26,8 @@ void CalendarQueue::init(const double *times, std::size_t n, double now, double 
 void CalendarQueue::link(std::uint32_t i, std::size_t list) {
     slot_[i].where = -1 - static_cast<std::int32_t>(list);
     slot_[i].prev = kNone;
-    slot_[i].next = head_[list];
-    if (slot_[i].next != kNone) slot_[slot_[i].next].prev = i;
+    next_[i] = head_[list];
+    if (next_[i] != kNone) slot_[next_[i]].prev = i;
     head_[list] = i;
     ++listed_;
     far_ += list == ring_;
@@ -35,10 +36,10 @@ void CalendarQueue::link(std::uint32_t i, std::size_t list) {
 void CalendarQueue::unlink(std::uint32_t i) {
     const std::size_t list = static_cast<std::size_t>(-1 - slot_[i].where);
     if (slot_[i].prev != kNone)
-        slot_[slot_[i].prev].next = slot_[i].next;
+        next_[slot_[i].prev] = next_[i];
     else
-        head_[list] = slot_[i].next;
-    if (slot_[i].next != kNone) slot_[slot_[i].next].prev = slot_[i].prev;
+        head_[list] = next_[i];
+    if (next_[i] != kNone) slot_[next_[i]].prev = slot_[i].prev;
     --listed_;
     far_ -= list == ring_;
 }
@@ -79,7 +80,7 @@ bool CalendarQueue::next_bucket() {
     const auto ring = static_cast<std::int64_t>(ring_);
     if (listed_ == far_) { // the ring is empty: on to the turn of the far list's earliest
         std::int64_t first = kNever;
-        for (std::uint32_t k = head_[ring_]; k != kNone; k = slot_[k].next)
+        for (std::uint32_t k = head_[ring_]; k != kNone; k = next_[k])
             first = std::min(first, bucket(slot_[k].time));
         if (first >= kNever) return false;
         base_ = std::max(base_, first / ring * ring - 1);
@@ -91,7 +92,7 @@ bool CalendarQueue::next_bucket() {
         listed_ -= far_;
         far_ = 0;
         while (k != kNone) {
-            const std::uint32_t next = slot_[k].next;
+            const std::uint32_t next = next_[k];
             insert(k, slot_[k].time);
             k = next;
         }
@@ -100,7 +101,7 @@ bool CalendarQueue::next_bucket() {
     std::uint32_t k = head_[list];
     head_[list] = kNone;
     while (k != kNone) {
-        const std::uint32_t next = slot_[k].next;
+        const std::uint32_t next = next_[k];
         --listed_;
         heap_.emplace_back();
         sift(heap_.size() - 1, {slot_[k].time, k});
