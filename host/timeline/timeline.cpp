@@ -100,9 +100,9 @@ struct BakeContext {
 };
 
 // Runs f(begin, end) over [0, n), in two halves at once when n is large: the second half on a
-// thread of its own (a start costs about 50 us, a model's keyed start about 0.2 us: the interpolators'
-// evaluate may be called from any thread, interpolator.h). An exception in either half is
-// thrown here once both are done.
+// thread of its own (starting one costs about 50 us, a model's keyed start about 0.2 us; the
+// interpolators' evaluate may be called from any thread, interpolator.h). An exception in either
+// half is thrown here once both are done.
 template <class F> void in_two_halves(std::size_t n, F &&f) {
     constexpr std::size_t kWorthAThread = 4096;
     if (n < kWorthAThread || std::thread::hardware_concurrency() < 2) {

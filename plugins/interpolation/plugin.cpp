@@ -145,7 +145,8 @@ ani_status_code smooth_evaluate(void *instance, const ani_channel *channel, cons
                              interp::SmoothSettings settings;
                              settings.tension = self.params.number("tension");
                              settings.ease = self.params.number("ease") >= 0.5;
-                             interp::evaluate_curve(*interp::make_smooth_curve(c, settings), c.keys, c.key_count, out...);
+                             const auto curve = interp::make_smooth_curve(c, settings);
+                             interp::evaluate_curve(*curve, c.keys, c.key_count, out...);
                          });
 }
 
