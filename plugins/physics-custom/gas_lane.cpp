@@ -104,11 +104,7 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
               {coordinate(c.x, 0), coordinate(c.y, 1), coordinate(c.z, 2)});
         link(static_cast<uint32_t>(i));
     }
-    if (check && !clear(now)) {
-        admissible_ = false;
-        return;
-    }
-    if (!predict_all_pairs(now, check)) {
+    if ((check && !clear(now)) || !predict_all_pairs(now, check)) {
         admissible_ = false;
         return;
     }
@@ -216,15 +212,23 @@ struct Scanner {
     double now, x, y, z, vx, vy, vz, reach2, horizon;
 };
 
+// d = here - candidate k moved to now, as every root of a scan has it (the start's overlap check
+// reads the same numbers).
+inline void offset(const Batch &b, const Scanner &s, int k, double &dx, double &dy, double &dz) {
+    const double dt = s.now - b.t0[k];
+    dx = s.x - (b.x[k] + b.vx[k] * dt);
+    dy = s.y - (b.y[k] + b.vy[k] * dt);
+    dz = s.z - (b.z[k] + b.vz[k] * dt);
+}
+
 // sphere_sphere's stable root for every candidate of the batch, as sphere_sphere(here, r, there, r)
 // computes it (d = here - there, e = v - v_o; the same operations in the same order, so the same
 // numbers): infinity for one that is not approaching, does not meet, or meets no earlier than
 // the horizon. Several at a time where the processor can (the same operations on each).
 inline void roots_scalar(Batch &b, const Scanner &s, int from) {
     for (int k = from; k < b.n; ++k) {
-        const double dt = s.now - b.t0[k];
-        const double dx = s.x - (b.x[k] + b.vx[k] * dt), dy = s.y - (b.y[k] + b.vy[k] * dt),
-                     dz = s.z - (b.z[k] + b.vz[k] * dt);
+        double dx, dy, dz;
+        offset(b, s, k, dx, dy, dz);
         const double ex = s.vx - b.vx[k], ey = s.vy - b.vy[k], ez = s.vz - b.vz[k];
         const double qa = ex * ex + ey * ey + ez * ez, qb = dx * ex + dy * ey + dz * ez,
                      qc = dx * dx + dy * dy + dz * dz - s.reach2;
@@ -402,11 +406,8 @@ bool GasLane::predict_all_pairs(double now, bool check) {
         const auto take = [&] {
             solve(batch, s);
             for (int k = 0; check && k < batch.n; ++k) {
-                // (d as the roots have it: here - the candidate moved to now)
-                const double dt = now - batch.t0[k];
-                const double dx = s.x - (batch.x[k] + batch.vx[k] * dt),
-                             dy = s.y - (batch.y[k] + batch.vy[k] * dt),
-                             dz = s.z - (batch.z[k] + batch.vz[k] * dt);
+                double dx, dy, dz;
+                offset(batch, s, k, dx, dy, dz);
                 overlap |= dx * dx + dy * dy + dz * dz < closest2;
             }
             for (int k = 0; k < batch.n; ++k) {

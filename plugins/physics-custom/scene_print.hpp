@@ -29,6 +29,7 @@ class ScenePrint {
     void add(double x);
     void add(const void *p);
     void unknowable() { unknown_ = true; } // a key that could not be evaluated
+    // A key that could not be evaluated, or a number that is NaN: equal to no other print.
     bool unknown() const { return unknown_; }
     // Two prints of everything added.
     bool operator==(const ScenePrint &o) const;
