@@ -15,7 +15,10 @@
 #include <immintrin.h>
 #endif
 #include <cmath>
+#include <exception>
 #include <string>
+#include <system_error>
+#include <thread>
 
 namespace physics_custom {
 
@@ -30,6 +33,40 @@ void put(double *x, const glm::dvec3 &v) {
 }
 ani_vec3 ani(const glm::dvec3 &v) {
     return {v.x, v.y, v.z};
+}
+
+// here() on this thread and there() on another at once (or after it, without a thread to be
+// had), both done when it returns; an exception of either is thrown here then.
+template <class Here, class There> void side_by_side(Here &&here, There &&there) {
+    std::exception_ptr failed_there;
+    std::thread other;
+    try {
+        other = std::thread([&] {
+            try {
+                there();
+            } catch (...) {
+                failed_there = std::current_exception();
+            }
+        });
+    } catch (const std::system_error &) {
+    }
+    try {
+        here();
+    } catch (...) {
+        if (other.joinable()) other.join();
+        throw;
+    }
+    if (other.joinable())
+        other.join();
+    else
+        there();
+    if (failed_there) std::rethrow_exception(failed_there);
+}
+
+// f(from, to) over [0, n): in two halves at once when `two`.
+template <class F> void in_halves(bool two, std::size_t n, F &&f) {
+    if (!two) return f(std::size_t{0}, n);
+    side_by_side([&] { f(std::size_t{0}, n / 2); }, [&] { f(n / 2, n); });
 }
 } // namespace
 
@@ -89,30 +126,40 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     std::vector<uint32_t> filled(near_from_.begin(), near_from_.end() - 1);
     for (uint32_t k = 0; k < triangles_.size(); ++k)
         each_cell(triangles_[k].box, [&](std::size_t c) { near_[filled[c]++] = k; });
-    for (std::size_t i = 0; i < n; ++i) {
-        const Start &st = spheres[i];
-        Sphere &p = s_[i];
-        put(p.x, st.p);
-        put(p.v, st.v);
-        p.t0 = st.t0;
-        p.count = 0;
-        mass_[i] = st.mass;
-        model_[i] = st.model;
-        motion_[i] = st.motion;
-        const glm::dvec3 c = at(p, now);
-        place(static_cast<uint32_t>(i),
-              {coordinate(c.x, 0), coordinate(c.y, 1), coordinate(c.z, 2)});
-        link(static_cast<uint32_t>(i));
-    }
+    // (What is done per sphere, each sphere's alone, in two halves at once for many spheres.)
+    const bool two = n >= kWorthAThread;
+    in_halves(two, n, [&](std::size_t from, std::size_t to) {
+        for (std::size_t i = from; i < to; ++i) {
+            const Start &st = spheres[i];
+            Sphere &p = s_[i];
+            put(p.x, st.p);
+            put(p.v, st.v);
+            p.t0 = st.t0;
+            p.count = 0;
+            mass_[i] = st.mass;
+            model_[i] = st.model;
+            motion_[i] = st.motion;
+            const glm::dvec3 c = at(p, now);
+            place(static_cast<uint32_t>(i),
+                  {coordinate(c.x, 0), coordinate(c.y, 1), coordinate(c.z, 2)});
+        }
+    });
+    for (uint32_t i = 0; i < n; ++i) link(i);
     if ((check && !clear(now)) || !predict_all_pairs(now, check)) {
         admissible_ = false;
         return;
     }
     ani::HugeVector<double> times(n);
-    for (uint32_t i = 0; i < n; ++i) {
-        predict_move(i, now);
-        times[i] = std::min(e_[i].pair_time, e_[i].move_time);
-    }
+    std::size_t tests[2] = {0, 0};
+    in_halves(two, n, [&](std::size_t from, std::size_t to) {
+        std::size_t done = 0; // (its own: the two counts share a cache line)
+        for (std::size_t i = from; i < to; ++i) {
+            predict_move(static_cast<uint32_t>(i), now, done);
+            times[i] = std::min(e_[i].pair_time, e_[i].move_time);
+        }
+        tests[from != 0] = done;
+    });
+    counts_.done += tests[0] + tests[1];
     queue_.init(times.data(), n, now);
 }
 
@@ -388,6 +435,48 @@ void GasLane::predict_pairs(uint32_t i, double now) {
 // touching allowance (1e-6 r each: EventBake::overlaps_body): the squared distance of each pair
 // from the batch its root was computed from.
 bool GasLane::predict_all_pairs(double now, bool check) {
+    const std::size_t n = s_.size();
+    std::size_t tests = 0;
+    const int64_t layers = grid_.counts[2];
+    if (n < kWorthAThread || layers < 4) {
+        if (!all_pairs_of(now, check, tests, nullptr, n)) return false;
+    } else {
+        // In two halves at once: the spheres below the middle layer of cells but one, and those
+        // from it up. A sphere's pairs reach its own layer and the next, so the halves write
+        // apart (and each reads only its own spheres' events: listed first); the layer between
+        // them after. (Each sphere is offered the same roots; only the order of two offers from
+        // either side of that layer changes, which decides between exactly equal times alone.)
+        const int64_t middle = layers / 2;
+        std::vector<uint32_t> below, above, between;
+        below.reserve(n / 2);
+        above.reserve(n / 2);
+        for (uint32_t i = 0; i < n; ++i) {
+            const int32_t z = e_[i].cell[2];
+            (z < middle - 1 ? below : z >= middle ? above : between).push_back(i);
+        }
+        std::size_t tests_above = 0;
+        bool apart_below = true, apart_above = true;
+        side_by_side(
+            [&] { apart_below = all_pairs_of(now, check, tests, below.data(), below.size()); },
+            [&] {
+                apart_above = all_pairs_of(now, check, tests_above, above.data(), above.size());
+            });
+        tests += tests_above;
+        if (!(apart_below && apart_above &&
+              all_pairs_of(now, check, tests, between.data(), between.size())))
+            return false;
+    }
+    counts_.predictions += n;
+    counts_.done += tests;
+    counts_.skipped += n * (n - 1) / 2 - tests;
+    return true;
+}
+
+// predict_all_pairs for the spheres listed (ids[0, listed), or 0 to listed - 1 without a list),
+// its pair tests added to `tests_out`.
+bool GasLane::all_pairs_of(double now, bool check, std::size_t &tests_out, const uint32_t *ids,
+                           std::size_t listed) {
+    std::size_t tests = 0; // (added at the end: the other half's count may share its cache line)
     const double closest = (r_ + r_) * (1.0 - 1e-6), closest2 = closest * closest;
     const auto offer = [](Event &ev, double at, uint32_t who, uint32_t count) {
         if (at < ev.pair_time) { // (ties: the one offered first stays)
@@ -396,9 +485,9 @@ bool GasLane::predict_all_pairs(double now, bool check) {
             ev.partner_count = count;
         }
     };
-    std::size_t tests = 0;
     Batch batch;
-    for (uint32_t i = 0; i < s_.size(); ++i) {
+    for (std::size_t l = 0; l < listed; ++l) {
+        const uint32_t i = ids ? ids[l] : static_cast<uint32_t>(l);
         const Sphere &a = s_[i];
         const glm::dvec3 here = at(a, now), v = velocity(a, now);
         const Scanner s{now, here.x, here.y, here.z, v.x, v.y, v.z, reach2_, kInf};
@@ -429,10 +518,7 @@ bool GasLane::predict_all_pairs(double now, bool check) {
         take();
         if (overlap) return false;
     }
-    const std::size_t n = s_.size();
-    counts_.predictions += n;
-    counts_.done += tests;
-    counts_.skipped += n * (n - 1) / 2 - tests;
+    tests_out += tests;
     return true;
 }
 
@@ -441,13 +527,13 @@ bool GasLane::predict_all_pairs(double now, bool check) {
 // for a path without acceleration, written out: per axis, the face it moves towards, at
 // (face - p) / v, or at once when it is on that face or beyond it by rounding; ties go to the
 // lower axis.
-void GasLane::predict_move(uint32_t i, double now) {
+void GasLane::predict_move(uint32_t i, double now, std::size_t &done) {
     const Sphere &p = s_[i];
     Event &e = e_[i];
     e.move_time = kInf;
     e.triangle = kNone;
     const glm::dvec3 c = at(p, now), v = velocity(p, now);
-    if (falls_) return predict_fall(i, now, Path{c, v, a_});
+    if (falls_) return predict_fall(i, now, Path{c, v, a_}, done);
     if (v == glm::dvec3(0.0)) return; // still: it moves nowhere (the movers meet it)
     double limit = kInf;
     for (int a = 0; a < 3; ++a) {
@@ -490,7 +576,7 @@ void GasLane::predict_move(uint32_t i, double now) {
         if (!reach.overlaps(tri.box)) continue;
         const glm::dvec3 &n = tri.normal;
         if (n == glm::dvec3(0.0)) {
-            ++counts_.done;
+            ++done;
             if (auto hit = sphere_triangle(here, r_, tri.a, tri.b, tri.c, limit))
                 offer(near_[k], *hit);
             continue;
@@ -500,7 +586,7 @@ void GasLane::predict_move(uint32_t i, double now) {
         if (away + std::min(-closing * limit, 0.0) > far || (closing <= 0.0 && away >= off))
             continue;
         if (met && n == met->normal && tri.offset == met->offset) continue;
-        ++counts_.done;
+        ++done;
         if (away > r_ && closing > 0.0) {
             // sphere_triangle's common case written out: the plane at (away - r) / closing, met
             // inside the triangle (sphere_triangle's test).
@@ -538,7 +624,7 @@ void GasLane::predict_move(uint32_t i, double now) {
 
 // predict_move for a sphere under gravity: its cell's walls by first_exit, and the triangles of
 // its cell by sphere_triangle, on its parabola (`here`, from now).
-void GasLane::predict_fall(uint32_t i, double now, const Path &here) {
+void GasLane::predict_fall(uint32_t i, double now, const Path &here, std::size_t &done) {
     Event &e = e_[i];
     Box bounds;
     for (int a = 0; a < 3; ++a) {
@@ -559,7 +645,7 @@ void GasLane::predict_fall(uint32_t i, double now, const Path &here) {
     for (uint32_t k = e.near_from; k < e.near_to; ++k) {
         const Triangle &tri = triangles_[near_[k]];
         if (!reach.overlaps(tri.box)) continue;
-        ++counts_.done;
+        ++done;
         if (auto hit = sphere_triangle(here, r_, tri.a, tri.b, tri.c, limit)) {
             limit = hit->t;
             e.move_time = now + hit->t;

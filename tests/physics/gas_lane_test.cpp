@@ -153,3 +153,40 @@ TEST_CASE("the gas lane takes balls only when every pair is apart by the general
         }
     }
 }
+
+TEST_CASE(
+    "the gas lane's start in two halves finds two balls too close in either half or between") {
+    // 4,913 balls of radius 0.5 on a lattice 1.6 m apart (17 a side), cells 1.5 m wide: the start
+    // checks its pairs in two halves at once from 4,096 balls, below and above the middle layers
+    // of cells, then the layer between (GasLane::predict_all_pairs). One ball moved to 2r (1 -
+    // 2e-6) from its neighbour along x, low, in the middle or high, is found wherever it is.
+    const int side = 17;
+    GasLane::Grid g;
+    g.origin = glm::dvec3(-1.0);
+    g.cell = 1.5;
+    g.counts = {20, 20, 20};
+    const auto lattice = [&](int moved) {
+        std::vector<GasLane::Start> balls;
+        for (int k = 0; k < side * side * side; ++k) {
+            const glm::dvec3 at(k % side, (k / side) % side, k / (side * side));
+            balls.push_back(ball(static_cast<uint32_t>(k), at * 1.6, glm::dvec3(0.0, 0.0, 0.1)));
+        }
+        if (moved >= 0)
+            balls[static_cast<size_t>(moved)].p =
+                balls[static_cast<size_t>(moved) + 1].p - glm::dvec3(1.0 - 2e-6, 0.0, 0.0);
+        return balls;
+    };
+    const auto admissible = [&](int moved) {
+        const std::vector<GasLane::Start> balls = lattice(moved);
+        return GasLane(0.5, glm::dvec3(0.0), g, {},
+                       ani::HugeVector<GasLane::Start>(balls.begin(), balls.end()), 0.0, true)
+            .admissible();
+    };
+    CHECK(admissible(-1));
+    // Ball k's layer of cells is floor((1 + 1.6 z) / 1.5): z = 1 (layer 1, below), z = 8 (layer
+    // 9, the one between the halves: 20 / 2 - 1), z = 15 (layer 16, above).
+    for (int z : {1, 8, 15}) {
+        CAPTURE(z);
+        CHECK_FALSE(admissible(z * side * side + 3 * side + 5));
+    }
+}
