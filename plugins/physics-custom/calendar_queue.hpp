@@ -28,6 +28,13 @@ class CalendarQueue {
         return heap_[0].time;
     }
     std::uint32_t top() const { return heap_[0].item; }
+    // The item after the top in its bucket (kNone when the top is alone there): the next event's
+    // unless the top's update comes before it. (For fetching its records ahead.)
+    std::uint32_t second() const {
+        const std::size_t n = heap_.size();
+        if (n < 2) return kNone;
+        return n == 2 || heap_[1].before(heap_[2]) ? heap_[1].item : heap_[2].item;
+    }
     void update(std::uint32_t i, double time);
 
   private:

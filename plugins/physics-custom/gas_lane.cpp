@@ -771,6 +771,12 @@ bool GasLane::run(double t_begin, double t_end, Sink &sink) {
     t_end_ = t_end;
     for (double t = queue_.top_time(); t <= t_end; t = queue_.top_time()) {
         const uint32_t i = queue_.top();
+        // The event after this one is nearly always its bucket's second (this one's updates
+        // rarely come before it): its sphere fetched from memory while this one is done.
+        if (const uint32_t after = queue_.second(); after != kNone) {
+            __builtin_prefetch(&e_[after]);
+            __builtin_prefetch(&s_[after]);
+        }
         Event &e = e_[i];
         at_once_ = t == last_ ? at_once_ + 1 : 0;
         last_ = t;
