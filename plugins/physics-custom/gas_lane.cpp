@@ -78,7 +78,6 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     const std::size_t n = spheres.size();
     s_.resize(n);
     e_.assign(n, Event{});
-    mass_.resize(n);
     model_.resize(n);
     motion_.resize(n);
     contact_.resize(n);
@@ -136,7 +135,7 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
             put(p.v, st.v);
             p.t0 = st.t0;
             p.count = 0;
-            mass_[i] = st.mass;
+            e_[i].mass = st.mass;
             model_[i] = st.model;
             motion_[i] = st.motion;
             const glm::dvec3 c = at(p, now);
@@ -715,7 +714,7 @@ bool GasLane::collide(uint32_t i, uint32_t j, double t, Sink &sink) {
     const glm::dvec3 n = glm::length(between) > 0.0 ? glm::normalize(between) : glm::dvec3(0, 1, 0);
     const glm::dvec3 v = velocity(s_[i], t), vo = velocity(s_[j], t);
     if (grazing(v - vo, n)) return false;
-    const auto [va, vb] = elastic_exchange(mass_[i], v, mass_[j], vo, n);
+    const auto [va, vb] = elastic_exchange(e_[i].mass, v, e_[j].mass, vo, n);
     if (left_touching(i, ci, va) || left_touching(j, cj, vb)) return false;
     ani_collision_event ev{};
     ev.t = t;
@@ -773,10 +772,12 @@ bool GasLane::run(double t_begin, double t_end, Sink &sink) {
         const uint32_t i = queue_.top();
         // The event after this one is nearly always its bucket's second (this one's updates
         // rarely come before it): its sphere fetched from memory while this one is done.
-        if (const uint32_t after = queue_.second(); after != kNone) {
+        const uint32_t after = queue_.second();
+        if (after != kNone) {
             __builtin_prefetch(&e_[after]);
             __builtin_prefetch(&s_[after]);
         }
+        queue_.fetch(i); // (its place in the queue: updated at the end)
         Event &e = e_[i];
         at_once_ = t == last_ ? at_once_ + 1 : 0;
         last_ = t;
@@ -785,7 +786,8 @@ bool GasLane::run(double t_begin, double t_end, Sink &sink) {
                                                    " s without moving apart");
         if (e.pair_time <= e.move_time) {
             const uint32_t j = e.partner;
-            __builtin_prefetch(&e_[j]);           // (read after the collision: fetched meanwhile)
+            __builtin_prefetch(&e_[j]); // (read after the collision: fetched meanwhile)
+            queue_.fetch(j);
             if (s_[j].count != e.partner_count) { // j changed course since: predict i anew
                 ++counts_.stale;
                 predict_pairs(i, t);
@@ -814,6 +816,9 @@ bool GasLane::run(double t_begin, double t_end, Sink &sink) {
             }
             predict_move(i, t);
         }
+        // The partner of the next event's pair part, now that its record has come.
+        if (after != kNone && e_[after].pair_time <= e_[after].move_time)
+            __builtin_prefetch(&s_[e_[after].partner]);
         schedule(i);
         if (++counts_.events % 1024 == 0) sink.progress(t);
         // The next event's sphere, fetched while the queue finds it again.
@@ -835,7 +840,7 @@ GasLane::Start GasLane::state(std::size_t k) const {
     const Sphere &p = s_[k];
     Start st;
     st.model = model_[k];
-    st.mass = mass_[k];
+    st.mass = e_[k].mass;
     st.motion = motion_[k];
     st.t0 = p.t0;
     st.p = vec(p.x);

@@ -113,8 +113,8 @@ class GasLane {
         uint32_t next;  // the next sphere in its cell, or kNone
     };
     // A sphere's next event: the earlier of its earliest pair collision and its next move (a
-    // cell crossing, or a static model within its cell); and its cell, with that cell's
-    // triangles (near_[near_from, near_to)). One cache line, read at its events.
+    // cell crossing, or a static model within its cell); its cell, with that cell's triangles
+    // (near_[near_from, near_to)); and its mass. One cache line, read at its events.
     struct alignas(64) Event {
         double pair_time = kInf;
         uint32_t partner = kNone, partner_count = 0;
@@ -124,7 +124,9 @@ class GasLane {
         uint32_t near_from = 0, near_to = 0;
         uint32_t triangle = kNone; // met at move_time, with contact_ (or kNone: a crossing)
         int8_t axis = 0, direction = 0;
+        double mass = 1.0; // (here, not in an array of its own: read at its collisions)
     };
+    static_assert(sizeof(Event) == 64);
 
     glm::dvec3 at(const Sphere &p, double t) const;
     glm::dvec3 velocity(const Sphere &p, double t) const;
@@ -158,7 +160,6 @@ class GasLane {
     std::vector<Triangle> triangles_;
     ani::HugeVector<Sphere> s_;
     ani::HugeVector<Event> e_;
-    ani::HugeVector<double> mass_;
     ani::HugeVector<uint32_t> model_;
     ani::HugeVector<int> motion_;
     // The cells: a layer of empty cells around the grid's (no bounds tests); each cell's first
