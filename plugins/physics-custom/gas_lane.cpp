@@ -817,8 +817,10 @@ bool GasLane::run(double t_begin, double t_end, Sink &sink) {
             predict_move(i, t);
         }
         // The partner of the next event's pair part, now that its record has come.
-        if (after != kNone && e_[after].pair_time <= e_[after].move_time)
+        if (after != kNone && e_[after].pair_time <= e_[after].move_time) {
             __builtin_prefetch(&s_[e_[after].partner]);
+            __builtin_prefetch(&e_[e_[after].partner]);
+        }
         schedule(i);
         if (++counts_.events % 1024 == 0) sink.progress(t);
         // The next event's sphere, fetched while the queue finds it again.
