@@ -78,8 +78,7 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     const std::size_t n = spheres.size();
     s_.resize(n);
     e_.assign(n, Event{});
-    model_.resize(n);
-    motion_.resize(n);
+    as_reported_.resize(n);
     contact_.resize(n);
     prev_.assign(n, kNone);
     int64_t cells = 1;
@@ -136,8 +135,7 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
             p.t0 = st.t0;
             p.count = 0;
             e_[i].mass = st.mass;
-            model_[i] = st.model;
-            motion_[i] = st.motion;
+            as_reported_[i] = {st.model, st.motion};
             const glm::dvec3 c = at(p, now);
             place(static_cast<uint32_t>(i),
                   {coordinate(c.x, 0), coordinate(c.y, 1), coordinate(c.z, 2)});
@@ -687,8 +685,8 @@ void GasLane::emit(uint32_t i, double t, Sink &sink) const {
     const double from = std::max(p.t0, t_begin_);
     if (t <= from && !(t == t_end_ && from == t_end_)) return;
     ani_motion_segment s{};
-    s.model = model_[i];
-    s.motion = motion_[i];
+    s.model = as_reported_[i].model;
+    s.motion = as_reported_[i].motion;
     s.t0 = from;
     s.t1 = t;
     s.p0 = ani(from == p.t0 ? vec(p.x) : at(p, from));
@@ -704,7 +702,7 @@ void GasLane::restart(uint32_t i, double t, const glm::dvec3 &v, Sink &sink) {
     put(p.v, v);
     p.t0 = t;
     ++p.count;
-    motion_[i] = ANI_MOTION_FREE;
+    as_reported_[i].motion = ANI_MOTION_FREE;
 }
 
 // Two spheres meet at t: the elastic exchange between their masses along the line of centres
@@ -718,8 +716,8 @@ bool GasLane::collide(uint32_t i, uint32_t j, double t, Sink &sink) {
     if (left_touching(i, ci, va) || left_touching(j, cj, vb)) return false;
     ani_collision_event ev{};
     ev.t = t;
-    ev.a = model_[i];
-    ev.b = model_[j];
+    ev.a = as_reported_[i].model;
+    ev.b = as_reported_[j].model;
     ev.normal = ani(n);
     ev.point = ani(ci - n * r_);
     ev.speed = std::max(0.0, -glm::dot(v - vo, n));
@@ -739,7 +737,7 @@ bool GasLane::bounce(uint32_t i, double t, Sink &sink) {
     if (left_touching(i, at(s_[i], t), v1)) return false;
     ani_collision_event ev{};
     ev.t = t;
-    ev.a = model_[i];
+    ev.a = as_reported_[i].model;
     ev.b = triangles_[e.triangle].model;
     ev.normal = ani(n);
     ev.point = ani(contact.point);
@@ -776,6 +774,7 @@ bool GasLane::run(double t_begin, double t_end, Sink &sink) {
         if (after != kNone) {
             __builtin_prefetch(&e_[after]);
             __builtin_prefetch(&s_[after]);
+            __builtin_prefetch(&as_reported_[after]);
         }
         queue_.fetch(i); // (its place in the queue: updated at the end)
         Event &e = e_[i];
@@ -820,6 +819,7 @@ bool GasLane::run(double t_begin, double t_end, Sink &sink) {
         if (after != kNone && e_[after].pair_time <= e_[after].move_time) {
             __builtin_prefetch(&s_[e_[after].partner]);
             __builtin_prefetch(&e_[e_[after].partner]);
+            __builtin_prefetch(&as_reported_[e_[after].partner]);
         }
         schedule(i);
         if (++counts_.events % 1024 == 0) sink.progress(t);
@@ -841,9 +841,9 @@ void GasLane::close(double t_begin, double t_end, Sink &sink) {
 GasLane::Start GasLane::state(std::size_t k) const {
     const Sphere &p = s_[k];
     Start st;
-    st.model = model_[k];
+    st.model = as_reported_[k].model;
     st.mass = e_[k].mass;
-    st.motion = motion_[k];
+    st.motion = as_reported_[k].motion;
     st.t0 = p.t0;
     st.p = vec(p.x);
     st.v = vec(p.v);

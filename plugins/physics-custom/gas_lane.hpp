@@ -160,8 +160,13 @@ class GasLane {
     std::vector<Triangle> triangles_;
     ani::HugeVector<Sphere> s_;
     ani::HugeVector<Event> e_;
-    ani::HugeVector<uint32_t> model_;
-    ani::HugeVector<int> motion_;
+    // Each sphere's model and how its motion is reported (FREE, or REST until it first moves):
+    // read together at its events, so side by side (fetched ahead with its records).
+    struct AsReported {
+        uint32_t model;
+        int motion;
+    };
+    ani::HugeVector<AsReported> as_reported_;
     // The cells: a layer of empty cells around the grid's (no bounds tests); each cell's first
     // sphere, each sphere's previous one, and each cell's triangles (CSR).
     std::array<int64_t, 3> stride_{};
