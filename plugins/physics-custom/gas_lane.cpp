@@ -763,6 +763,23 @@ bool GasLane::cross(uint32_t i, double now) {
     return true;
 }
 
+// What sphere k's event will read, fetched from memory while the event before it is done, now
+// that k's event record has come (asked for at that event's start): the partner of a pair part;
+// for a crossing, the sphere's place in its cell's list and the cell it enters.
+void GasLane::fetch_ahead(uint32_t k) const {
+    const Event &e = e_[k];
+    if (e.pair_time <= e.move_time && e.partner != kNone) {
+        __builtin_prefetch(&s_[e.partner]);
+        __builtin_prefetch(&e_[e.partner]);
+        __builtin_prefetch(&as_reported_[e.partner]);
+    } else if (e.triangle == kNone) {
+        const int64_t to = e.index + e.direction * stride_[static_cast<std::size_t>(e.axis)];
+        __builtin_prefetch(&prev_[k]);
+        __builtin_prefetch(&head_[static_cast<std::size_t>(to)]);
+        __builtin_prefetch(&near_from_[static_cast<std::size_t>(to)]);
+    }
+}
+
 bool GasLane::run(double t_begin, double t_end, Sink &sink) {
     t_begin_ = t_begin;
     t_end_ = t_end;
@@ -815,12 +832,7 @@ bool GasLane::run(double t_begin, double t_end, Sink &sink) {
             }
             predict_move(i, t);
         }
-        // The partner of the next event's pair part, now that its record has come.
-        if (after != kNone && e_[after].pair_time <= e_[after].move_time) {
-            __builtin_prefetch(&s_[e_[after].partner]);
-            __builtin_prefetch(&e_[e_[after].partner]);
-            __builtin_prefetch(&as_reported_[e_[after].partner]);
-        }
+        if (after != kNone) fetch_ahead(after);
         schedule(i);
         if (++counts_.events % 1024 == 0) sink.progress(t);
         // The next event's sphere, fetched while the queue finds it again.

@@ -143,6 +143,7 @@ class GasLane {
     void predict_move(uint32_t i, double now, std::size_t &done); // its tests added to done
     void predict_fall(uint32_t i, double now, const Path &here, std::size_t &done);
     void schedule(uint32_t i);
+    void fetch_ahead(uint32_t k) const;
     bool left_touching(uint32_t i, const glm::dvec3 &c, const glm::dvec3 &v) const;
     bool grazing(const glm::dvec3 &relative, const glm::dvec3 &n) const;
     void restart(uint32_t i, double t, const glm::dvec3 &v, Sink &sink);
