@@ -115,6 +115,7 @@ bool EventBake::gas_from_scene() {
     ani::HugeVector<Material> materials; // (at 100,000 balls 10 MB: huge_pages.hpp)
     materials.reserve(n);
     std::vector<uint32_t> spheres, walls;
+    spheres.reserve(n);
     double r = -1.0;
     for (uint32_t i = 0; i < n; ++i) {
         const ani_physics_model &m = scene_->models[i];
@@ -137,6 +138,7 @@ bool EventBake::gas_from_scene() {
         (options_.broad_phase == BroadPhase::kAutomatic && spheres.size() < kGridFrom))
         return false;
     std::vector<const Material *> balls, wall_materials;
+    balls.reserve(spheres.size());
     for (uint32_t i : spheres) balls.push_back(&materials[i]);
     for (uint32_t w : walls) wall_materials.push_back(&materials[w]);
     if (!elastic(balls, wall_materials)) return false;
