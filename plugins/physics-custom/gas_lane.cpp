@@ -121,9 +121,12 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     for (std::size_t c = 0; c < static_cast<std::size_t>(cells); ++c)
         near_from_[c + 1] += near_from_[c];
     near_.resize(near_from_.back());
-    std::vector<uint32_t> filled(near_from_.begin(), near_from_.end() - 1);
+    // (Each cell's start used as its cursor, leaving it at the next cell's start: moved back up
+    // one cell after. No copy of the starts: at 100,000 balls 800 KB in fresh pages a bake.)
     for (uint32_t k = 0; k < triangles_.size(); ++k)
-        each_cell(triangles_[k].box, [&](std::size_t c) { near_[filled[c]++] = k; });
+        each_cell(triangles_[k].box, [&](std::size_t c) { near_[near_from_[c]++] = k; });
+    std::copy_backward(near_from_.begin(), near_from_.end() - 1, near_from_.end());
+    near_from_[0] = 0;
     // (What is done per sphere, each sphere's alone, in two halves at once for many spheres.)
     const bool two = n >= kWorthAThread;
     in_halves(two, n, [&](std::size_t from, std::size_t to) {

@@ -173,7 +173,8 @@ class GasLane {
     std::array<int64_t, 3> stride_{};
     ani::HugeVector<uint32_t> head_, prev_;
     ani::HugeVector<Contact> contact_; // each sphere's with the triangle of its event, if any
-    std::vector<uint32_t> near_from_, near_;
+    ani::HugeVector<uint32_t> near_from_; // (a value per cell: 2 MB pages, kept when freed)
+    std::vector<uint32_t> near_;
     int64_t around_[27];
     int64_t beyond_[6][9]; // after a crossing along axis a, way d: the 9 new cells, at 2a + d
     CalendarQueue queue_;
