@@ -172,7 +172,7 @@ class GasLane {
     // sphere, each sphere's previous one, and each cell's triangles (CSR).
     std::array<int64_t, 3> stride_{};
     ani::HugeVector<uint32_t> head_, prev_;
-    ani::HugeVector<Contact> contact_; // each sphere's with the triangle of its event, if any
+    ani::HugeVector<Contact> contact_;    // each sphere's with the triangle of its event, if any
     ani::HugeVector<uint32_t> near_from_; // (a value per cell: 2 MB pages, kept when freed)
     std::vector<uint32_t> near_;
     int64_t around_[27];
