@@ -69,32 +69,30 @@ struct BakeContext {
     // Chunks of 6 MB, in huge pages (huge_pages.hpp).
     static constexpr std::size_t kChunk = 1 << 16;
     std::vector<ani::HugeVector<ani_motion_segment>> log = {};
-    std::size_t logged = 0;
     // Each logged segment's model, in order: counted by model when filed. (Counted as they came,
     // each count was a cache miss in the middle of the bake's loop, 3% of a bake of 100,000
     // balls; counted together they overlap, and no pass over the log is needed.)
     ani::HugeVector<uint32_t> logged_models = {};
-    std::vector<uint32_t> logged_of = std::vector<uint32_t>(segments->models(), 0); // per model
 
     void log_segment(const ani_motion_segment &s) {
+        const std::size_t logged = logged_models.size();
         if (logged == log.size() * kChunk) log.emplace_back().reserve(kChunk);
         log[logged / kChunk].push_back(s);
         logged_models.push_back(s.model);
-        ++logged;
     }
     template <class F> void each_logged(F &&f) const {
+        const std::size_t logged = logged_models.size();
         for (std::size_t k = 0; k < logged; k += kChunk) {
             const ani_motion_segment *chunk = log[k / kChunk].data();
             for (std::size_t i = 0, n = std::min(kChunk, logged - k); i < n; ++i) f(chunk[i]);
         }
     }
     void file_segments() {
+        std::vector<uint32_t> logged_of(segments->models(), 0); // per model
         for (uint32_t m : logged_models) ++logged_of[m];
         segments->append(logged_of, [&](auto &&put) { each_logged(put); });
         for (auto &chunk : log) chunk.clear();
         logged_models.clear();
-        logged = 0;
-        std::fill(logged_of.begin(), logged_of.end(), 0u);
     }
 
     // Refuses the bake for model `model`'s segment of `kind` at t0 when `why` says something.
