@@ -45,7 +45,7 @@ GpuTexture GpuTexture::cube_map(const std::array<Image, 6> &faces) {
     glBindTexture(GL_TEXTURE_CUBE_MAP, name);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (GLenum i = 0; i < 6; ++i)
-        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + i, 0, GL_RGB8, faces[i].width,
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + i, 0, GL_RGBA8, faces[i].width,
                      faces[i].height, 0, GL_RGB, GL_UNSIGNED_BYTE, faces[i].rgb.data());
     glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);

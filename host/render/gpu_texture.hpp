@@ -17,8 +17,9 @@ class GpuTexture {
     // mipmaps and linear filtering, repeating.
     static GpuTexture image_2d(const Image &image);
     // A cube map from faces in GL order (+X, -X, +Y, -Y, +Z, -Z: right, left, top, bottom,
-    // front, back), uploaded unflipped as docs/assets.md says. Throws RenderError for faces that
-    // are not squares of one size.
+    // front, back), uploaded unflipped as docs/assets.md says, RGBA8 with every mipmap level (so
+    // a level can be copied into a reflection's cube map: ReflectionProbes::Sky). Throws
+    // RenderError for faces that are not squares of one size.
     static GpuTexture cube_map(const std::array<Image, 6> &faces);
     // A cube map of one colour everywhere: what reflection and refraction see without a skybox.
     static GpuTexture solid_cube_map(const glm::vec3 &colour);

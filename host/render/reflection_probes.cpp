@@ -96,8 +96,12 @@ glm::dmat4 ReflectionProbes::face_projection(double near, double far) {
     return glm::perspective(glm::radians(90.0), 1.0, near, far);
 }
 
+bool ReflectionProbes::copies_sky() {
+    return GLAD_GL_ARB_copy_image != 0;
+}
+
 void ReflectionProbes::draw(
-    int model, int size, const glm::dvec3 &centre, const glm::vec3 &background,
+    int model, int size, const glm::dvec3 &centre, const glm::vec3 &background, const Sky *sky,
     const std::function<void(const glm::dmat4 &, const glm::dmat4 &)> &draw_face) {
     Probe &probe = probes_[model];
     if (probe.size != size) {
@@ -130,6 +134,12 @@ void ReflectionProbes::draw(
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
         depth_size_ = size;
     }
+    // The sky under everything, its six faces in one copy (a memcpy on llvmpipe, where drawing
+    // it into each face was a sixth of a probe's time): what the probe's faces would draw of it,
+    // their pixel centres on that level's texel centres.
+    if (sky)
+        glCopyImageSubData(sky->texture, GL_TEXTURE_CUBE_MAP, sky->level, 0, 0, 0, probe.texture,
+                           GL_TEXTURE_CUBE_MAP, 0, 0, 0, 0, size, size, 6);
     glViewport(0, 0, size, size);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_STENCIL_TEST);
@@ -144,7 +154,7 @@ void ReflectionProbes::draw(
                                probe.texture, 0);
         if (f == 0 && glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
             throw RenderError("a reflection cube map cannot be drawn into");
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glClear(sky ? GL_DEPTH_BUFFER_BIT : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         draw_face(face_view(f, centre), projection);
     }
     unleveled_.push_back(model);

@@ -31,10 +31,21 @@ class ReflectionProbes {
     // A square 90-degree perspective from `near` to `far`.
     static glm::dmat4 face_projection(double near, double far);
 
-    // Draws model `model`'s cube map, `size` pixels a side, from `centre`: for each face, binds
-    // it as the framebuffer (with a depth buffer), clears it to `background` and calls
-    // draw_face(view, projection). Leaves the framebuffer it bound bound.
+    // A cube map (RGBA8) whose level `level` has faces as large as the probes': the skybox, the
+    // same from every centre, copied into a probe instead of drawn into each of its faces.
+    struct Sky {
+        unsigned texture = 0;
+        int level = 0;
+    };
+    // Whether draw() can copy a Sky (GL_ARB_copy_image, core in OpenGL 4.3).
+    static bool copies_sky();
+
+    // Draws model `model`'s cube map, `size` pixels a side, from `centre`: copies `sky` into it
+    // when given (copies_sky() must be true), then for each face binds it as the framebuffer
+    // (with a depth buffer), clears it (its depth only over a sky, else to `background` too) and
+    // calls draw_face(view, projection). Leaves the framebuffer it bound bound.
     void draw(int model, int size, const glm::dvec3 &centre, const glm::vec3 &background,
+              const Sky *sky,
               const std::function<void(const glm::dmat4 &, const glm::dmat4 &)> &draw_face);
     // Makes the mipmap levels of the cube maps drawn since the last call: call it after the
     // last draw() of a frame, before the cube maps are sampled.

@@ -10,6 +10,7 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <tuple>
 #include <iostream>
 #include <limits>
@@ -51,7 +52,9 @@ Renderer::Renderer(PluginRegistry &plugins, const AssetPaths &assets, RenderOpti
     skybox_cube_ = std::make_unique<GpuMesh>(GpuMesh::skybox_cube());
 }
 
-Renderer::~Renderer() = default;
+Renderer::~Renderer() {
+    if (sky_sampler_) glDeleteSamplers(1, &sky_sampler_);
+}
 
 void Renderer::set_document(const Document &doc,
                             const std::vector<std::shared_ptr<const Mesh>> &meshes) {
@@ -100,6 +103,7 @@ void Renderer::load_skybox(const std::string &id) {
             faces[i] = load_image(file);
         }
         skybox_ = GpuTexture::cube_map(faces);
+        skybox_size_ = faces[0].width;
     } catch (const std::exception &e) {
         log_("skybox '" + id + "' cannot be loaded: " + e.what() + "; drawing without it");
     }
@@ -250,7 +254,7 @@ void Renderer::order_front_to_back(std::vector<std::pair<std::uint32_t, int>> &d
         draws[k] = {std::get<1>(keyed[k]), std::get<3>(keyed[k])};
 }
 
-void Renderer::draw_skybox() {
+void Renderer::draw_skybox(int pixels_high) {
     const LinkedProgram &program = programs_->get(ANI_SHADE_SKYBOX_PASS);
     stats_.features_used |= ANI_SHADE_SKYBOX_PASS;
     glUseProgram(program.shader->name());
@@ -258,6 +262,26 @@ void Renderer::draw_skybox() {
     current_program_ = &program; // so that the next model binds its own
     bind(kSkyboxUnit, GL_TEXTURE_CUBE_MAP, skybox_->name(), stats_.cube_map_binds);
     apply_uniforms(program, *programs_, frame_uniforms_, nullptr);
+    // The sky's texels per pixel are nearly the same over the whole view, so the pass samples one
+    // level chosen here (the shading plugin's skybox pass samples at the least level its sampler
+    // allows, docs/sdk.md) instead of each pixel working its level out from its neighbours': a
+    // third of the sky's cost on llvmpipe. The level of the view's centre, where a face of N
+    // texels spans 2 / projection[1][1] of the tangent plane over `pixels_high` pixels: 0 for
+    // the view (the sky is magnified), 1 for a 128-pixel cube map of a 256-texel sky.
+    if (!sky_sampler_) {
+        glGenSamplers(1, &sky_sampler_);
+        glSamplerParameteri(sky_sampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glSamplerParameteri(sky_sampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+            glSamplerParameteri(sky_sampler_, wrap, GL_CLAMP_TO_EDGE);
+    }
+    const double texels_per_pixel =
+        static_cast<double>(skybox_size_) /
+        (std::abs(static_cast<double>(frame_uniforms_.projection[1][1])) *
+         std::max(pixels_high, 1));
+    glSamplerParameterf(sky_sampler_, GL_TEXTURE_MIN_LOD,
+                        static_cast<float>(std::max(0.0, std::log2(texels_per_pixel))));
+    glBindSampler(kSkyboxUnit, sky_sampler_);
     // The seed drew it first without writing depth, so that every model covers it; it is drawn
     // after the opaque models instead, at the far plane's depth (glDepthRange(1, 1)) where the
     // depth buffer is still cleared to it (GL_LEQUAL), so only the pixels no model covers run its
@@ -273,6 +297,7 @@ void Renderer::draw_skybox() {
     glGetBooleanv(GL_STENCIL_TEST, &stencil);
     glDisable(GL_STENCIL_TEST);
     skybox_cube_->draw();
+    glBindSampler(kSkyboxUnit, 0);
     if (stencil) glEnable(GL_STENCIL_TEST);
     glDepthMask(GL_TRUE);
     glDepthRange(0.0, 1.0);
@@ -407,6 +432,12 @@ void Renderer::draw_reflections() {
     const glm::dvec3 camera_eye = eye_;
     const glm::dmat4 view = view_, view_projection = view_projection_;
     const Frustum frustum = frustum_;
+    // The skybox's level as large as a cube map's faces, when it has one and it can be copied:
+    // then it is copied into each cube map and not drawn into its faces (the same pixels).
+    std::optional<ReflectionProbes::Sky> sky;
+    if (skybox_ && options_.reflection_size > 0 && ReflectionProbes::copies_sky())
+        for (int level = 0; (skybox_size_ >> level) >= options_.reflection_size; ++level)
+            if (skybox_size_ == options_.reflection_size << level) sky = {skybox_->name(), level};
     for (const auto &[distance, m] : wanted) {
         glm::dvec3 centre;
         double radius = 0.0;
@@ -421,6 +452,7 @@ void Renderer::draw_reflections() {
         };
         probing_ = m;
         probes_.draw(m, options_.reflection_size, centre, options_.background,
+                     sky ? &*sky : nullptr,
                      [&](const glm::dmat4 &face_view, const glm::dmat4 &projection) {
                          frame_uniforms_.view = glm::mat4(face_view);
                          frame_uniforms_.projection = glm::mat4(projection);
@@ -433,9 +465,10 @@ void Renderer::draw_reflections() {
                          glDepthFunc(GL_LESS);
                          for (const auto &[features, o] : by_program_)
                              if (o != m && visible(o) && around(o)) draw_model(o, false, 0);
-                         if (skybox_) draw_skybox();
+                         if (skybox_ && !sky) draw_skybox(options_.reflection_size);
                      });
         ++stats_.reflection_maps;
+        if (sky) ++stats_.skies_copied;
     }
     probes_.finish();
     probing_ = -1;
@@ -467,7 +500,10 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     glStencilMask(0xFF);
     glClearColor(options_.background.r, options_.background.g, options_.background.b, 1.0f);
     glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    // With a skybox every pixel is written (a model's or the sky's, drawn where no model is): the
+    // colour is not cleared first (a whole buffer's writes, four samples a pixel with
+    // anti-aliasing).
+    glClear((skybox_ ? 0 : GL_COLOR_BUFFER_BIT) | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glDisable(GL_SCISSOR_TEST);
 
     glEnable(GL_DEPTH_TEST);
@@ -499,7 +535,8 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     // depth test makes the order invisible (but where two models' surfaces coincide).
     order_front_to_back(by_program_);
     for (const auto &[features, m] : by_program_) draw_model(m, selected.count(m) > 0, 0);
-    if (skybox_) draw_skybox(); // behind the opaque models, only where none is (draw_skybox)
+    // The skybox behind the opaque models, only where none is (draw_skybox).
+    if (skybox_) draw_skybox(target.height);
     // Transparent models last, the farthest first, each seen from outside only.
     std::sort(transparent_.begin(), transparent_.end());
     glEnable(GL_CULL_FACE);

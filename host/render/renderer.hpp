@@ -95,6 +95,7 @@ struct RenderStats {
     std::size_t shadow_one_sided = 0; // of those, drawn one-sided (closed, the light outside)
     bool skybox_drawn = false;
     std::size_t reflection_maps = 0; // cube maps of the models around drawn (six faces each)
+    std::size_t skies_copied = 0;    // of those, with the skybox copied in, not drawn
     // Triangles of models drawn, summed over every pass (shadow maps, cube maps, the view), and
     // how many of them levels of detail left out.
     std::size_t triangles = 0;
@@ -170,7 +171,8 @@ class Renderer {
     std::size_t counted_level(int model);
     const GpuTexture *texture(const std::string &id);
     void load_skybox(const std::string &id);
-    void draw_skybox();
+    // The skybox behind what is drawn, into a viewport `pixels_high` pixels high.
+    void draw_skybox(int pixels_high);
     // The view's opaque draws (by_program_) in the order they are drawn.
     void order_front_to_back(std::vector<std::pair<std::uint32_t, int>> &draws) const;
     // The features model m is drawn with, less `without` (and its texture, when `image`).
@@ -197,6 +199,8 @@ class Renderer {
     std::map<std::string, std::optional<GpuTexture>> textures_; // by id; empty when unloadable
     std::string skybox_id_;
     std::optional<GpuTexture> skybox_;
+    int skybox_size_ = 0;       // its faces' side in texels
+    unsigned sky_sampler_ = 0; // the skybox pass's (draw_skybox), made on its first draw
     std::optional<GpuTexture> background_cube_; // reflection and refraction without a skybox
     std::unique_ptr<GpuMesh> skybox_cube_;
     std::unique_ptr<PickingPass> picking_;

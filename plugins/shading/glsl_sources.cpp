@@ -212,7 +212,7 @@ void main() {
 )glsl";
 
 // The seed's skybox: a cube around the camera turned by the camera's rotation only, so its sides
-// seem infinitely far away. The host draws it first, without depth, so everything covers it.
+// seem infinitely far away. The host draws it behind the models, where none is (Renderer::draw_skybox).
 const char *const kSkyboxVertexBody = R"glsl(
 layout(location = 0) in vec3 position;
 
@@ -235,7 +235,9 @@ uniform samplerCube skybox;
 out vec4 colour;
 
 void main() {
-    colour = vec4(texture(skybox, direction).rgb, 1.0);
+    // At the least level the host's sampler allows: the level that fits the view (docs/sdk.md),
+    // without each pixel's own worked out from its neighbours' directions.
+    colour = vec4(textureLod(skybox, direction, 0.0).rgb, 1.0);
 }
 )glsl";
 

@@ -177,6 +177,41 @@ TEST_CASE("a glass ball refracts what is behind and above it into its lower half
     CHECK(problem.empty());
 }
 
+TEST_CASE("a mirror alone reflects the sky through its cube map as it reflects the skybox") {
+    // Nothing else around it: its cube map holds only the sky, copied from the skybox's level as
+    // large as its faces (256 texels, 128 pixels: level 1) where it can be, drawn where not (96
+    // pixels). Either way the mirror shows what it shows with the skybox itself, but for the
+    // cube map's resolution. A face copied to the wrong place, or turned, would show another
+    // part of the sky (the day sky's ground, the sun).
+    Document doc = make_document(make_camera({0, 0, 4}, 0, 0), false, "day");
+    Model mirror = make_model("mirror", "sphere", {0.5, 0.5, 0.5});
+    mirror.reflectivity = 1.0;
+    doc.add_model(mirror, make_state({0, 0, 0}));
+    const Rendered sky = render_document(doc, kWidth, kHeight, {}, with_reflections(0));
+    for (int size : {128, 96}) {
+        const Rendered on = render_document(doc, kWidth, kHeight, {}, with_reflections(size));
+        CHECK(on.stats.reflection_maps == 1);
+        CHECK(on.stats.skies_copied == (size == 128 && ReflectionProbes::copies_sky() ? 1u : 0u));
+        // Over the ball's disk (radius 1 seen from 4: within 0.9 of its centre on screen).
+        const glm::dvec2 c = pixel_of(doc, {0, 0, 0}), edge = pixel_of(doc, {0.9, 0, 0});
+        const double r = edge.x - c.x;
+        double sum = 0.0;
+        int worst = 0, looked = 0;
+        for (int y = int(c.y - r); y <= int(c.y + r); ++y)
+            for (int x = int(c.x - r); x <= int(c.x + r); ++x) {
+                if ((x - c.x) * (x - c.x) + (y - c.y) * (y - c.y) > r * r) continue;
+                const glm::ivec3 d = glm::abs(pixel(on.image, x, y) - pixel(sky.image, x, y));
+                sum += d.r + d.g + d.b;
+                worst = std::max({worst, d.r, d.g, d.b});
+                ++looked;
+            }
+        CAPTURE(size, looked, sum / (3.0 * looked), worst);
+        CHECK(looked > 1000);
+        CHECK(sum / (3.0 * looked) < 3.0);
+        CHECK(worst < 48);
+    }
+}
+
 TEST_CASE("the models around a reflective one are drawn as without reflections of other models") {
     // Drawing the cube maps (a skybox and plain models in each face) leaves nothing behind for
     // the frame: a plain sphere beside a glass cube and a mirror ball is the same pixel for pixel
@@ -301,7 +336,7 @@ int worst_level_error(ReflectionProbes &probes, int side) {
 // that each texel of level 1 and 2 averages four different ones.
 void draw_checkered(ReflectionProbes &probes, int side) {
     int face = 0;
-    probes.draw(0, side, glm::dvec3(0.0), glm::vec3(0.0f), [&](const glm::dmat4 &, const glm::dmat4 &) {
+    probes.draw(0, side, glm::dvec3(0.0), glm::vec3(0.0f), nullptr, [&](const glm::dmat4 &, const glm::dmat4 &) {
         glEnable(GL_SCISSOR_TEST);
         for (int y = 0; y < side; ++y)
             for (int x = 0; x < side; ++x) {

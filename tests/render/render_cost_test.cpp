@@ -91,9 +91,9 @@ TEST_CASE("each effect binds what it needs, once") {
         set_model(doc, "a", [](Model &m) { m.reflectivity = 0.7; });
         const Rendered r = render_document(doc);
         CHECK(r.stats.reflection_maps == 1);
-        // The skybox (in its cube map), its own (for it, in the view), then the skybox again
-        // (behind the opaque models, drawn after them).
-        CHECK(r.stats.cube_map_binds == 3);
+        // Its own (for it, in the view), then the skybox (behind the opaque models, drawn after
+        // them); and the skybox first in its cube map where it is drawn there, not copied.
+        CHECK(r.stats.cube_map_binds == (r.stats.skies_copied ? 2 : 3));
         CHECK(r.stats.texture_binds == 0);
     }
     SECTION("cel shading and a selection") {
