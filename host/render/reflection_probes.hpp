@@ -30,6 +30,9 @@ class ReflectionProbes {
     static glm::dmat4 face_view(int face, const glm::dvec3 &centre);
     // A square 90-degree perspective from `near` to `far`.
     static glm::dmat4 face_projection(double near, double far);
+    // What draw() draws a face with: face_projection(kNear, kFar) * face_view(face, centre).
+    static glm::dmat4 face_view_projection(int face, const glm::dvec3 &centre);
+    static constexpr double kNear = 0.05, kFar = 1000.0;
 
     // A cube map (RGBA8) whose level `level` has faces as large as the probes': the skybox, the
     // same from every centre, copied into a probe instead of drawn into each of its faces.
@@ -43,9 +46,11 @@ class ReflectionProbes {
     // Draws model `model`'s cube map, `size` pixels a side, from `centre`: copies `sky` into it
     // when given (copies_sky() must be true), then for each face binds it as the framebuffer
     // (with a depth buffer), clears it (its depth only over a sky, else to `background` too) and
-    // calls draw_face(view, projection). Leaves the framebuffer it bound bound.
+    // calls draw_face(view, projection). Over a sky only the faces whose bits `faces` has set
+    // (1 << face) are drawn: the others, where nothing is seen, keep the sky. Leaves the
+    // framebuffer it bound bound.
     void draw(int model, int size, const glm::dvec3 &centre, const glm::vec3 &background,
-              const Sky *sky,
+              const Sky *sky, unsigned faces,
               const std::function<void(const glm::dmat4 &, const glm::dmat4 &)> &draw_face);
     // Makes the mipmap levels of the cube maps drawn since the last call: call it after the
     // last draw() of a frame, before the cube maps are sampled.

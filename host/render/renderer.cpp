@@ -450,10 +450,21 @@ void Renderer::draw_reflections() {
             bounds_of(o, c, r);
             return glm::length(c - centre) >= radius;
         };
+        // The faces that see any of them (over a copied sky the others are left as they are).
+        unsigned faces = 0;
+        for (int f = 0; f < 6; ++f) {
+            frustum_ = Frustum(ReflectionProbes::face_view_projection(f, centre));
+            for (const auto &[features, o] : by_program_)
+                if (o != m && visible(o) && around(o)) {
+                    faces |= 1u << f;
+                    break;
+                }
+        }
         probing_ = m;
         probes_.draw(m, options_.reflection_size, centre, options_.background,
-                     sky ? &*sky : nullptr,
+                     sky ? &*sky : nullptr, faces,
                      [&](const glm::dmat4 &face_view, const glm::dmat4 &projection) {
+                         ++stats_.reflection_faces;
                          frame_uniforms_.view = glm::mat4(face_view);
                          frame_uniforms_.projection = glm::mat4(projection);
                          frame_uniforms_.camera_position = glm::vec3(centre);

@@ -96,6 +96,7 @@ struct RenderStats {
     bool skybox_drawn = false;
     std::size_t reflection_maps = 0; // cube maps of the models around drawn (six faces each)
     std::size_t skies_copied = 0;    // of those, with the skybox copied in, not drawn
+    std::size_t reflection_faces = 0; // their faces drawn (those that see nothing keep the sky)
     // Triangles of models drawn, summed over every pass (shadow maps, cube maps, the view), and
     // how many of them levels of detail left out.
     std::size_t triangles = 0;

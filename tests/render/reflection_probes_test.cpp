@@ -209,6 +209,26 @@ TEST_CASE("a mirror alone reflects the sky through its cube map as it reflects t
         CHECK(looked > 1000);
         CHECK(sum / (3.0 * looked) < 3.0);
         CHECK(worst < 48);
+        // Over a copied sky no face sees anything to draw; drawn, the sky is in every face.
+        CHECK(on.stats.reflection_faces == (on.stats.skies_copied ? 0u : 6u));
+    }
+    // A red cube on +X, 3.5 away and 2 across (its bounding sphere, of radius 1.73, is within
+    // 2.47 of the face's sides there): seen by the +X face only, which is drawn over the copied
+    // sky (the others keep it); the mirror shows the cube where the law of reflection says (12
+    // degrees from +X; the cube covers 22 from the centre), and the sky elsewhere.
+    doc.add_model(make_model("cube", "cube", {1.0, 0.05, 0.05}),
+                  make_state({3.5, 0, 0}, glm::dvec3(1.0)));
+    const glm::dvec3 n = glm::normalize(glm::dvec3(0, 0, 1) + glm::dvec3(1, 0, 0));
+    const glm::dvec2 at = pixel_of(doc, n);
+    for (int size : {128, 96}) {
+        const Rendered on = render_document(doc, kWidth, kHeight, {}, with_reflections(size));
+        CAPTURE(size);
+        CHECK(on.stats.reflection_faces == (on.stats.skies_copied ? 1u : 6u));
+        CHECK(red(pixel(on.image, int(at.x), int(at.y))));
+        const glm::dvec2 left = pixel_of(doc, glm::normalize(glm::dvec3(-1, 0, 1)));
+        const glm::ivec3 d = glm::abs(pixel(on.image, int(left.x), int(left.y)) -
+                                      pixel(sky.image, int(left.x), int(left.y)));
+        CHECK(std::max({d.r, d.g, d.b}) < 24);
     }
 }
 
@@ -336,19 +356,21 @@ int worst_level_error(ReflectionProbes &probes, int side) {
 // that each texel of level 1 and 2 averages four different ones.
 void draw_checkered(ReflectionProbes &probes, int side) {
     int face = 0;
-    probes.draw(0, side, glm::dvec3(0.0), glm::vec3(0.0f), nullptr, [&](const glm::dmat4 &, const glm::dmat4 &) {
-        glEnable(GL_SCISSOR_TEST);
-        for (int y = 0; y < side; ++y)
-            for (int x = 0; x < side; ++x) {
-                glScissor(x, y, 1, 1);
-                const int k = (x * 7 + y * 13 + face * 29) % 17;
-                glClearColor(static_cast<float>(k) / 16.0f, static_cast<float>((k * 5) % 17) / 16.0f,
-                             static_cast<float>(x % 3) / 2.0f, (y % 2) ? 1.0f : 0.5f);
-                glClear(GL_COLOR_BUFFER_BIT);
-            }
-        glDisable(GL_SCISSOR_TEST);
-        ++face;
-    });
+    probes.draw(0, side, glm::dvec3(0.0), glm::vec3(0.0f), nullptr, 0,
+                [&](const glm::dmat4 &, const glm::dmat4 &) {
+                    glEnable(GL_SCISSOR_TEST);
+                    for (int y = 0; y < side; ++y)
+                        for (int x = 0; x < side; ++x) {
+                            glScissor(x, y, 1, 1);
+                            const int k = (x * 7 + y * 13 + face * 29) % 17;
+                            glClearColor(static_cast<float>(k) / 16.0f,
+                                         static_cast<float>((k * 5) % 17) / 16.0f,
+                                         static_cast<float>(x % 3) / 2.0f, (y % 2) ? 1.0f : 0.5f);
+                            glClear(GL_COLOR_BUFFER_BIT);
+                        }
+                    glDisable(GL_SCISSOR_TEST);
+                    ++face;
+                });
     probes.finish();
 }
 
