@@ -36,6 +36,9 @@ const Setting kSettings[] = {
     {"shadows", true, 1, 0},
     {"reflections 128", false, 1, 128},
     {"reflections 64", false, 1, 64},
+    // Two of the three together: what each costs with anti-aliasing on (docs/performance.md).
+    {"msaa 4 + shadows", true, 4, 0},
+    {"msaa 4 + reflections 128", false, 4, 128},
     {"all (the default)", true, 4, 128},
     // The editor's frame budget's levels of detail while playing (editor/frame_budget.hpp).
     {"plain, coarse (detail 2, mirrors too)", false, 1, 0, 2.0, true},
