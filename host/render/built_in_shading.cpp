@@ -101,7 +101,8 @@ const char *const kSkyboxFragment = R"glsl(#version 330 core
 in vec3 direction;
 uniform samplerCube skybox;
 out vec4 colour;
-void main() { colour = vec4(texture(skybox, direction).rgb, 1.0); }
+// At the level the host's sampler sets for the view (docs/sdk.md).
+void main() { colour = vec4(textureLod(skybox, direction, 0.0).rgb, 1.0); }
 )glsl";
 
 const ani_uniform_desc kSkyboxUniforms[] = {
