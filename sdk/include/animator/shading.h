@@ -20,7 +20,10 @@ typedef enum ani_shading_feature {
     ANI_SHADE_REFRACTION = 1 << 2,
     ANI_SHADE_CEL = 1 << 3,
     ANI_SHADE_SELECTED = 1 << 4,
-    ANI_SHADE_SKYBOX_PASS = 1 << 5 /* the program that draws the skybox itself */
+    /* The program that draws the skybox itself. The host binds with the skybox a sampler whose
+     * least level of detail fits the view: `textureLod(skybox, d, 0.0)` samples that level
+     * without each pixel's own worked out (docs/sdk.md); `texture()` works too, slower. */
+    ANI_SHADE_SKYBOX_PASS = 1 << 5
 } ani_shading_feature;
 
 typedef enum ani_uniform_type {
