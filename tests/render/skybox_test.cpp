@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 using namespace animator;
 using namespace animator::test;
@@ -22,7 +23,7 @@ namespace {
 // mipmap level but the first is an even grey (127.5), and level 0 sampled between texel
 // centres at uneven steps is anything from black to white.
 std::filesystem::path checker_sky(int side) {
-    const auto root = fresh_dir("checker_sky");
+    const auto root = fresh_dir("checker_sky_" + std::to_string(side));
     const auto folder = root / "skyboxes" / "checker";
     std::filesystem::create_directories(folder);
     Image face;
