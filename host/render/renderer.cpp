@@ -453,15 +453,19 @@ void Renderer::draw_reflections() {
             bounds_of(o, c, r);
             return glm::length(c - centre) >= radius;
         };
-        // The faces that see any of them (over a copied sky the others are left as they are).
-        unsigned faces = 0;
-        for (int f = 0; f < 6; ++f) {
-            frustum_ = Frustum(ReflectionProbes::face_view_projection(f, centre));
-            for (const auto &[features, o] : by_program_)
-                if (o != m && visible(o) && around(o)) {
-                    faces |= 1u << f;
-                    break;
-                }
+        // Over a copied sky, the faces that see any of them (the others are left as they are);
+        // every face where the sky is drawn.
+        unsigned faces = 0x3f;
+        if (sky) {
+            faces = 0;
+            for (int f = 0; f < 6; ++f) {
+                frustum_ = Frustum(ReflectionProbes::face_view_projection(f, centre));
+                for (const auto &[features, o] : by_program_)
+                    if (o != m && visible(o) && around(o)) {
+                        faces |= 1u << f;
+                        break;
+                    }
+            }
         }
         probing_ = m;
         probes_.draw(m, options_.reflection_size, centre, options_.background,

@@ -212,7 +212,8 @@ void main() {
 )glsl";
 
 // The seed's skybox: a cube around the camera turned by the camera's rotation only, so its sides
-// seem infinitely far away. The host draws it behind the models, where none is (Renderer::draw_skybox).
+// seem infinitely far away. The host draws it behind the models, where none is
+// (Renderer::draw_skybox).
 const char *const kSkyboxVertexBody = R"glsl(
 layout(location = 0) in vec3 position;
 
