@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 namespace animator {
 
@@ -25,7 +26,7 @@ struct CubeMapBound {
     ~CubeMapBound() { glBindTexture(GL_TEXTURE_CUBE_MAP, static_cast<GLuint>(held)); }
 };
 
-// A level of a cube map from the level above, its six faces in one draw: a triangle covering
+// A level of cube maps from the level above, their six faces in one draw: a triangle covering
 // the face, once a face (gl_Layer from the instance, GL_ARB_shader_viewport_layer_array), each
 // pixel the bilinear sample at the corner its 2x2 texels above share, which is their average: the
 // box filter glGenerateMipmap uses. The direction of a face's (s, t) inverts the GL
@@ -43,13 +44,19 @@ void main() {
 }
 )";
 
-constexpr const char *kDownsampleFragment = R"(#version 330 core
-uniform samplerCube above;
-uniform float above_level;
-in vec2 st;
-flat in int face;
-out vec4 colour;
-void main() {
+// The fragment stage for `count` cube maps at once, one colour output each (a framebuffer with
+// that many attachments): `above<i>` is cube map i at the level above.
+std::string downsample_fragment(int count) {
+    std::string source = "#version 330 core\n"
+                         "uniform float above_level;\n"
+                         "in vec2 st;\n"
+                         "flat in int face;\n";
+    for (int i = 0; i < count; ++i) {
+        const std::string n = std::to_string(i);
+        source += "uniform samplerCube above" + n + ";\nlayout(location = " + n +
+                  ") out vec4 colour" + n + ";\n";
+    }
+    source += R"(void main() {
     float sc = st.x, tc = st.y;
     vec3 d;
     if (face == 0) d = vec3(1.0, -tc, -sc);
@@ -58,9 +65,13 @@ void main() {
     else if (face == 3) d = vec3(sc, -1.0, -tc);
     else if (face == 4) d = vec3(sc, -tc, 1.0);
     else d = vec3(-sc, -tc, -1.0);
-    colour = textureLod(above, d, above_level);
-}
 )";
+    for (int i = 0; i < count; ++i) {
+        const std::string n = std::to_string(i);
+        source += "    colour" + n + " = textureLod(above" + n + ", d, above_level);\n";
+    }
+    return source + "}\n";
+}
 
 bool has_extension(const char *name) {
     GLint count = 0;
@@ -173,7 +184,26 @@ void ReflectionProbes::draw(
 void ReflectionProbes::finish() {
     // After every probe's faces: on llvmpipe the first level drawn waits for all the faces drawn
     // before it, once, where making each probe's levels after its faces waited six times.
-    for (int model : unleveled_) make_levels(probes_.at(model));
+    if (!layered()) {
+        for (int model : unleveled_) {
+            const CubeMapBound bound(probes_.at(model).texture);
+            glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+        }
+        unleveled_.clear();
+        return;
+    }
+    // Up to at_once_ cube maps of one size a draw: each draw is a pass of its own on llvmpipe,
+    // with a fixed cost (docs/performance.md), and six cube maps made their levels in twelve.
+    std::vector<const Probe *> batch;
+    for (std::size_t i = 0; i < unleveled_.size(); ++i) {
+        const Probe &probe = probes_.at(unleveled_[i]);
+        if (!batch.empty() && (batch.size() == at_once_ || batch.front()->size != probe.size)) {
+            make_levels(batch);
+            batch.clear();
+        }
+        batch.push_back(&probe);
+    }
+    if (!batch.empty()) make_levels(batch);
     unleveled_.clear();
 }
 
@@ -181,53 +211,91 @@ bool ReflectionProbes::layered() {
     if (!tried_layers_) {
         tried_layers_ = true;
         if (!std::getenv("ANIMATOR_PROBE_MIPMAPS") && has_extension("GL_ARB_shader_viewport_layer_array")) {
-            try {
-                downsample_ = std::make_unique<ShaderProgram>(kDownsampleVertex, kDownsampleFragment);
-            } catch (const ShaderError &) {
-                downsample_.reset(); // glGenerateMipmap then
-            }
+            GLint buffers = 1, attachments = 1, units = 1;
+            glGetIntegerv(GL_MAX_DRAW_BUFFERS, &buffers);
+            glGetIntegerv(GL_MAX_COLOR_ATTACHMENTS, &attachments);
+            glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+            at_once_ = static_cast<std::size_t>(std::clamp(std::min({buffers, attachments, units}),
+                                                           1, static_cast<int>(kMostAtOnce)));
+            if (!downsample(1)) at_once_ = 0; // glGenerateMipmap then
         }
     }
-    return downsample_ != nullptr;
+    return at_once_ > 0;
 }
 
-void ReflectionProbes::make_levels(const Probe &probe) {
-    const CubeMapBound bound(probe.texture);
-    if (!layered()) {
-        glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+ShaderProgram *ReflectionProbes::downsample(std::size_t count) {
+    std::unique_ptr<ShaderProgram> &program = downsample_[count - 1];
+    if (!program) {
+        try {
+            program = std::make_unique<ShaderProgram>(kDownsampleVertex,
+                                                      downsample_fragment(static_cast<int>(count)));
+        } catch (const ShaderError &) {
+            return nullptr;
+        }
+    }
+    return program.get();
+}
+
+void ReflectionProbes::make_levels(const std::vector<const Probe *> &batch) {
+    // glGenerateMipmap on llvmpipe blits each face of each level apart, a draw and a wait each:
+    // twelve a probe, a fifth of the frame with six probes (docs/performance.md). Here: two for
+    // the whole batch, each cube map an attachment of its own and a unit of its own.
+    ShaderProgram *program = downsample(batch.size());
+    if (!program) { // (the one-at-a-time program compiled: layered())
+        for (const Probe *probe : batch) make_levels({probe});
         return;
     }
-    // glGenerateMipmap on llvmpipe blits each face of each level apart, a draw and a wait each:
-    // twelve a probe, a fifth of the frame with six probes (docs/performance.md). Here: two.
-    GLint program = 0, vertices = 0;
-    glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+    const auto count = static_cast<GLsizei>(batch.size());
+    GLint current = 0, vertices = 0, active = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
     glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertices);
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
     const GLboolean depth_test = glIsEnabled(GL_DEPTH_TEST);
     if (!layers_framebuffer_) glGenFramebuffers(1, &layers_framebuffer_);
     if (!empty_vertices_) glGenVertexArrays(1, &empty_vertices_);
     glBindFramebuffer(GL_FRAMEBUFFER, layers_framebuffer_);
     glBindVertexArray(empty_vertices_);
-    glUseProgram(downsample_->name());
-    GLint unit = 0;
-    glGetIntegerv(GL_ACTIVE_TEXTURE, &unit);
-    glUniform1i(downsample_->uniform_location("above"), unit - GL_TEXTURE0);
-    const GLint level_at = downsample_->uniform_location("above_level");
+    glUseProgram(program->name());
+    // Attachments left from a larger batch are taken off (an attachment may not be sampled).
+    for (GLsizei i = count; i < attached_; ++i)
+        glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), 0, 0);
+    attached_ = count;
+    GLenum buffers[kMostAtOnce];
+    GLint held[kMostAtOnce];
+    for (GLsizei i = 0; i < count; ++i) {
+        buffers[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+        glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(i));
+        glGetIntegerv(GL_TEXTURE_BINDING_CUBE_MAP, &held[i]);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, batch[static_cast<std::size_t>(i)]->texture);
+        glUniform1i(program->uniform_location("above" + std::to_string(i)), i);
+    }
+    glDrawBuffers(count, buffers);
+    const GLint level_at = program->uniform_location("above_level");
     glDisable(GL_DEPTH_TEST);
     for (int level = 1; level <= kLastLevel; ++level) {
-        // Only the level above is sampled while this one is drawn (no feedback).
-        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BASE_LEVEL, level - 1);
-        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, level - 1);
-        glFramebufferTexture(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, probe.texture, level);
-        const int side = std::max(1, probe.size >> level);
+        for (GLsizei i = 0; i < count; ++i) {
+            // Only the level above is sampled while this one is drawn (no feedback).
+            glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(i));
+            glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BASE_LEVEL, level - 1);
+            glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, level - 1);
+            glFramebufferTexture(GL_FRAMEBUFFER, buffers[i],
+                                 batch[static_cast<std::size_t>(i)]->texture, level);
+        }
+        const int side = std::max(1, batch.front()->size >> level);
         glViewport(0, 0, side, side);
         glUniform1f(level_at, static_cast<float>(level - 1));
         glDrawArraysInstanced(GL_TRIANGLES, 0, 3, 6);
     }
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BASE_LEVEL, 0);
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, kLastLevel);
+    for (GLsizei i = 0; i < count; ++i) {
+        glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(i));
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BASE_LEVEL, 0);
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, kLastLevel);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, static_cast<GLuint>(held[i]));
+    }
+    glActiveTexture(static_cast<GLenum>(active));
     if (depth_test) glEnable(GL_DEPTH_TEST);
     glBindVertexArray(static_cast<GLuint>(vertices));
-    glUseProgram(static_cast<GLuint>(program));
+    glUseProgram(static_cast<GLuint>(current));
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
 }
 

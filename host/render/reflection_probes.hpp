@@ -59,10 +59,15 @@ class ReflectionProbes {
     unsigned texture(int model) const;
     // Frees the cube maps of the models `kept` says false of.
     void keep_only(const std::function<bool(int)> &kept);
-    // Whether finish() draws each level layered, all six faces at once: the OpenGL has
-    // GL_ARB_shader_viewport_layer_array, the program compiled, and ANIMATOR_PROBE_MIPMAPS is not
-    // set (it asks for glGenerateMipmap, to compare). Decided on the first call.
+    // Whether finish() draws the levels layered, all six faces of several cube maps at once: the
+    // OpenGL has GL_ARB_shader_viewport_layer_array, the program compiled, and
+    // ANIMATOR_PROBE_MIPMAPS is not set (it asks for glGenerateMipmap, to compare). Decided on
+    // the first call.
     bool layered();
+    // How many cube maps finish() makes the levels of in one draw a level (0 until layered() has
+    // said yes): at most 8, and as many as the OpenGL has draw buffers, colour attachments and
+    // texture units.
+    std::size_t at_once() const { return at_once_; }
 
   private:
     struct Probe {
@@ -71,16 +76,22 @@ class ReflectionProbes {
     };
     // The cube maps' last mipmap level (three levels: see draw()).
     static constexpr int kLastLevel = 2;
-    // Makes levels 1 .. kLastLevel of `probe`'s cube map from level 0: in one layered draw a
-    // level where the OpenGL can (layered()), else by glGenerateMipmap.
-    void make_levels(const Probe &probe);
+    static constexpr std::size_t kMostAtOnce = 8;
+    // Makes levels 1 .. kLastLevel of the cube maps of `batch` (at most at_once_, of one size)
+    // from their level 0, in one layered draw a level.
+    void make_levels(const std::vector<const Probe *> &batch);
+    // The program that makes a level of `count` cube maps, compiled on first use; null if it
+    // does not compile.
+    ShaderProgram *downsample(std::size_t count);
 
     std::map<int, Probe> probes_;
     unsigned framebuffer_ = 0, depth_ = 0;
     int depth_size_ = 0;
     bool tried_layers_ = false;
-    std::unique_ptr<ShaderProgram> downsample_;
+    std::size_t at_once_ = 0;
+    std::unique_ptr<ShaderProgram> downsample_[kMostAtOnce];
     unsigned layers_framebuffer_ = 0, empty_vertices_ = 0;
+    int attached_ = 0;           // colour attachments layers_framebuffer_ has
     std::vector<int> unleveled_; // the models whose cube maps draw() drew, finish() to level
 };
 

@@ -328,15 +328,15 @@ std::vector<unsigned char> cube_level(unsigned texture, int face, int level, int
 }
 
 // The greatest difference, over every texel and channel of every face and of levels 1 and 2,
-// between what `probes` made of model 0's cube map (`side` texels at level 0) and the average of
-// the 2x2 texels of the level above.
-int worst_level_error(ReflectionProbes &probes, int side) {
+// between what `probes` made of model `model`'s cube map (`side` texels at level 0) and the
+// average of the 2x2 texels of the level above.
+int worst_level_error(ReflectionProbes &probes, int side, int model = 0) {
     int worst = 0;
     for (int face = 0; face < 6; ++face)
         for (int level = 1; level <= 2; ++level) {
             const int above_side = side >> (level - 1), here_side = side >> level;
-            const auto above = cube_level(probes.texture(0), face, level - 1, above_side);
-            const auto here = cube_level(probes.texture(0), face, level, here_side);
+            const auto above = cube_level(probes.texture(model), face, level - 1, above_side);
+            const auto here = cube_level(probes.texture(model), face, level, here_side);
             for (int y = 0; y < here_side; ++y)
                 for (int x = 0; x < here_side; ++x)
                     for (int c = 0; c < 4; ++c) {
@@ -352,17 +352,18 @@ int worst_level_error(ReflectionProbes &probes, int side) {
     return worst;
 }
 
-// Draws model 0's cube map with faces of small squares of colours that differ face to face, so
-// that each texel of level 1 and 2 averages four different ones.
-void draw_checkered(ReflectionProbes &probes, int side) {
+// Draws model `model`'s cube map with faces of small squares of colours that differ face to face
+// and model to model, so that each texel of level 1 and 2 averages four different ones. Its
+// levels are made by the next probes.finish().
+void draw_checkered(ReflectionProbes &probes, int side, int model = 0) {
     int face = 0;
-    probes.draw(0, side, glm::dvec3(0.0), glm::vec3(0.0f), nullptr, 0,
+    probes.draw(model, side, glm::dvec3(0.0), glm::vec3(0.0f), nullptr, 0,
                 [&](const glm::dmat4 &, const glm::dmat4 &) {
                     glEnable(GL_SCISSOR_TEST);
                     for (int y = 0; y < side; ++y)
                         for (int x = 0; x < side; ++x) {
                             glScissor(x, y, 1, 1);
-                            const int k = (x * 7 + y * 13 + face * 29) % 17;
+                            const int k = (x * 7 + y * 13 + face * 29 + model * 5) % 17;
                             glClearColor(static_cast<float>(k) / 16.0f,
                                          static_cast<float>((k * 5) % 17) / 16.0f,
                                          static_cast<float>(x % 3) / 2.0f, (y % 2) ? 1.0f : 0.5f);
@@ -371,7 +372,6 @@ void draw_checkered(ReflectionProbes &probes, int side) {
                     glDisable(GL_SCISSOR_TEST);
                     ++face;
                 });
-    probes.finish();
 }
 
 } // namespace
@@ -383,12 +383,14 @@ TEST_CASE("each mipmap level of a model's cube map averages the 2x2 texels of th
     // Drawn layered (one draw a level) where the OpenGL can: llvmpipe can.
     ReflectionProbes probes;
     draw_checkered(probes, kSide);
+    probes.finish();
     CHECK(probes.layered());
     CHECK(worst_level_error(probes, kSide) <= 1);
     // The same with glGenerateMipmap, which the layered draw replaces: the truth it must match.
     setenv("ANIMATOR_PROBE_MIPMAPS", "1", 1);
     ReflectionProbes generated;
     draw_checkered(generated, kSide);
+    generated.finish();
     unsetenv("ANIMATOR_PROBE_MIPMAPS");
     CHECK_FALSE(generated.layered());
     CHECK(worst_level_error(generated, kSide) <= 1);
@@ -399,5 +401,35 @@ TEST_CASE("each mipmap level of a model's cube map averages the 2x2 texels of th
             CHECK(cube_level(probes.texture(0), face, level, kSide >> level) ==
                   cube_level(generated.texture(0), face, level, kSide >> level));
         }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_CASE("the cube maps of a frame make their levels several at once and each its own") {
+    gl_context();
+    constexpr int kSide = 16;
+    // More cube maps than one draw takes (at most 8 on any OpenGL): two draws a level at least.
+    ReflectionProbes probes;
+    REQUIRE(probes.layered());
+    CHECK(probes.at_once() > 1);
+    const int models = static_cast<int>(probes.at_once()) + 3;
+    for (int m = 0; m < models; ++m) draw_checkered(probes, kSide, m);
+    probes.finish();
+    setenv("ANIMATOR_PROBE_MIPMAPS", "1", 1);
+    ReflectionProbes generated;
+    for (int m = 0; m < models; ++m) draw_checkered(generated, kSide, m);
+    generated.finish();
+    unsetenv("ANIMATOR_PROBE_MIPMAPS");
+    for (int m = 0; m < models; ++m) {
+        CAPTURE(m);
+        CHECK(worst_level_error(probes, kSide, m) <= 1);
+        // Each from its own level 0: as glGenerateMipmap makes it, texel for texel (a cube map
+        // sampled from another's would differ, the squares shifted model to model).
+        for (int face = 0; face < 6; ++face)
+            for (int level = 1; level <= 2; ++level) {
+                CAPTURE(face, level);
+                CHECK(cube_level(probes.texture(m), face, level, kSide >> level) ==
+                      cube_level(generated.texture(m), face, level, kSide >> level));
+            }
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
