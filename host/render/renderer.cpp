@@ -254,7 +254,7 @@ void Renderer::order_front_to_back(std::vector<std::pair<std::uint32_t, int>> &d
         draws[k] = {std::get<1>(keyed[k]), std::get<3>(keyed[k])};
 }
 
-void Renderer::draw_skybox(int pixels_high) {
+void Renderer::draw_skybox(int pixels_high, bool first) {
     const LinkedProgram &program = programs_->get(ANI_SHADE_SKYBOX_PASS);
     stats_.features_used |= ANI_SHADE_SKYBOX_PASS;
     glUseProgram(program.shader->name());
@@ -285,14 +285,17 @@ void Renderer::draw_skybox(int pixels_high) {
     glSamplerParameteri(sky_sampler_, GL_TEXTURE_MIN_FILTER,
                         level > 0.0 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
     glBindSampler(kSkyboxUnit, sky_sampler_);
-    // The seed drew it first without writing depth, so that every model covers it; it is drawn
-    // after the opaque models instead, at the far plane's depth (glDepthRange(1, 1)) where the
-    // depth buffer is still cleared to it (GL_LEQUAL), so only the pixels no model covers run its
-    // shader: the same picture, without shading the sky behind a floor (docs/performance.md).
-    // It writes neither depth nor stencil (transparent models drawn after see nothing opaque
-    // there).
+    // The seed drew it first without writing depth, so that every model covers it. Drawn after
+    // the opaque models instead, at the far plane's depth (glDepthRange(1, 1)) where the depth
+    // buffer is still cleared to it (GL_LEQUAL), only the pixels no model covers run its shader:
+    // the same picture, without shading the sky behind a floor (docs/performance.md). (`first`:
+    // as the seed did, without the depth test.) It writes neither depth nor stencil (transparent
+    // models drawn after see nothing opaque there).
     glDisable(GL_CULL_FACE); // (seen from inside)
-    glEnable(GL_DEPTH_TEST);
+    if (first)
+        glDisable(GL_DEPTH_TEST);
+    else
+        glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDepthRange(1.0, 1.0);
     glDepthMask(GL_FALSE);
@@ -302,6 +305,7 @@ void Renderer::draw_skybox(int pixels_high) {
     skybox_cube_->draw();
     glBindSampler(kSkyboxUnit, 0);
     if (stencil) glEnable(GL_STENCIL_TEST);
+    glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDepthRange(0.0, 1.0);
     glDepthFunc(GL_LESS);
@@ -483,7 +487,7 @@ void Renderer::draw_reflections() {
                          glDepthFunc(GL_LESS);
                          for (const auto &[features, o] : by_program_)
                              if (o != m && visible(o) && around(o)) draw_model(o, false, 0);
-                         if (skybox_ && !sky) draw_skybox(options_.reflection_size);
+                         if (skybox_ && !sky) draw_skybox(options_.reflection_size, false);
                      });
         ++stats_.reflection_maps;
         if (sky) ++stats_.skies_copied;
@@ -549,12 +553,21 @@ void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::s
     // Grouped by program, so each program is bound about once: a program switch costs llvmpipe
     // more than the draw of a small model (docs/performance.md); closed meshes before open ones
     // (a floor is mostly behind what stands on it) and the nearest first in a group, so that the
-    // depth test, which llvmpipe runs before the shader, leaves hidden pixels unshaded. The
-    // depth test makes the order invisible (but where two models' surfaces coincide).
+    // depth test, which llvmpipe runs before the shader (at one sample a pixel), leaves hidden
+    // pixels unshaded. The depth test makes the order invisible (but where two models' surfaces
+    // coincide).
     order_front_to_back(by_program_);
+    // The skybox behind the opaque models, only where none is (draw_skybox). With anti-aliasing,
+    // llvmpipe shades every pixel of each 4x4 block a triangle touches before its samples' depth
+    // test decides (docs/performance.md): drawn after the models the sky would be shaded behind
+    // them just the same, and its depth test paid at every sample; so then it is drawn first,
+    // without the test.
+    GLint samples = 0;
+    glGetIntegerv(GL_SAMPLES, &samples);
+    const bool sky_first = skybox_ && samples > 1;
+    if (sky_first) draw_skybox(target.height, true);
     for (const auto &[features, m] : by_program_) draw_model(m, selected.count(m) > 0, 0);
-    // The skybox behind the opaque models, only where none is (draw_skybox).
-    if (skybox_) draw_skybox(target.height);
+    if (skybox_ && !sky_first) draw_skybox(target.height, false);
     // Transparent models last, the farthest first, each seen from outside only.
     std::sort(transparent_.begin(), transparent_.end());
     glEnable(GL_CULL_FACE);

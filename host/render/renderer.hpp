@@ -172,8 +172,9 @@ class Renderer {
     std::size_t counted_level(int model);
     const GpuTexture *texture(const std::string &id);
     void load_skybox(const std::string &id);
-    // The skybox behind what is drawn, into a viewport `pixels_high` pixels high.
-    void draw_skybox(int pixels_high);
+    // The skybox behind what is drawn, into a viewport `pixels_high` pixels high: after the opaque
+    // models where none is (the depth test), or `first`, before them, everywhere.
+    void draw_skybox(int pixels_high, bool first);
     // The view's opaque draws (by_program_) in the order they are drawn.
     void order_front_to_back(std::vector<std::pair<std::uint32_t, int>> &draws) const;
     // The features model m is drawn with, less `without` (and its texture, when `image`).
