@@ -3,7 +3,8 @@
 // edge-collapse simplifier (Garland and Heckbert's quadrics; seams of split vertices kept), each
 // with how far its surface strays from the mesh's, measured. The renderer draws the coarsest level
 // whose error, seen from the camera, is below a fraction of a pixel (RenderOptions::detail_pixels;
-// the same level in the shadow maps and cube maps, so a model never shadows itself): a far
+// the same level in the shadow maps, so a model never shadows itself; a cube map's faces, seen
+// from its centre, may take a coarser one, the shadow lookups' offset widened to match): a far
 // model's triangles are then a few pixels each, not fractions of one, which a software rasterizer
 // (llvmpipe shades blocks of 4x4 pixels a triangle) pays for many times over
 // (docs/performance.md, "Levels of detail").

@@ -162,9 +162,10 @@ void Renderer::prepare_frame(const Frame &frame, int width, int height) {
     u.ambient = glm::vec3(settings_.ambient);
     u.selected_tint = options_.selected_tint;
 
-    // One level of detail a model for the frame, as the camera sees it, in every pass: a shadow
-    // map drawn with another surface than the one it falls on would shade it (speckles where a
-    // coarser level lies inside a finer one's shadow). Mirrors, glass and cel shading keep their
+    // One level of detail a model for the frame, as the camera sees it, in the view and the shadow
+    // maps: a shadow map drawn with another surface than the one it falls on would shade it
+    // (speckles where a coarser level lies inside a finer one's shadow). (A cube map may see a
+    // far model coarser, its shadow lookups pushed out by the difference: draw_reflections.) Mirrors, glass and cel shading keep their
     // whole meshes: what they show turns with the surface's normals, which a coarser level
     // bends by more than its outline moves (a reflection's features shift by pixels); mirrors
     // and glass take levels too when asked (RenderOptions::mirror_levels).
@@ -201,6 +202,12 @@ bool Renderer::visible(int model) const {
     return frustum_.may_see(centre, radius);
 }
 
+double Renderer::stretch_of(int model) const {
+    const glm::dmat4 &world = world_[static_cast<size_t>(model)];
+    return std::max({glm::length(glm::dvec3(world[0])), glm::length(glm::dvec3(world[1])),
+                     glm::length(glm::dvec3(world[2]))});
+}
+
 std::size_t Renderer::level_of(int model, const glm::dvec3 &eye, double pixel_per_distance) const {
     const GpuMesh &mesh = *gpu_meshes_[static_cast<size_t>(model)];
     if (options_.detail_pixels <= 0.0 || mesh.levels().size() < 2) return 0;
@@ -212,10 +219,7 @@ std::size_t Renderer::level_of(int model, const glm::dvec3 &eye, double pixel_pe
     const double distance =
         std::max(glm::length(centre - eye) - radius, options_.near_plane);
     // The mesh's errors grow with the model's largest stretch.
-    const glm::dmat4 &world = world_[static_cast<size_t>(model)];
-    const double stretch = std::max({glm::length(glm::dvec3(world[0])),
-                                     glm::length(glm::dvec3(world[1])),
-                                     glm::length(glm::dvec3(world[2]))});
+    const double stretch = stretch_of(model);
     if (!(stretch > 0.0)) return 0;
     return choose_level(mesh.levels(),
                         options_.detail_pixels * pixel_per_distance * distance / stretch);
@@ -471,6 +475,16 @@ void Renderer::draw_reflections() {
                     }
             }
         }
+        // The models around it at the levels its faces see them at (as the view's, but from its
+        // centre at the faces' pixels), never finer than the view's: what its shadow maps were
+        // drawn with.
+        probe_levels_.assign(levels_.begin(), levels_.end());
+        for (const auto &[features, o] : by_program_)
+            if (o != m && !settings_.cel_shading)
+                probe_levels_[static_cast<size_t>(o)] =
+                    std::max(levels_[static_cast<size_t>(o)],
+                             level_of(o, centre, 2.0 / options_.reflection_size));
+        std::swap(levels_, probe_levels_); // (probe_levels_ holds the view's until swapped back)
         probing_ = m;
         probes_.draw(m, options_.reflection_size, centre, options_.background,
                      sky ? &*sky : nullptr, faces,
@@ -486,9 +500,15 @@ void Renderer::draw_reflections() {
                          glEnable(GL_DEPTH_TEST);
                          glDepthFunc(GL_LESS);
                          for (const auto &[features, o] : by_program_)
-                             if (o != m && visible(o) && around(o)) draw_model(o, false, 0);
+                             if (o != m && visible(o) && around(o)) {
+                                 widen_shadow_offset(o, probe_levels_[static_cast<size_t>(o)],
+                                                     camera.shadow_texel);
+                                 draw_model(o, false, 0);
+                             }
+                         frame_uniforms_.shadow_texel = camera.shadow_texel;
                          if (skybox_ && !sky) draw_skybox(options_.reflection_size, false);
                      });
+        std::swap(levels_, probe_levels_);
         ++stats_.reflection_maps;
         if (sky) ++stats_.skies_copied;
     }
@@ -499,6 +519,33 @@ void Renderer::draw_reflections() {
     view_ = view;
     view_projection_ = view_projection;
     frustum_ = frustum;
+}
+
+void Renderer::widen_shadow_offset(int model, std::size_t shadowed_level,
+                                   const std::array<float, kMaxShadowSemantics> &texel) {
+    frame_uniforms_.shadow_texel = texel;
+    const std::size_t level = levels_[static_cast<size_t>(model)];
+    if (level == shadowed_level) return;
+    // Its surface here strays from the one its shadow maps hold by at most the two levels'
+    // errors (each from the mesh's own surface), in world units with its largest stretch; a
+    // lit point as far inside would read its own shadow. The shading pushes a point 1.5 texel
+    // widths (texel * d at distance d from the light) along its normal before the lookup
+    // (shading.phong, docs/sdk.md): that push grows by the straying, at the model's nearest
+    // distance from each light, where the push is least.
+    const std::vector<LodLevel> &levels = gpu_meshes_[static_cast<size_t>(model)]->levels();
+    const double strays = (levels[level].error + levels[shadowed_level].error) * stretch_of(model);
+    glm::dvec3 centre;
+    double radius = 0.0;
+    bounds_of(model, centre, radius);
+    for (int i = 0; i < frame_uniforms_.shadow_lights; ++i) {
+        const double nearest = std::max(
+            glm::length(glm::dvec3(frame_uniforms_.light_position[static_cast<size_t>(i)]) -
+                        centre) -
+                radius,
+            options_.near_plane);
+        frame_uniforms_.shadow_texel[static_cast<size_t>(i)] +=
+            static_cast<float>(strays / (1.5 * nearest));
+    }
 }
 
 void Renderer::draw(const Frame &frame, const RenderTarget &target, const std::set<int> &selected,

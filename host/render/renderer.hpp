@@ -168,6 +168,13 @@ class Renderer {
     // The level of detail of model m's mesh (RenderOptions::detail_pixels) seen from `eye`, whose
     // pixels are `pixel_per_distance` wide at distance 1.
     std::size_t level_of(int model, const glm::dvec3 &eye, double pixel_per_distance) const;
+    // Sets the shadow maps' texel widths (`texel`, the frame's) for drawing model `model` at its
+    // level (levels_) where its shadow maps hold it at `shadowed_level`: widened so that the
+    // shading's normal offset covers how far the two surfaces may part.
+    void widen_shadow_offset(int model, std::size_t shadowed_level,
+                             const std::array<float, kMaxShadowSemantics> &texel);
+    // The largest factor by which model m's world matrix stretches a length.
+    double stretch_of(int model) const;
     // Model m's level this frame (levels_), its triangles counted in the stats.
     std::size_t counted_level(int model);
     const GpuTexture *texture(const std::string &id);
@@ -220,6 +227,9 @@ class Renderer {
     glm::dmat4 view_{1.0}, view_projection_{1.0};
     Frustum frustum_{glm::dmat4(1.0)};
     std::vector<std::size_t> levels_; // per model, its level of detail in every pass
+    // While a cube map is drawn, the view's levels (levels_ then holds the cube map's, which may
+    // be coarser: draw_reflections()).
+    std::vector<std::size_t> probe_levels_;
     glm::dvec3 eye_{0.0};             // where the pass being drawn is seen from
     FrameUniforms frame_uniforms_;
     ModelUniforms model_uniforms_;
