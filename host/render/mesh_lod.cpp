@@ -1,5 +1,7 @@
 #include "render/mesh_lod.hpp"
 
+#include "render/sphere_lod.hpp"
+
 #include <animator/triangle_geometry.hpp>
 
 #include <meshoptimizer.h>
@@ -144,8 +146,22 @@ LodChain build_lod_chain(const Mesh &mesh) {
     const double scale = meshopt_simplifyScale(positions.data(), vertex_count, 3 * sizeof(float));
     const double rounding = 1e-9 * scale; // distances below it are 0 (a flat grid's levels)
 
-    // The mesh's surface, for measuring how far each level strays from it.
+    // The mesh's surface, for measuring how far each level strays from it: a two-sided Hausdorff
+    // distance, sampled, from the mesh's vertices to the level's triangles (the vertices it left
+    // out are where it strays) and from the level's triangles (their centroids and edge
+    // midpoints) to the mesh's, at least `estimate`. (A point nearer than the largest distance
+    // so far cannot raise it: its search stops at the first triangle that near.)
     const TriangleGrid whole(mesh, mesh.triangles.data(), mesh.triangles.size());
+    const auto measure = [&](const std::uint32_t *indices, std::size_t count, double estimate) {
+        double distance = estimate;
+        const auto farthest = [&](const TriangleGrid &surface, const glm::dvec3 &p) {
+            distance = std::max(distance, surface.distance(p, std::max(distance, rounding)));
+        };
+        sample_triangles(mesh, indices, count, [&](const glm::dvec3 &p) { farthest(whole, p); });
+        const TriangleGrid level(mesh, indices, count);
+        for (const glm::dvec3 &p : mesh.positions) farthest(level, p);
+        return distance;
+    };
     std::vector<std::uint32_t> simplified(mesh.triangles.size());
     std::size_t previous = mesh.triangles.size();
     double error_so_far = 0.0;
@@ -158,19 +174,9 @@ LodChain build_lod_chain(const Mesh &mesh) {
             vertex_count, 3 * sizeof(float), target, 1.0f, 0, &error);
         if (count == 0 || count * 4 > previous * 3) break; // it stopped reducing
         // meshoptimizer's own estimate (error * scale) falls short of the distance between the
-        // surfaces, by up to 3 times on a torus: it is measured instead (a two-sided Hausdorff
-        // distance, sampled), from the mesh's vertices to the level's triangles (the vertices it
-        // left out are where it strays) and from the level's triangles (their centroids and edge
-        // midpoints) to the mesh's, and is at least the estimate. (A point nearer than the largest
-        // distance so far cannot raise it: its search stops at the first triangle that near.)
-        double distance = static_cast<double>(error) * scale;
-        const auto farthest = [&](const TriangleGrid &surface, const glm::dvec3 &p) {
-            distance = std::max(distance, surface.distance(p, std::max(distance, rounding)));
-        };
-        sample_triangles(mesh, simplified.data(), count,
-                         [&](const glm::dvec3 &p) { farthest(whole, p); });
-        const TriangleGrid level(mesh, simplified.data(), count);
-        for (const glm::dvec3 &p : mesh.positions) farthest(level, p);
+        // surfaces, by up to 3 times on a torus: it is measured instead, and is at least the
+        // estimate.
+        const double distance = measure(simplified.data(), count, static_cast<double>(error) * scale);
         error_so_far = std::max(error_so_far, distance);
         chain.levels.push_back({static_cast<std::uint32_t>(chain.indices.size()),
                                 static_cast<std::uint32_t>(count), error_so_far});
@@ -178,12 +184,36 @@ LodChain build_lod_chain(const Mesh &mesh) {
                              simplified.begin() + static_cast<std::ptrdiff_t>(count));
         previous = count;
     }
+    // A sphere's levels of even triangles (sphere_lod.hpp), each kept where no level has as few
+    // triangles or fewer with as small an error or smaller; they do not keep a texture's seam.
+    if (approximates_sphere(mesh)) {
+        previous = mesh.triangles.size();
+        // (From about 1,000 triangles down: where a far sphere's few pixels are drawn, and where
+        // the simplifier's levels stray most. Measuring each costs a few ms.)
+        for (std::size_t vertices = std::min<std::size_t>(mesh.positions.size() / 2, 512);
+             2 * vertices >= kCoarsest + 4; vertices = vertices * 3 / 4) {
+            const std::vector<std::uint32_t> hull = sphere_hull_level(mesh, vertices);
+            if (hull.empty() || hull.size() * 4 > previous * 3) continue;
+            previous = hull.size();
+            const double distance = measure(hull.data(), hull.size(), 0.0);
+            const bool beaten = std::any_of(chain.levels.begin(), chain.levels.end(), [&](const LodLevel &l) {
+                return l.count <= hull.size() && l.error <= distance;
+            });
+            if (beaten) continue;
+            chain.levels.push_back({static_cast<std::uint32_t>(chain.indices.size()),
+                                    static_cast<std::uint32_t>(hull.size()), distance, false});
+            chain.indices.insert(chain.indices.end(), hull.begin(), hull.end());
+        }
+    }
     return chain;
 }
 
-std::size_t choose_level(const std::vector<LodLevel> &levels, double allowed) {
+std::size_t choose_level(const std::vector<LodLevel> &levels, double allowed, bool textured) {
     std::size_t chosen = 0;
-    for (std::size_t i = 1; i < levels.size() && levels[i].error <= allowed; ++i) chosen = i;
+    for (std::size_t i = 1; i < levels.size(); ++i)
+        if (levels[i].error <= allowed && (levels[i].keeps_texture || !textured) &&
+            levels[i].count < levels[chosen].count)
+            chosen = i;
     return chosen;
 }
 

@@ -25,19 +25,27 @@ struct LodLevel {
     // centroids and edge midpoints to the mesh's), and at least meshoptimizer's own estimate,
     // which falls short of it; 0 for the mesh itself.
     double error = 0.0;
+    // Whether it keeps the mesh's texture coordinates where the mesh splits its vertices for
+    // them (a seam): a sphere's even levels (sphere_lod.hpp) do not, and are for untextured
+    // models only.
+    bool keeps_texture = true;
 };
 
 struct LodChain {
     std::vector<std::uint32_t> indices; // every level's triangles, one after the other
-    std::vector<LodLevel> levels;       // levels[0]: the mesh itself; errors increase
+    // levels[0]: the mesh itself; then its simplified levels, fewer triangles and larger errors
+    // each; then, for a sphere, its even levels that beat those (fewer triangles for the error).
+    std::vector<LodLevel> levels;
 };
 
 // The chain for `mesh`: the mesh itself, and simplified levels while each has at most 3/4 of the
-// triangles of the one before, down to about 24 triangles. A mesh of fewer than 64 triangles gets
-// one level.
+// triangles of the one before, down to about 24 triangles; for a mesh whose vertices lie on a
+// sphere (approximates_sphere), its even levels too. A mesh of fewer than 64 triangles gets one
+// level.
 LodChain build_lod_chain(const Mesh &mesh);
 
-// The index of the coarsest level whose error is at most `allowed` (mesh units); 0 when none is.
-std::size_t choose_level(const std::vector<LodLevel> &levels, double allowed);
+// The index of the level of fewest triangles whose error is at most `allowed` (mesh units), of
+// those that keep the texture's seam when `textured`; 0 when none is.
+std::size_t choose_level(const std::vector<LodLevel> &levels, double allowed, bool textured = false);
 
 } // namespace animator

@@ -221,8 +221,8 @@ std::size_t Renderer::level_of(int model, const glm::dvec3 &eye, double pixel_pe
     // The mesh's errors grow with the model's largest stretch.
     const double stretch = stretch_of(model);
     if (!(stretch > 0.0)) return 0;
-    return choose_level(mesh.levels(),
-                        options_.detail_pixels * pixel_per_distance * distance / stretch);
+    return choose_level(mesh.levels(), options_.detail_pixels * pixel_per_distance * distance / stretch,
+                        !models_[static_cast<size_t>(model)].texture.empty());
 }
 
 std::size_t Renderer::counted_level(int model) {
@@ -479,11 +479,13 @@ void Renderer::draw_reflections() {
         // centre at the faces' pixels), never finer than the view's: what its shadow maps were
         // drawn with.
         probe_levels_.assign(levels_.begin(), levels_.end());
-        for (const auto &[features, o] : by_program_)
-            if (o != m && !settings_.cel_shading)
-                probe_levels_[static_cast<size_t>(o)] =
-                    std::max(levels_[static_cast<size_t>(o)],
-                             level_of(o, centre, 2.0 / options_.reflection_size));
+        for (const auto &[features, o] : by_program_) {
+            if (o == m || settings_.cel_shading) continue;
+            const std::vector<LodLevel> &chain = gpu_meshes_[static_cast<size_t>(o)]->levels();
+            const std::size_t seen = level_of(o, centre, 2.0 / options_.reflection_size);
+            if (chain[seen].count < chain[levels_[static_cast<size_t>(o)]].count)
+                probe_levels_[static_cast<size_t>(o)] = seen;
+        }
         std::swap(levels_, probe_levels_); // (probe_levels_ holds the view's until swapped back)
         probing_ = m;
         probes_.draw(m, options_.reflection_size, centre, options_.background,

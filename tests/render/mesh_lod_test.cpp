@@ -11,6 +11,9 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
 
 using namespace animator;
 using namespace animator::test;
@@ -60,14 +63,79 @@ TEST_CASE("a sphere's levels of detail halve its triangles and stay within their
         const LodLevel &level = chain.levels[i], &before = chain.levels[i - 1];
         INFO("level " << i << ": " << level.count / 3 << " triangles, error " << level.error);
         CHECK(level.count % 3 == 0);
-        CHECK(level.count * 4 <= before.count * 3);
-        CHECK(level.error >= before.error);
+        // The simplified levels first, each coarser than the one before; then the even ones
+        // (sphere_lod.hpp), likewise among themselves.
+        if (level.keeps_texture == before.keeps_texture) {
+            CHECK(level.count * 4 <= before.count * 3);
+            CHECK(level.error >= before.error);
+        } else {
+            CHECK(before.keeps_texture);
+        }
         CHECK(level.count / 3 >= 24);
         // The truth is the sphere: no point of the level lies farther from it than the level's
         // stated error beyond what the whole mesh's own chords stray.
         CHECK(sphere_deviation(sphere, chain, level) <= level.error + own + 1e-6);
         // Only the mesh's own vertices (normals and UVs stay those of the mesh).
         for (std::uint32_t v : used_vertices(chain, level)) REQUIRE(v < sphere.positions.size());
+    }
+}
+
+TEST_CASE("a sphere's even levels stray less than its simplified ones of as many triangles, and keep "
+          "no texture seam") {
+    const Mesh &sphere = generated("sphere.obj");
+    const LodChain chain = build_lod_chain(sphere);
+    const double own = sphere_deviation(sphere, chain, chain.levels[0]);
+    std::size_t even = 0;
+    for (const LodLevel &level : chain.levels) {
+        if (level.keeps_texture) continue;
+        ++even;
+        INFO(level.count / 3 << " triangles, error " << level.error);
+        // Within its stated error of the sphere, the truth.
+        CHECK(sphere_deviation(sphere, chain, level) <= level.error + own + 1e-6);
+        // Closed: every edge is shared by two of its triangles, once each way (a hull's faces
+        // wound alike), and Euler's V - E + F = 2.
+        std::map<std::pair<glm::dvec3, glm::dvec3>, int, bool (*)(const std::pair<glm::dvec3, glm::dvec3> &,
+                                                              const std::pair<glm::dvec3, glm::dvec3> &)>
+            edges([](const auto &a, const auto &b) {
+                const auto key = [](const auto &e) {
+                    return std::make_tuple(e.first.x, e.first.y, e.first.z, e.second.x, e.second.y, e.second.z);
+                };
+                return key(a) < key(b);
+            });
+        std::set<std::tuple<double, double, double>> corners;
+        for (std::uint32_t t = level.first; t < level.first + level.count; t += 3)
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec3 a = sphere.positions[chain.indices[t + k]],
+                                 b = sphere.positions[chain.indices[t + (k + 1) % 3]];
+                ++edges[{a, b}];
+                corners.insert({a.x, a.y, a.z});
+            }
+        bool paired = true;
+        for (const auto &[edge, n] : edges) {
+            const auto back = edges.find({edge.second, edge.first});
+            paired = paired && n == 1 && back != edges.end() && back->second == 1;
+        }
+        CHECK(paired);
+        CHECK(static_cast<long>(corners.size()) - static_cast<long>(edges.size() / 2) +
+                  static_cast<long>(level.count / 3) ==
+              2);
+        // Wound as the sphere's own triangles: out of the sphere.
+        for (std::uint32_t t = level.first; t < level.first + level.count; t += 3) {
+            const glm::dvec3 a = sphere.positions[chain.indices[t]], b = sphere.positions[chain.indices[t + 1]],
+                             c = sphere.positions[chain.indices[t + 2]];
+            REQUIRE(glm::dot(glm::cross(b - a, c - a), a + b + c) > 0.0);
+        }
+    }
+    CHECK(even >= 4);
+    // At each simplified level's error, the level chosen for an untextured model has at most
+    // 3/4 of its triangles from 496 down (sphere.obj's 496: 0.030 of the radius; an even level of
+    // 252 triangles strays as far), and for a textured one it is that level.
+    for (std::size_t i = 2; i < chain.levels.size() && chain.levels[i].keeps_texture; ++i) {
+        const LodLevel &simplified = chain.levels[i];
+        INFO(simplified.count / 3 << " triangles, error " << simplified.error);
+        CHECK(choose_level(chain.levels, simplified.error, true) == i);
+        CHECK(chain.levels[choose_level(chain.levels, simplified.error, false)].count * 4 <=
+              simplified.count * 3);
     }
 }
 
@@ -99,6 +167,13 @@ TEST_CASE("the coarsest level within the allowed error is chosen") {
     CHECK(choose_level(levels, 0.01) == 1);
     CHECK(choose_level(levels, 0.039) == 1);
     CHECK(choose_level(levels, 1.0) == 2);
+    // A level that does not keep the texture's seam: the fewest triangles within the error, but
+    // not for a textured model.
+    std::vector<LodLevel> with_even = levels;
+    with_even.push_back({525, 90, 0.02, false});
+    CHECK(choose_level(with_even, 0.02) == 3);
+    CHECK(choose_level(with_even, 0.02, true) == 1);
+    CHECK(choose_level(with_even, 0.04) == 2);
 }
 
 namespace {

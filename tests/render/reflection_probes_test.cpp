@@ -435,21 +435,21 @@ TEST_CASE("the cube maps of a frame make their levels several at once and each i
 }
 
 TEST_CASE("a cube map sees a far model at a coarser level than the view and without speckles") {
-    // A mirror ball at the origin, the camera 6 m away on +Z looking at it, and a lit white ball
-    // 3 m behind the camera: whole in the view's levels (2 m from the camera), but 8 m from the
-    // mirror's centre, where a face of the cube map (128 pixels) sees it at a coarser level. The
-    // mirror's middle reflects it. Its shadow map holds it at the view's level, whose surface
-    // lies outside the coarser one's: the shading's normal offset must cover the difference, or
-    // its lit side reads its own shadow in the reflection. A far light (small shadow texels, a
-    // small offset) lights the side the mirror sees.
-    Document doc = make_document(make_camera({0, 0, 6}, 0, 0));
+    // A flat mirror 8 m wide on the ground, the camera 6 m above it looking down, and a lit
+    // white ball 3 m above the camera: whole in the view's levels (2 m from the camera), but 8 m
+    // from the mirror's centre, where a face of its cube map (128 pixels) sees it at a coarser
+    // level. The mirror shows it in the middle of the view, seen from below. Its shadow map holds
+    // it at the view's level, whose surface lies outside the coarser one's: the shading's normal
+    // offset must cover the difference, or its lit side reads its own shadow in the reflection.
+    // A far light (small shadow texels, a small offset) lights the side the mirror sees.
+    Document doc = make_document(make_camera({0, 6, 0}, 0, -90));
     Settings s = doc.settings();
-    s.lights = {Light{"lamp", {-10.0, 15.0, -20.0}, {1.0, 1.0, 1.0}, {1.0, 0.0, 0.0}}};
+    s.lights = {Light{"lamp", {-14.0, 4.0, 6.0}, {1.0, 1.0, 1.0}, {1.0, 0.0, 0.0}}};
     doc.set_settings(s);
-    Model mirror = make_model("mirror", "sphere", {0.5, 0.5, 0.5});
+    Model mirror = make_model("mirror", "plane", {0.5, 0.5, 0.5});
     mirror.reflectivity = 1.0;
-    doc.add_model(mirror, make_state({0, 0, 0}));
-    doc.add_model(make_model("ball", "sphere", {0.9, 0.9, 0.9}), make_state({0, 0, 9}));
+    doc.add_model(mirror, make_state({0, 0, 0}, {4, 1, 4}));
+    doc.add_model(make_model("ball", "sphere", {0.9, 0.9, 0.9}), make_state({0, 9, 0}));
     const Rendered levels = render_document(doc, kWidth, kHeight);
     RenderOptions whole_meshes;
     whole_meshes.detail_pixels = 0.0;
@@ -458,24 +458,24 @@ TEST_CASE("a cube map sees a far model at a coarser level than the view and with
     REQUIRE(levels.stats.shadow_maps == 1);
     // Fewer triangles, all of them in the cube map (the ball is behind the camera in the view).
     CHECK(levels.stats.triangles < whole.stats.triangles);
-    // The reflection of the ball, around the mirror's middle, as with whole meshes everywhere.
-    const glm::dvec2 centre = pixel_of(doc, {0, 0, 1});
-    double worst = 0.0, sum = 0.0;
-    int count = 0;
-    for (int y = int(centre.y) - 6; y <= int(centre.y) + 6; ++y)
-        for (int x = int(centre.x) - 6; x <= int(centre.x) + 6; ++x) {
-            const glm::ivec3 a = pixel(levels.image, x, y), b = pixel(whole.image, x, y);
-            const glm::ivec3 d = glm::abs(a - b);
-            const double most = std::max({d.r, d.g, d.b});
-            worst = std::max(worst, most);
-            sum += most;
-            ++count;
+    // Inside the ball's lit side (whole meshes: lit 4 pixels around; the coarser level's outline
+    // moves by up to its error, a face pixel, some 3 pixels of the view here), the coarser level
+    // is as lit: its own shadow would darken it (the ambient light's and the lamp's share of it).
+    constexpr int kBorder = 4;
+    const auto bright = [&](int x, int y) { return pixel(whole.image, x, y).r > 150; };
+    int inside = 0;
+    double worst = 0.0;
+    for (int y = kHeight / 2 - 40; y <= kHeight / 2 + 40; ++y)
+        for (int x = kWidth / 2 - 40; x <= kWidth / 2 + 40; ++x) {
+            bool all = true;
+            for (int dy = -kBorder; dy <= kBorder; ++dy)
+                for (int dx = -kBorder; dx <= kBorder; ++dx) all = all && bright(x + dx, y + dy);
+            if (!all) continue;
+            ++inside;
+            worst = std::max(worst, double(pixel(whole.image, x, y).r - pixel(levels.image, x, y).r));
         }
-    const glm::ivec3 middle = pixel(whole.image, int(centre.x), int(centre.y));
-    CAPTURE(worst, sum / count, middle.r, middle.g, middle.b);
-    // (The ball's reflection is bright there: it is what is compared.)
-    CHECK(pixel(whole.image, int(centre.x), int(centre.y)).r > 120);
-    // (Without the offset's widening: 32 at worst, 1.2 on average; with it 10 and 0.5.)
-    CHECK(worst <= 16);
-    CHECK(sum / count <= 0.8);
+    CAPTURE(inside, worst);
+    CHECK(inside > 200); // (the lit side fills much of it: it is what is compared)
+    // (Without the offset's widening, 19 darker at worst; with it 6.)
+    CHECK(worst <= 10);
 }
