@@ -176,7 +176,8 @@ LodChain build_lod_chain(const Mesh &mesh) {
         // meshoptimizer's own estimate (error * scale) falls short of the distance between the
         // surfaces, by up to 3 times on a torus: it is measured instead, and is at least the
         // estimate.
-        const double distance = measure(simplified.data(), count, static_cast<double>(error) * scale);
+        const double distance =
+            measure(simplified.data(), count, static_cast<double>(error) * scale);
         error_so_far = std::max(error_so_far, distance);
         chain.levels.push_back({static_cast<std::uint32_t>(chain.indices.size()),
                                 static_cast<std::uint32_t>(count), error_so_far});
@@ -196,9 +197,10 @@ LodChain build_lod_chain(const Mesh &mesh) {
             if (hull.empty() || hull.size() * 4 > previous * 3) continue;
             previous = hull.size();
             const double distance = measure(hull.data(), hull.size(), 0.0);
-            const bool beaten = std::any_of(chain.levels.begin(), chain.levels.end(), [&](const LodLevel &l) {
-                return l.count <= hull.size() && l.error <= distance;
-            });
+            const bool beaten =
+                std::any_of(chain.levels.begin(), chain.levels.end(), [&](const LodLevel &l) {
+                    return l.count <= hull.size() && l.error <= distance;
+                });
             if (beaten) continue;
             chain.levels.push_back({static_cast<std::uint32_t>(chain.indices.size()),
                                     static_cast<std::uint32_t>(hull.size()), distance, false});

@@ -165,10 +165,11 @@ void Renderer::prepare_frame(const Frame &frame, int width, int height) {
     // One level of detail a model for the frame, as the camera sees it, in the view and the shadow
     // maps: a shadow map drawn with another surface than the one it falls on would shade it
     // (speckles where a coarser level lies inside a finer one's shadow). (A cube map may see a
-    // far model coarser, its shadow lookups pushed out by the difference: draw_reflections.) Mirrors, glass and cel shading keep their
-    // whole meshes: what they show turns with the surface's normals, which a coarser level
-    // bends by more than its outline moves (a reflection's features shift by pixels); mirrors
-    // and glass take levels too when asked (RenderOptions::mirror_levels).
+    // far model coarser, its shadow lookups pushed out by the difference: draw_reflections.)
+    // Mirrors, glass and cel shading keep their whole meshes: what they show turns with the
+    // surface's normals, which a coarser level bends by more than its outline moves (a
+    // reflection's features shift by pixels); mirrors and glass take levels too when asked
+    // (RenderOptions::mirror_levels).
     const double pixel_per_distance = height > 0 ? 2.0 / (projection[1][1] * height) : 0.0;
     const std::size_t count = std::min(models_.size(), world_.size());
     levels_.assign(count, 0);
@@ -221,7 +222,8 @@ std::size_t Renderer::level_of(int model, const glm::dvec3 &eye, double pixel_pe
     // The mesh's errors grow with the model's largest stretch.
     const double stretch = stretch_of(model);
     if (!(stretch > 0.0)) return 0;
-    return choose_level(mesh.levels(), options_.detail_pixels * pixel_per_distance * distance / stretch,
+    return choose_level(mesh.levels(),
+                        options_.detail_pixels * pixel_per_distance * distance / stretch,
                         !models_[static_cast<size_t>(model)].texture.empty());
 }
 

@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <tuple>
 #include <utility>
 
 namespace animator {
@@ -18,7 +19,7 @@ class VertexGrid {
   public:
     VertexGrid(const Mesh &mesh, double cell) : mesh_(mesh), cell_(cell) {
         for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-            cells_[key(mesh.positions[i])].push_back(static_cast<std::uint32_t>(i));
+            cells_[cell_of(mesh.positions[i])].push_back(static_cast<std::uint32_t>(i));
     }
 
     // The nearest vertex to p: the cells around p's, shell after shell, until no farther cell
@@ -52,10 +53,10 @@ class VertexGrid {
         }
     };
     glm::ivec3 cell_of(const glm::dvec3 &p) const {
-        return glm::ivec3(static_cast<int>(std::floor(p.x / cell_)), static_cast<int>(std::floor(p.y / cell_)),
+        return glm::ivec3(static_cast<int>(std::floor(p.x / cell_)),
+                          static_cast<int>(std::floor(p.y / cell_)),
                           static_cast<int>(std::floor(p.z / cell_)));
     }
-    glm::ivec3 key(const glm::dvec3 &p) const { return cell_of(p); }
 
     const Mesh &mesh_;
     double cell_;
@@ -69,7 +70,8 @@ struct Face {
     bool alive = true;
 };
 
-Face make_face(const std::vector<glm::dvec3> &p, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+Face make_face(const std::vector<glm::dvec3> &p, std::uint32_t a, std::uint32_t b,
+               std::uint32_t c) {
     Face f{a, b, c, glm::normalize(glm::cross(p[b] - p[a], p[c] - p[a])), 0.0};
     f.offset = glm::dot(f.normal, p[a]);
     return f;
@@ -131,9 +133,10 @@ std::vector<std::uint32_t> sphere_hull_level(const Mesh &mesh, std::size_t verti
     const glm::dvec3 centre = mesh.bound_center;
     const double radius = mesh.bound_radius;
     if (vertices < 4 || mesh.positions.empty() || !(radius > 0.0)) return {};
-    // The lattice's points 4 pi r^2 / vertices apart in area: the grid's cells about twice their
-    // spacing, so that a point's nearest vertex is mostly in its own cell or the next.
-    const double spacing = radius * std::sqrt(4.0 * M_PI / static_cast<double>(mesh.positions.size()));
+    // The mesh's n vertices lie about r sqrt(4 pi / n) apart: cells twice that, so that a
+    // point's nearest vertex is mostly in its own cell or the next.
+    const double spacing =
+        radius * std::sqrt(4.0 * M_PI / static_cast<double>(mesh.positions.size()));
     const VertexGrid grid(mesh, 2.0 * spacing);
     const double golden = M_PI * (3.0 - std::sqrt(5.0));
     std::vector<std::uint32_t> chosen; // mesh vertices, once each
@@ -143,7 +146,8 @@ std::vector<std::uint32_t> sphere_hull_level(const Mesh &mesh, std::size_t verti
         const double y = 1.0 - (2.0 * static_cast<double>(i) + 1.0) / static_cast<double>(vertices);
         const double ring = std::sqrt(std::max(0.0, 1.0 - y * y));
         const double angle = golden * static_cast<double>(i);
-        const glm::dvec3 at = centre + radius * glm::dvec3(ring * std::cos(angle), y, ring * std::sin(angle));
+        const glm::dvec3 at =
+            centre + radius * glm::dvec3(ring * std::cos(angle), y, ring * std::sin(angle));
         const std::uint32_t v = grid.nearest(at);
         if (!taken.insert(v).second) continue;
         chosen.push_back(v);
@@ -157,7 +161,8 @@ std::vector<std::uint32_t> sphere_hull_level(const Mesh &mesh, std::size_t verti
     // (counter-clockwise seen from outside) or all in.
     double outward = 0.0;
     for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
-        const glm::dvec3 &a = mesh.positions[mesh.triangles[t]], &b = mesh.positions[mesh.triangles[t + 1]],
+        const glm::dvec3 &a = mesh.positions[mesh.triangles[t]],
+                         &b = mesh.positions[mesh.triangles[t + 1]],
                          &c = mesh.positions[mesh.triangles[t + 2]];
         outward += glm::dot(glm::cross(b - a, c - a), a - centre);
     }

@@ -80,8 +80,8 @@ TEST_CASE("a sphere's levels of detail halve its triangles and stay within their
     }
 }
 
-TEST_CASE("a sphere's even levels stray less than its simplified ones of as many triangles, and keep "
-          "no texture seam") {
+TEST_CASE("a sphere's even levels stray less than its simplified ones of as many triangles and "
+          "keep no texture seam") {
     const Mesh &sphere = generated("sphere.obj");
     const LodChain chain = build_lod_chain(sphere);
     const double own = sphere_deviation(sphere, chain, chain.levels[0]);
@@ -94,11 +94,13 @@ TEST_CASE("a sphere's even levels stray less than its simplified ones of as many
         CHECK(sphere_deviation(sphere, chain, level) <= level.error + own + 1e-6);
         // Closed: every edge is shared by two of its triangles, once each way (a hull's faces
         // wound alike), and Euler's V - E + F = 2.
-        std::map<std::pair<glm::dvec3, glm::dvec3>, int, bool (*)(const std::pair<glm::dvec3, glm::dvec3> &,
-                                                              const std::pair<glm::dvec3, glm::dvec3> &)>
+        std::map<std::pair<glm::dvec3, glm::dvec3>, int,
+                 bool (*)(const std::pair<glm::dvec3, glm::dvec3> &,
+                          const std::pair<glm::dvec3, glm::dvec3> &)>
             edges([](const auto &a, const auto &b) {
                 const auto key = [](const auto &e) {
-                    return std::make_tuple(e.first.x, e.first.y, e.first.z, e.second.x, e.second.y, e.second.z);
+                    return std::make_tuple(e.first.x, e.first.y, e.first.z, e.second.x, e.second.y,
+                                           e.second.z);
                 };
                 return key(a) < key(b);
             });
@@ -121,7 +123,8 @@ TEST_CASE("a sphere's even levels stray less than its simplified ones of as many
               2);
         // Wound as the sphere's own triangles: out of the sphere.
         for (std::uint32_t t = level.first; t < level.first + level.count; t += 3) {
-            const glm::dvec3 a = sphere.positions[chain.indices[t]], b = sphere.positions[chain.indices[t + 1]],
+            const glm::dvec3 a = sphere.positions[chain.indices[t]],
+                             b = sphere.positions[chain.indices[t + 1]],
                              c = sphere.positions[chain.indices[t + 2]];
             REQUIRE(glm::dot(glm::cross(b - a, c - a), a + b + c) > 0.0);
         }

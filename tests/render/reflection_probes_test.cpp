@@ -472,7 +472,8 @@ TEST_CASE("a cube map sees a far model at a coarser level than the view and with
                 for (int dx = -kBorder; dx <= kBorder; ++dx) all = all && bright(x + dx, y + dy);
             if (!all) continue;
             ++inside;
-            worst = std::max(worst, double(pixel(whole.image, x, y).r - pixel(levels.image, x, y).r));
+            worst =
+                std::max(worst, double(pixel(whole.image, x, y).r - pixel(levels.image, x, y).r));
         }
     CAPTURE(inside, worst);
     CHECK(inside > 200); // (the lit side fills much of it: it is what is compared)
