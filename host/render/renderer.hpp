@@ -226,9 +226,10 @@ class Renderer {
     std::vector<glm::dmat4> world_;
     glm::dmat4 view_{1.0}, view_projection_{1.0};
     Frustum frustum_{glm::dmat4(1.0)};
-    std::vector<std::size_t> levels_; // per model, its level of detail in every pass
-    // While a cube map is drawn, the view's levels (levels_ then holds the cube map's, which may
-    // be coarser: draw_reflections()).
+    // Per model, its level of detail in the pass being drawn: the view's (and its shadow maps'),
+    // or while a cube map is drawn the cube map's, which may be coarser (draw_reflections()).
+    std::vector<std::size_t> levels_;
+    // While a cube map is drawn, the view's levels (swapped with levels_).
     std::vector<std::size_t> probe_levels_;
     glm::dvec3 eye_{0.0};             // where the pass being drawn is seen from
     FrameUniforms frame_uniforms_;
