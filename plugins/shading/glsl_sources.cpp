@@ -19,12 +19,33 @@ out vec3 world_position;
 out vec3 world_normal;
 out vec2 texcoord;
 
+// Shadow maps of the first SHADOW_MAPS lights (the feature bits say how many, shading.h; none
+// with shadows off): world to each map and a texel's width at distance 1 from its light. Each
+// vertex hands the fragment stage its point in each map (shadow_at) and how far in the map a push
+// along its normal by 1.5 texel widths at distance 1 goes (shadow_push); the map's projection is
+// linear in homogeneous coordinates, so the interpolated values are exact there and the fragment
+// stage, which llvmpipe runs for every pixel of each 4x4 block a triangle touches, only scales
+// the push by its distance from the light (docs/performance.md).
+#if SHADOW_MAPS > 0
+uniform mat4 shadow_matrices[SHADOW_MAPS];
+uniform float shadow_texels[SHADOW_MAPS];
+out vec4 shadow_at[SHADOW_MAPS];
+out vec4 shadow_push[SHADOW_MAPS];
+#endif
+
 void main() {
     vec4 world = model * vec4(position, 1.0);
     world_position = world.xyz;
     world_normal = normal_matrix * normal;
     texcoord = uv;
     gl_Position = projection * view * world;
+#if SHADOW_MAPS > 0
+    vec3 n = normalize(world_normal);
+    for (int i = 0; i < SHADOW_MAPS; ++i) {
+        shadow_at[i] = shadow_matrices[i] * world;
+        shadow_push[i] = shadow_matrices[i] * vec4(n * (1.5 * shadow_texels[i]), 0.0);
+    }
+#endif
 }
 )glsl";
 
@@ -74,12 +95,11 @@ uniform vec4 cel_outline_colour;
 #ifdef SELECTED
 uniform vec4 selected_tint;
 #endif
-// Shadow maps of the first SHADOW_MAPS lights (the feature bits say how many, shading.h; none
-// with shadows off): world to each map, a texel's width at distance 1 from its light, and the
-// map (a depth comparison, lit outside it).
+// The shadow maps (a depth comparison, lit outside them) and each one's point and push from the
+// vertex stage.
 #if SHADOW_MAPS > 0
-uniform mat4 shadow_matrices[SHADOW_MAPS];
-uniform float shadow_texels[SHADOW_MAPS];
+in vec4 shadow_at[SHADOW_MAPS];
+in vec4 shadow_push[SHADOW_MAPS];
 uniform sampler2DShadow shadow_map0;
 #endif
 #if SHADOW_MAPS > 1
@@ -98,8 +118,7 @@ out vec4 colour;
 // How much of the light reaches p, 0..1: percentage-closer filtering (Reeves, Salesin and Cook
 // 1987) over 2x2 bilinear comparisons half a texel either side, which weigh the 3x3 texels
 // around p as a tent (1 2 1): a shadow's edge is soft over about three texels, at four lookups.
-float lit_fraction(sampler2DShadow map, mat4 to_map, vec3 p) {
-    vec4 q = to_map * vec4(p, 1.0);
+float lit_fraction(sampler2DShadow map, vec4 q) { // (q: the point in the map's clip space)
     if (q.w <= 0.0) return 1.0; // behind the light
     vec3 t = q.xyz / q.w;
     if (t.z >= 1.0) return 1.0; // beyond the map's far plane
@@ -111,12 +130,12 @@ float lit_fraction(sampler2DShadow map, mat4 to_map, vec3 p) {
     return lit * 0.25;
 }
 
-// Light i's share here, from its map (normal n): the point is pushed along its normal by 1.5
-// texels of the map there (normal offset), so a lit surface never shadows itself while its
-// shadow stays attached (the host's depth pass adds a slope-scaled bias).
-float light_share(sampler2DShadow map, int i, vec3 n) {
+// Light i's share here, from its map: the point is pushed along its normal (the side it is seen
+// from, as main()'s n) by 1.5 texels of the map there (normal offset), so a lit surface never
+// shadows itself while its shadow stays attached (the host's depth pass adds a slope-scaled bias).
+float light_share(sampler2DShadow map, int i) {
     float d = length(light_positions[i] - world_position);
-    return lit_fraction(map, shadow_matrices[i], world_position + n * (1.5 * shadow_texels[i] * d));
+    return lit_fraction(map, shadow_at[i] + (gl_FrontFacing ? d : -d) * shadow_push[i]);
 }
 #endif
 
@@ -160,16 +179,16 @@ void main() {
     // rasterizer runs every branch, so a lookup chosen by the light's index would be paid for
     // every map at every light. Then the others.
 #if SHADOW_MAPS > 0
-    add_light(c, 0, n, to_eye, base, light_share(shadow_map0, 0, n));
+    add_light(c, 0, n, to_eye, base, light_share(shadow_map0, 0));
 #endif
 #if SHADOW_MAPS > 1
-    add_light(c, 1, n, to_eye, base, light_share(shadow_map1, 1, n));
+    add_light(c, 1, n, to_eye, base, light_share(shadow_map1, 1));
 #endif
 #if SHADOW_MAPS > 2
-    add_light(c, 2, n, to_eye, base, light_share(shadow_map2, 2, n));
+    add_light(c, 2, n, to_eye, base, light_share(shadow_map2, 2));
 #endif
 #if SHADOW_MAPS > 3
-    add_light(c, 3, n, to_eye, base, light_share(shadow_map3, 3, n));
+    add_light(c, 3, n, to_eye, base, light_share(shadow_map3, 3));
 #endif
     // A loop over a count fixed here is unrolled with constant indices; one bounded by the
     // light_count uniform is run by llvmpipe for every pixel with variable indices into the
