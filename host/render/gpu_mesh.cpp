@@ -24,6 +24,13 @@ GpuMesh::GpuMesh(const Mesh &mesh) {
     }
     const LodChain chain = build_lod_chain(mesh);
     levels_ = chain.levels;
+    // The levels' own vertices after the mesh's (a sphere's even levels), without texture
+    // coordinates.
+    for (size_t i = 0; i < chain.added_positions.size(); ++i) {
+        const glm::dvec3 &p = chain.added_positions[i], &n = chain.added_normals[i];
+        for (double x : {p.x, p.y, p.z, n.x, n.y, n.z, 0.0, 0.0})
+            interleaved.push_back(static_cast<float>(x));
+    }
     static_assert(sizeof(glm::dvec3) == 3 * sizeof(double), "positions are read as doubles");
     ani_mesh_view view{};
     view.struct_size = sizeof view;

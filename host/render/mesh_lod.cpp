@@ -149,16 +149,21 @@ LodChain build_lod_chain(const Mesh &mesh) {
     // The mesh's surface, for measuring how far each level strays from it: a two-sided Hausdorff
     // distance, sampled, from the mesh's vertices to the level's triangles (the vertices it left
     // out are where it strays) and from the level's triangles (their centroids and edge
-    // midpoints) to the mesh's, at least `estimate`. (A point nearer than the largest distance
-    // so far cannot raise it: its search stops at the first triangle that near.)
+    // midpoints, and corners where they are not the mesh's) to the mesh's, at least `estimate`.
+    // (A point nearer than the largest distance so far cannot raise it: its search stops at the
+    // first triangle that near.) `with` holds the level's vertices: the mesh, or the mesh with
+    // vertices added.
     const TriangleGrid whole(mesh, mesh.triangles.data(), mesh.triangles.size());
-    const auto measure = [&](const std::uint32_t *indices, std::size_t count, double estimate) {
+    const auto measure = [&](const Mesh &with, const std::uint32_t *indices, std::size_t count,
+                             double estimate) {
         double distance = estimate;
         const auto farthest = [&](const TriangleGrid &surface, const glm::dvec3 &p) {
             distance = std::max(distance, surface.distance(p, std::max(distance, rounding)));
         };
-        sample_triangles(mesh, indices, count, [&](const glm::dvec3 &p) { farthest(whole, p); });
-        const TriangleGrid level(mesh, indices, count);
+        sample_triangles(with, indices, count, [&](const glm::dvec3 &p) { farthest(whole, p); });
+        for (std::size_t t = 0; t < count; ++t)
+            if (indices[t] >= mesh.positions.size()) farthest(whole, with.positions[indices[t]]);
+        const TriangleGrid level(with, indices, count);
         for (const glm::dvec3 &p : mesh.positions) farthest(level, p);
         return distance;
     };
@@ -177,7 +182,7 @@ LodChain build_lod_chain(const Mesh &mesh) {
         // surfaces, by up to 3 times on a torus: it is measured instead, and is at least the
         // estimate.
         const double distance =
-            measure(simplified.data(), count, static_cast<double>(error) * scale);
+            measure(mesh, simplified.data(), count, static_cast<double>(error) * scale);
         error_so_far = std::max(error_so_far, distance);
         chain.levels.push_back({static_cast<std::uint32_t>(chain.indices.size()),
                                 static_cast<std::uint32_t>(count), error_so_far});
@@ -186,25 +191,40 @@ LodChain build_lod_chain(const Mesh &mesh) {
         previous = count;
     }
     // A sphere's levels of even triangles (sphere_lod.hpp), each kept where no level has as few
-    // triangles or fewer with as small an error or smaller; they do not keep a texture's seam.
+    // triangles or fewer with as small an error or smaller; their vertices are added after the
+    // mesh's, and they keep no texture coordinates. Measured against the mesh as the others are,
+    // over the mesh with those vertices added.
     if (approximates_sphere(mesh)) {
+        Mesh extended = mesh;
         previous = mesh.triangles.size();
         // (From about 1,000 triangles down: where a far sphere's few pixels are drawn, and where
         // the simplifier's levels stray most. Measuring each costs a few ms.)
         for (std::size_t vertices = std::min<std::size_t>(mesh.positions.size() / 2, 512);
              2 * vertices >= kCoarsest + 4; vertices = vertices * 3 / 4) {
-            const std::vector<std::uint32_t> hull = sphere_hull_level(mesh, vertices);
-            if (hull.empty() || hull.size() * 4 > previous * 3) continue;
-            previous = hull.size();
-            const double distance = measure(hull.data(), hull.size(), 0.0);
+            const SphereLevel even = sphere_even_level(mesh, vertices);
+            if (even.triangles.empty() || even.triangles.size() * 4 > previous * 3) continue;
+            previous = even.triangles.size();
+            const auto first = static_cast<std::uint32_t>(extended.positions.size());
+            std::vector<std::uint32_t> level(even.triangles);
+            for (std::uint32_t &i : level) i += first;
+            extended.positions.insert(extended.positions.end(), even.positions.begin(),
+                                      even.positions.end());
+            const double distance = measure(extended, level.data(), level.size(), 0.0);
             const bool beaten =
                 std::any_of(chain.levels.begin(), chain.levels.end(), [&](const LodLevel &l) {
-                    return l.count <= hull.size() && l.error <= distance;
+                    return l.count <= level.size() && l.error <= distance;
                 });
-            if (beaten) continue;
+            if (beaten) {
+                extended.positions.resize(first);
+                continue;
+            }
             chain.levels.push_back({static_cast<std::uint32_t>(chain.indices.size()),
-                                    static_cast<std::uint32_t>(hull.size()), distance, false});
-            chain.indices.insert(chain.indices.end(), hull.begin(), hull.end());
+                                    static_cast<std::uint32_t>(level.size()), distance, false});
+            chain.indices.insert(chain.indices.end(), level.begin(), level.end());
+            chain.added_positions.insert(chain.added_positions.end(), even.positions.begin(),
+                                         even.positions.end());
+            chain.added_normals.insert(chain.added_normals.end(), even.normals.begin(),
+                                       even.normals.end());
         }
     }
     return chain;

@@ -25,14 +25,16 @@ struct LodLevel {
     // centroids and edge midpoints to the mesh's), and at least meshoptimizer's own estimate,
     // which falls short of it; 0 for the mesh itself.
     double error = 0.0;
-    // Whether it keeps the mesh's texture coordinates where the mesh splits its vertices for
-    // them (a seam): a sphere's even levels (sphere_lod.hpp) do not, and are for untextured
-    // models only.
+    // Whether it keeps the mesh's texture coordinates: a sphere's even levels (sphere_lod.hpp),
+    // over vertices of their own, do not, and are for untextured models only.
     bool keeps_texture = true;
 };
 
 struct LodChain {
     std::vector<std::uint32_t> indices; // every level's triangles, one after the other
+    // Vertices the levels add after the mesh's own (index mesh.positions.size() + k is added k):
+    // a sphere's even levels' (sphere_lod.hpp), with no texture coordinates.
+    std::vector<glm::dvec3> added_positions, added_normals;
     // levels[0]: the mesh itself; then its simplified levels, fewer triangles and larger errors
     // each; then, for a sphere, its even levels that beat those (fewer triangles for the error).
     std::vector<LodLevel> levels;

@@ -28,13 +28,18 @@ const Mesh &generated(const std::string &name) {
     return found->second;
 }
 
+// Vertex i of a chain's levels: the mesh's, or one a level added after them.
+glm::dvec3 vertex(const Mesh &mesh, const LodChain &chain, std::uint32_t i) {
+    return i < mesh.positions.size() ? mesh.positions[i] : chain.added_positions.at(i - mesh.positions.size());
+}
+
 // The largest distance from the unit sphere of points spread over a level's triangles (each
 // triangle's corners and a grid of 45 points inside it).
 double sphere_deviation(const Mesh &mesh, const LodChain &chain, const LodLevel &level) {
     double worst = 0.0;
     for (std::uint32_t t = level.first; t < level.first + level.count; t += 3) {
-        const glm::dvec3 a = mesh.positions[chain.indices[t]], b = mesh.positions[chain.indices[t + 1]],
-                         c = mesh.positions[chain.indices[t + 2]];
+        const glm::dvec3 a = vertex(mesh, chain, chain.indices[t]), b = vertex(mesh, chain, chain.indices[t + 1]),
+                         c = vertex(mesh, chain, chain.indices[t + 2]);
         const int n = 8;
         for (int i = 0; i <= n; ++i)
             for (int j = 0; i + j <= n; ++j) {
@@ -75,8 +80,23 @@ TEST_CASE("a sphere's levels of detail halve its triangles and stay within their
         // The truth is the sphere: no point of the level lies farther from it than the level's
         // stated error beyond what the whole mesh's own chords stray.
         CHECK(sphere_deviation(sphere, chain, level) <= level.error + own + 1e-6);
-        // Only the mesh's own vertices (normals and UVs stay those of the mesh).
-        for (std::uint32_t v : used_vertices(chain, level)) REQUIRE(v < sphere.positions.size());
+        // The simplified levels over the mesh's own vertices (normals and UVs stay those of the
+        // mesh); the even ones over their own, pushed out of the sphere by less than their error
+        // (sphere_lod.hpp), normals along the radius.
+        CHECK(chain.added_positions.size() == chain.added_normals.size());
+        for (std::uint32_t v : used_vertices(chain, level)) {
+            if (level.keeps_texture) {
+                REQUIRE(v < sphere.positions.size());
+            } else {
+                REQUIRE(v >= sphere.positions.size());
+                const std::size_t k = v - sphere.positions.size();
+                REQUIRE(k < chain.added_positions.size());
+                const glm::dvec3 p = chain.added_positions[k];
+                CHECK(glm::length(p) >= 1.0 - 1e-6);
+                CHECK(glm::length(p) <= 1.0 + level.error);
+                CHECK(glm::length(chain.added_normals[k] - glm::normalize(p)) < 1e-6);
+            }
+        }
     }
 }
 
@@ -107,8 +127,8 @@ TEST_CASE("a sphere's even levels stray less than its simplified ones of as many
         std::set<std::tuple<double, double, double>> corners;
         for (std::uint32_t t = level.first; t < level.first + level.count; t += 3)
             for (int k = 0; k < 3; ++k) {
-                const glm::dvec3 a = sphere.positions[chain.indices[t + k]],
-                                 b = sphere.positions[chain.indices[t + (k + 1) % 3]];
+                const glm::dvec3 a = vertex(sphere, chain, chain.indices[t + k]),
+                                 b = vertex(sphere, chain, chain.indices[t + (k + 1) % 3]);
                 ++edges[{a, b}];
                 corners.insert({a.x, a.y, a.z});
             }
@@ -123,9 +143,9 @@ TEST_CASE("a sphere's even levels stray less than its simplified ones of as many
               2);
         // Wound as the sphere's own triangles: out of the sphere.
         for (std::uint32_t t = level.first; t < level.first + level.count; t += 3) {
-            const glm::dvec3 a = sphere.positions[chain.indices[t]],
-                             b = sphere.positions[chain.indices[t + 1]],
-                             c = sphere.positions[chain.indices[t + 2]];
+            const glm::dvec3 a = vertex(sphere, chain, chain.indices[t]),
+                             b = vertex(sphere, chain, chain.indices[t + 1]),
+                             c = vertex(sphere, chain, chain.indices[t + 2]);
             REQUIRE(glm::dot(glm::cross(b - a, c - a), a + b + c) > 0.0);
         }
     }
