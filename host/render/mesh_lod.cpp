@@ -19,21 +19,23 @@ namespace {
 constexpr std::size_t kFewestTriangles = 64; // below it, one level: nothing to gain
 constexpr std::size_t kCoarsest = 24;        // no level of fewer triangles is asked for
 
-// Some triangles of a mesh in a uniform grid of cubes about two triangles wide, for the distance
-// from a point to the nearest of them. The cells' triangles are in one list (counting sort).
+// Some triangles (corners in `positions`) in a uniform grid of cubes about two triangles wide,
+// for the distance from a point to the nearest of them. The cells' triangles are in one list
+// (counting sort).
 class TriangleGrid {
   public:
-    TriangleGrid(const Mesh &mesh, const std::uint32_t *indices, std::size_t count)
-        : mesh_(mesh), indices_(indices) {
+    TriangleGrid(const std::vector<glm::dvec3> &positions, const std::uint32_t *indices,
+                 std::size_t count)
+        : positions_(positions), indices_(indices) {
         low_ = glm::dvec3(std::numeric_limits<double>::max());
         glm::dvec3 high(-std::numeric_limits<double>::max());
         double edges = 0.0;
         for (std::size_t t = 0; t < count; t += 3)
             for (int v = 0; v < 3; ++v) {
-                const glm::dvec3 &p = mesh.positions[indices[t + v]];
+                const glm::dvec3 &p = positions[indices[t + v]];
                 low_ = glm::min(low_, p);
                 high = glm::max(high, p);
-                edges += glm::length(mesh.positions[indices[t + (v + 1) % 3]] - p);
+                edges += glm::length(positions[indices[t + (v + 1) % 3]] - p);
             }
         const glm::dvec3 extent = high - low_;
         // (At most 128 cells along an axis: a long thin mesh gets wider cells.)
@@ -42,9 +44,9 @@ class TriangleGrid {
         for (int k = 0; k < 3; ++k) cells_[k] = std::min(128, static_cast<int>(extent[k] / cell_) + 1);
         std::vector<std::pair<std::size_t, std::uint32_t>> entries; // (cell, first index)
         for (std::size_t t = 0; t < count; t += 3) {
-            glm::ivec3 a = cell_of(mesh.positions[indices[t]]), b = a;
+            glm::ivec3 a = cell_of(positions[indices[t]]), b = a;
             for (int v = 1; v < 3; ++v) {
-                const glm::ivec3 c = cell_of(mesh.positions[indices[t + v]]);
+                const glm::ivec3 c = cell_of(positions[indices[t + v]]);
                 a = glm::min(a, c);
                 b = glm::max(b, c);
             }
@@ -84,9 +86,9 @@ class TriangleGrid {
                         const std::size_t i = index(x, y, z);
                         for (std::uint32_t k = start_[i]; k < start_[i + 1]; ++k) {
                             const std::uint32_t t = triangles_[k];
-                            const glm::dvec3 &a = mesh_.positions[indices_[t]],
-                                             &b = mesh_.positions[indices_[t + 1]],
-                                             &c = mesh_.positions[indices_[t + 2]];
+                            const glm::dvec3 &a = positions_[indices_[t]],
+                                             &b = positions_[indices_[t + 1]],
+                                             &c = positions_[indices_[t + 2]];
                             best = std::min(best, glm::length(p - ani::closest_point_on_triangle(p, a, b, c)));
                             if (best <= enough) return best;
                         }
@@ -106,7 +108,7 @@ class TriangleGrid {
         return (static_cast<std::size_t>(z) * cells_[1] + y) * cells_[0] + x;
     }
 
-    const Mesh &mesh_;
+    const std::vector<glm::dvec3> &positions_;
     const std::uint32_t *indices_;
     glm::dvec3 low_;
     double cell_ = 1.0;
@@ -118,10 +120,11 @@ class TriangleGrid {
 // The points of a level's triangle where it parts most from the mesh: its centroid and the
 // midpoints of its edges (its corners lie on both).
 template <typename Visit>
-void sample_triangles(const Mesh &mesh, const std::uint32_t *indices, std::size_t count, Visit &&visit) {
+void sample_triangles(const std::vector<glm::dvec3> &positions, const std::uint32_t *indices,
+                      std::size_t count, Visit &&visit) {
     for (std::size_t t = 0; t < count; t += 3) {
-        const glm::dvec3 &a = mesh.positions[indices[t]], &b = mesh.positions[indices[t + 1]],
-                         &c = mesh.positions[indices[t + 2]];
+        const glm::dvec3 &a = positions[indices[t]], &b = positions[indices[t + 1]],
+                         &c = positions[indices[t + 2]];
         visit((a + b + c) / 3.0);
         visit((a + b) * 0.5);
         visit((b + c) * 0.5);
@@ -151,18 +154,18 @@ LodChain build_lod_chain(const Mesh &mesh) {
     // out are where it strays) and from the level's triangles (their centroids and edge
     // midpoints, and corners where they are not the mesh's) to the mesh's, at least `estimate`.
     // (A point nearer than the largest distance so far cannot raise it: its search stops at the
-    // first triangle that near.) `with` holds the level's vertices: the mesh, or the mesh with
-    // vertices added.
-    const TriangleGrid whole(mesh, mesh.triangles.data(), mesh.triangles.size());
-    const auto measure = [&](const Mesh &with, const std::uint32_t *indices, std::size_t count,
-                             double estimate) {
+    // first triangle that near.) `with` holds the level's vertices: the mesh's, or the mesh's
+    // and those added after them.
+    const TriangleGrid whole(mesh.positions, mesh.triangles.data(), mesh.triangles.size());
+    const auto measure = [&](const std::vector<glm::dvec3> &with, const std::uint32_t *indices,
+                             std::size_t count, double estimate) {
         double distance = estimate;
         const auto farthest = [&](const TriangleGrid &surface, const glm::dvec3 &p) {
             distance = std::max(distance, surface.distance(p, std::max(distance, rounding)));
         };
         sample_triangles(with, indices, count, [&](const glm::dvec3 &p) { farthest(whole, p); });
         for (std::size_t t = 0; t < count; ++t)
-            if (indices[t] >= mesh.positions.size()) farthest(whole, with.positions[indices[t]]);
+            if (indices[t] >= mesh.positions.size()) farthest(whole, with[indices[t]]);
         const TriangleGrid level(with, indices, count);
         for (const glm::dvec3 &p : mesh.positions) farthest(level, p);
         return distance;
@@ -182,7 +185,7 @@ LodChain build_lod_chain(const Mesh &mesh) {
         // surfaces, by up to 3 times on a torus: it is measured instead, and is at least the
         // estimate.
         const double distance =
-            measure(mesh, simplified.data(), count, static_cast<double>(error) * scale);
+            measure(mesh.positions, simplified.data(), count, static_cast<double>(error) * scale);
         error_so_far = std::max(error_so_far, distance);
         chain.levels.push_back({static_cast<std::uint32_t>(chain.indices.size()),
                                 static_cast<std::uint32_t>(count), error_so_far});
@@ -193,9 +196,10 @@ LodChain build_lod_chain(const Mesh &mesh) {
     // A sphere's levels of even triangles (sphere_lod.hpp), each kept where no level has as few
     // triangles or fewer with as small an error or smaller; their vertices are added after the
     // mesh's, and they keep no texture coordinates. Measured against the mesh as the others are,
-    // over the mesh with those vertices added.
+    // over the mesh's vertices and those added (`every_position`: the mesh's, then the kept
+    // levels').
     if (approximates_sphere(mesh)) {
-        Mesh extended = mesh;
+        std::vector<glm::dvec3> every_position = mesh.positions;
         previous = mesh.triangles.size();
         // (From about 1,000 triangles down: where a far sphere's few pixels are drawn, and where
         // the simplifier's levels stray most. Measuring each costs a few ms.)
@@ -204,28 +208,29 @@ LodChain build_lod_chain(const Mesh &mesh) {
             const SphereLevel even = sphere_even_level(mesh, vertices);
             if (even.triangles.empty() || even.triangles.size() * 4 > previous * 3) continue;
             previous = even.triangles.size();
-            const auto first = static_cast<std::uint32_t>(extended.positions.size());
+            const auto first = static_cast<std::uint32_t>(every_position.size());
             std::vector<std::uint32_t> level(even.triangles);
             for (std::uint32_t &i : level) i += first;
-            extended.positions.insert(extended.positions.end(), even.positions.begin(),
-                                      even.positions.end());
-            const double distance = measure(extended, level.data(), level.size(), 0.0);
+            every_position.insert(every_position.end(), even.positions.begin(),
+                                  even.positions.end());
+            const double distance = measure(every_position, level.data(), level.size(), 0.0);
             const bool beaten =
                 std::any_of(chain.levels.begin(), chain.levels.end(), [&](const LodLevel &l) {
                     return l.count <= level.size() && l.error <= distance;
                 });
             if (beaten) {
-                extended.positions.resize(first);
+                every_position.resize(first);
                 continue;
             }
             chain.levels.push_back({static_cast<std::uint32_t>(chain.indices.size()),
                                     static_cast<std::uint32_t>(level.size()), distance, false});
             chain.indices.insert(chain.indices.end(), level.begin(), level.end());
-            chain.added_positions.insert(chain.added_positions.end(), even.positions.begin(),
-                                         even.positions.end());
             chain.added_normals.insert(chain.added_normals.end(), even.normals.begin(),
                                        even.normals.end());
         }
+        chain.added_positions.assign(every_position.begin() +
+                                         static_cast<std::ptrdiff_t>(mesh.positions.size()),
+                                     every_position.end());
     }
     return chain;
 }

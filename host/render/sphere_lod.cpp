@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
-#include <vector>
 #include <utility>
+#include <vector>
 
 namespace animator {
 

@@ -19,8 +19,8 @@
 namespace animator {
 
 struct SphereLevel {
-    std::vector<glm::dvec3> positions; // on a sphere about the mesh's bounding one's centre
-    std::vector<glm::dvec3> normals;   // along the radius, out or in as the mesh's normals are
+    std::vector<glm::dvec3> positions;    // on a sphere about the mesh's bounding one's centre
+    std::vector<glm::dvec3> normals;      // along the radius, out or in as the mesh's normals are
     std::vector<std::uint32_t> triangles; // three indices each into positions, wound as the mesh's
 };
 

@@ -30,7 +30,8 @@ const Mesh &generated(const std::string &name) {
 
 // Vertex i of a chain's levels: the mesh's, or one a level added after them.
 glm::dvec3 vertex(const Mesh &mesh, const LodChain &chain, std::uint32_t i) {
-    return i < mesh.positions.size() ? mesh.positions[i] : chain.added_positions.at(i - mesh.positions.size());
+    return i < mesh.positions.size() ? mesh.positions[i]
+                                     : chain.added_positions.at(i - mesh.positions.size());
 }
 
 // The largest distance from the unit sphere of points spread over a level's triangles (each
@@ -38,7 +39,8 @@ glm::dvec3 vertex(const Mesh &mesh, const LodChain &chain, std::uint32_t i) {
 double sphere_deviation(const Mesh &mesh, const LodChain &chain, const LodLevel &level) {
     double worst = 0.0;
     for (std::uint32_t t = level.first; t < level.first + level.count; t += 3) {
-        const glm::dvec3 a = vertex(mesh, chain, chain.indices[t]), b = vertex(mesh, chain, chain.indices[t + 1]),
+        const glm::dvec3 a = vertex(mesh, chain, chain.indices[t]),
+                         b = vertex(mesh, chain, chain.indices[t + 1]),
                          c = vertex(mesh, chain, chain.indices[t + 2]);
         const int n = 8;
         for (int i = 0; i <= n; ++i)
