@@ -62,39 +62,6 @@ struct BakeContext {
     std::vector<std::vector<ani_carried_segment>> *carried;
     const std::vector<Model> *models;
     std::string refused = {}; // a free-rotation segment the host cannot evaluate
-    // The motion segments of this bake call in the order reported, in chunks (never moved as
-    // they grow), filed by model at its end (file_segments): each model's run in the store then
-    // grows once per call, not at every segment (at 100,000 balls growing them one by one took a
-    // sixth of the bake).
-    // Chunks of 6 MB, in huge pages (huge_pages.hpp).
-    static constexpr std::size_t kChunk = 1 << 16;
-    std::vector<ani::HugeVector<ani_motion_segment>> log = {};
-    // Each logged segment's model, in order: counted by model when filed. (Counted as they came,
-    // each count was a cache miss in the middle of the bake's loop, 3% of a bake of 100,000
-    // balls; counted together they overlap, and no pass over the log is needed.)
-    ani::HugeVector<uint32_t> logged_models = {};
-
-    void log_segment(const ani_motion_segment &s) {
-        const std::size_t logged = logged_models.size();
-        if (logged == log.size() * kChunk) log.emplace_back().reserve(kChunk);
-        log[logged / kChunk].push_back(s);
-        logged_models.push_back(s.model);
-    }
-    template <class F> void each_logged(F &&f) const {
-        const std::size_t logged = logged_models.size();
-        for (std::size_t k = 0; k < logged; k += kChunk) {
-            const ani_motion_segment *chunk = log[k / kChunk].data();
-            for (std::size_t i = 0, n = std::min(kChunk, logged - k); i < n; ++i) f(chunk[i]);
-        }
-    }
-    void file_segments() {
-        std::vector<uint32_t> logged_of(segments->models(), 0); // per model
-        for (uint32_t m : logged_models) ++logged_of[m];
-        segments->append(logged_of, [&](auto &&put) { each_logged(put); });
-        for (auto &chunk : log) chunk.clear();
-        logged_models.clear();
-    }
-
     // Refuses the bake for model `model`'s segment of `kind` at t0 when `why` says something.
     bool refuse(uint32_t model, const char *kind, double t0, const std::string &why) {
         if (why.empty()) return false;
@@ -135,7 +102,7 @@ template <class F> void in_two_halves(std::size_t n, F &&f) {
 struct KeyedAnswers {
     const KeyedMotion *keyed;
     double from;
-    ani::HugeVector<std::optional<ModelPose>> at_from; // per model
+    ani::UnwrittenVector<std::optional<ModelPose>> at_from; // per model (each made in run_bake)
 };
 
 // What every kind of rotation segment gives: its model, its span and its orientation at t0.
@@ -415,8 +382,9 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     const DocumentView &view = *view_;
     const auto &models = doc_.models();
     const double end_of_time = static_cast<double>(doc_.settings().max_time_ms) / 1000.0;
-    ani::HugeVector<ani_physics_model> scene_models(models.size());
-    ani::HugeVector<ani_time_span> spans(models.size());
+    // Written in two halves at once below, each element once (huge_pages.hpp: UnwrittenVector).
+    ani::UnwrittenVector<ani_physics_model> scene_models(models.size());
+    ani::UnwrittenVector<ani_time_span> spans(models.size());
     // Every model's key times, in one array (a vector each was an allocation a model: 100,000 for
     // a gas), the model's from key_from[m] to key_from[m + 1].
     std::vector<double> key_times;
@@ -430,36 +398,42 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     // The backend asks for the keyed pose of every model that starts on its keys, at `from`:
     // the answers are the poses found here (evaluating them again took a tenth of a bake of
     // 100,000 balls).
-    KeyedAnswers answers{keyed_.get(), from, ani::HugeVector<std::optional<ModelPose>>(models.size())};
+    KeyedAnswers answers{keyed_.get(), from,
+                         ani::UnwrittenVector<std::optional<ModelPose>>(models.size())};
+    // Each model's part of the scene, in two halves at once (a model's start, its span and its
+    // turning are read from this timeline and the keys, never written: a hundred nanoseconds a
+    // model, most of it waiting on memory).
     in_two_halves(models.size(), [&](std::size_t begin, std::size_t end) {
-        for (std::size_t m = begin; m < end; ++m)
-            scene_models[m].start = state_at(static_cast<int>(m), from, &answers.at_from[m]);
-    });
-    for (size_t m = 0; m < models.size(); ++m) {
-        ani_physics_model &pm = scene_models[m];
-        pm.struct_size = sizeof pm;
-        pm.desc = &view.view().models[m];
-        pm.mesh = m < meshes_.size() && meshes_[m] ? &meshes_[m]->view : nullptr;
-        // Parts of a jointed model move with their parent: keyed (relative to it) throughout.
-        pm.group = groups_[m];
-        spans[m] = pm.group != m ? ani_time_span{0.0, std::max(end_of_time, until)}
-                                 : keyed_->keyed_span(static_cast<int>(m));
-        pm.keyed_spans = &spans[m];
-        pm.keyed_span_count = 1;
-        if (const RotationSegment *r = rotation_at(static_cast<int>(m), from)) {
-            const glm::dquat q = orientation_at(*r, from);
-            pm.start_orientation = ani_quat{q.w, q.x, q.y, q.z};
-            pm.start_angular_velocity = to_ani(angular_velocity_at(*r, from));
-            pm.start_turning = 1;
-        } else if (pm.start.motion == ANI_MOTION_FREE && carried_at(static_cast<int>(m), from)) {
-            const Placement p = placement(static_cast<int>(m), from);
-            pm.start_orientation = ani_quat{p.q.w, p.q.x, p.q.y, p.q.z};
-            pm.start_angular_velocity = to_ani(p.w);
-            pm.start_turning = 1;
+        for (std::size_t m = begin; m < end; ++m) {
+            ani_physics_model &pm = scene_models[m];
+            pm = ani_physics_model{};
+            ::new (static_cast<void *>(&answers.at_from[m])) std::optional<ModelPose>();
+            pm.start = state_at(static_cast<int>(m), from, &answers.at_from[m]);
+            pm.struct_size = sizeof pm;
+            pm.desc = &view.view().models[m];
+            pm.mesh = m < meshes_.size() && meshes_[m] ? &meshes_[m]->view : nullptr;
+            // Parts of a jointed model move with their parent: keyed (relative to it) throughout.
+            pm.group = groups_[m];
+            spans[m] = pm.group != m ? ani_time_span{0.0, std::max(end_of_time, until)}
+                                     : keyed_->keyed_span(static_cast<int>(m));
+            pm.keyed_spans = &spans[m];
+            pm.keyed_span_count = 1;
+            if (const RotationSegment *r = rotation_at(static_cast<int>(m), from)) {
+                const glm::dquat q = orientation_at(*r, from);
+                pm.start_orientation = ani_quat{q.w, q.x, q.y, q.z};
+                pm.start_angular_velocity = to_ani(angular_velocity_at(*r, from));
+                pm.start_turning = 1;
+            } else if (pm.start.motion == ANI_MOTION_FREE &&
+                       carried_at(static_cast<int>(m), from)) {
+                const Placement p = placement(static_cast<int>(m), from);
+                pm.start_orientation = ani_quat{p.q.w, p.q.x, p.q.y, p.q.z};
+                pm.start_angular_velocity = to_ani(p.w);
+                pm.start_turning = 1;
+            }
+            pm.key_times = key_times.data() + key_from[m];
+            pm.key_count = static_cast<uint32_t>(key_from[m + 1] - key_from[m]);
         }
-        pm.key_times = key_times.data() + key_from[m];
-        pm.key_count = static_cast<uint32_t>(key_from[m + 1] - key_from[m]);
-    }
+    });
     ani_physics_scene scene{};
     scene.struct_size = sizeof scene;
     scene.models = scene_models.data();
@@ -490,7 +464,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     sink.context = &context;
     sink.segment = [](void *c, const ani_motion_segment *s) {
         auto *ctx = static_cast<BakeContext *>(c);
-        if (s->model < ctx->segments->models()) ctx->log_segment(*s);
+        if (s->model < ctx->segments->models()) ctx->segments->log(*s); // (filed after the call)
     };
     sink.event = [](void *c, const ani_collision_event *e) { static_cast<BakeContext *>(c)->events->push_back(*e); };
     sink.progress = [](void *c, double fraction) -> int32_t {
@@ -592,7 +566,7 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     ani_status status{};
     const auto &api = physics_->api<ani_physics_api>();
     const ani_status_code code = api.bake(physics_->handle(), &scene, from, until, &sink, &status);
-    context.file_segments();
+    segments_.file();
     ++stats_.bake_calls;
     if (code == ANI_ERR_CANCELLED) {
         truncate(from);

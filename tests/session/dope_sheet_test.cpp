@@ -170,7 +170,10 @@ TEST_CASE("released spans: free flight and rest, joined where contiguous, keyed 
     const std::vector<ani_motion_segment> segments = {
         segment(0.0, 1.0, ANI_MOTION_KEYED), segment(1.0, 1.5, ANI_MOTION_FREE), segment(1.5, 2.0, ANI_MOTION_FREE),
         segment(2.0, 3.0, ANI_MOTION_REST), segment(3.0, 4.0, ANI_MOTION_KEYED), segment(4.0, 5.0, ANI_MOTION_FREE)};
-    const std::vector<ReleasedSpan> spans = released_spans(segments);
+    SegmentStore store(1);
+    for (const ani_motion_segment &s : segments) store.log(s);
+    store.file();
+    const std::vector<ReleasedSpan> spans = released_spans(store[0]);
     REQUIRE(spans.size() == 3);
     CHECK(spans[0].t0 == 1.0);
     CHECK(spans[0].t1 == 2.0);

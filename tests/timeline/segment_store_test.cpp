@@ -79,17 +79,21 @@ TEST_CASE("the segment store keeps each model's segments as a list per model wou
         const double from = until;
         until += 0.25;
         const std::vector<ani_motion_segment> call = bake_call(rng, models, from, until);
-        std::vector<std::uint32_t> count(models, 0);
-        for (const auto &s : call) ++count[s.model];
-        store.append(count, [&](auto &&put) {
-            for (const auto &s : call) put(s);
-        });
+        for (const auto &s : call) store.log(s);
+        if (step % 5 == 4) { // a cancelled call: dropped from where it started, logged or filed
+            store.truncate(from);
+            until = from;
+            same(store, lists);
+            continue;
+        }
+        store.file();
         for (const auto &s : call) lists[s.model].push_back(s);
         same(store, lists);
     }
     // Runs moved to grow leave space behind; the store is compacted before that space passes
     // twice what is used (and a margin of 65,536 segments).
     CHECK(store.capacity() <= 2 * store.segment_count() + (std::size_t{1} << 16) + 5 * models);
+    CHECK(store.logged() <= 2 * store.segment_count() + (std::size_t{1} << 16));
     // Through a bake's file and back.
     SegmentStore copy;
     copy.assign(store.lists());
@@ -104,21 +108,53 @@ TEST_CASE("the segment store compacts once moved runs leave more space than they
     const std::size_t models = 20000;
     SegmentStore store(models);
     Lists lists(models);
-    std::vector<std::uint32_t> count(models, 1);
     for (int call = 0; call < 40; ++call) {
-        store.append(count, [&](auto &&put) {
-            for (std::size_t m = 0; m < models; ++m) {
-                ani_motion_segment s{};
-                s.model = static_cast<std::uint32_t>(m);
-                s.t0 = call;
-                s.t1 = call + 1;
-                s.p0.z = static_cast<double>(call * 100000 + static_cast<int>(m));
-                put(s);
-                lists[m].push_back(s);
-            }
-        });
+        for (std::size_t m = 0; m < models; ++m) {
+            ani_motion_segment s{};
+            s.model = static_cast<std::uint32_t>(m);
+            s.t0 = call;
+            s.t1 = call + 1;
+            s.p0.z = static_cast<double>(call * 100000 + static_cast<int>(m));
+            store.log(s);
+            lists[m].push_back(s);
+        }
+        store.file();
         CAPTURE(call, store.capacity(), store.segment_count());
         CHECK(store.capacity() <= 2 * store.segment_count() + (std::size_t{1} << 16) + 2 * models);
     }
     same(store, lists);
+}
+
+TEST_CASE("the segment store's log drops what re-bakes left behind, keeping every run's segments") {
+    // Each call logs three segments per model over [call, call + 1] and the next re-bake keeps
+    // only its first: more than 65,536 dropped segments a call, so the log is rebuilt (with the
+    // call's segments not yet filed carried along) and stays within a bound of what is kept.
+    const std::size_t models = 30000;
+    SegmentStore store(models);
+    Lists lists(models);
+    for (int call = 0; call < 12; ++call) {
+        for (int part = 0; part < 3; ++part)
+            for (std::size_t m = 0; m < models; ++m) {
+                ani_motion_segment s{};
+                s.model = static_cast<std::uint32_t>(m);
+                s.t0 = call + part / 3.0;
+                s.t1 = call + (part + 1) / 3.0;
+                s.p0.z = static_cast<double>((call * 3 + part) * 100000 + static_cast<int>(m));
+                store.log(s);
+                lists[m].push_back(s);
+            }
+        store.file();
+        const double from = call + 1.0 / 3.0;
+        store.truncate(from);
+        for (auto &l : lists) {
+            while (!l.empty() && l.back().t0 >= from) l.pop_back();
+            if (!l.empty() && l.back().t1 > from) l.back().t1 = from;
+        }
+        CAPTURE(call, store.logged(), store.segment_count());
+        CHECK(store.logged() <= 2 * store.segment_count() + 3 * models + (std::size_t{1} << 16));
+    }
+    same(store, lists);
+    store.truncate(0.0); // a bake from the start: nothing kept, the log starts again
+    CHECK(store.logged() == 0);
+    same(store, Lists(models));
 }

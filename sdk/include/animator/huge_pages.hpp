@@ -15,6 +15,8 @@
 #include <cstdint>
 #include <memory>
 #include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #if defined(__linux__) && !defined(__SANITIZE_ADDRESS__)
@@ -187,5 +189,26 @@ template <class T> struct HugePageAllocator {
 
 // A vector whose storage is in huge pages once it is large.
 template <class T> using HugeVector = std::vector<T, HugePageAllocator<T>>;
+
+// As HugePageAllocator, but the room a resize (or a vector's constructor of n elements) adds is
+// left unwritten where T is trivially copyable: std::vector would zero it, a pass over the whole
+// array before the caller writes every element anyway (a bake's arrays of a value per model are
+// filled in two halves at once; zeroing them first, on one thread, was a tenth of the host's part
+// of a bake of 100,000 balls: docs/performance.md, the gas). Every such element must be written
+// before it is read.
+template <class T> struct UnwrittenAllocator : HugePageAllocator<T> {
+    template <class U> struct rebind { using other = UnwrittenAllocator<U>; };
+    UnwrittenAllocator() = default;
+    template <class U> UnwrittenAllocator(const UnwrittenAllocator<U> &) {}
+    template <class U>
+    void construct(U *p) noexcept(std::is_nothrow_default_constructible<U>::value) {
+        if constexpr (!std::is_trivially_copyable<U>::value) ::new (static_cast<void *>(p)) U;
+    }
+    template <class U, class... A> void construct(U *p, A &&...a) {
+        ::new (static_cast<void *>(p)) U(std::forward<A>(a)...);
+    }
+};
+
+template <class T> using UnwrittenVector = std::vector<T, UnwrittenAllocator<T>>;
 
 } // namespace ani
