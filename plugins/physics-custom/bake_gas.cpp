@@ -4,6 +4,9 @@
 #include "event_bake_detail.hpp"
 
 #include "gas_lane.hpp"
+#include "halves.hpp"
+
+#include <exception>
 
 namespace physics_custom::bake {
 
@@ -112,47 +115,76 @@ bool EventBake::gas_from_scene() {
     if (!options_.gas_lane || options_.broad_phase == BroadPhase::kAllPairs || t_begin_ < 0.0)
         return false;
     const uint32_t n = scene_->model_count;
-    ani::HugeVector<Material> materials; // (at 100,000 balls 10 MB: huge_pages.hpp)
-    materials.reserve(n);
-    std::vector<uint32_t> spheres, walls;
-    spheres.reserve(n);
-    double r = -1.0;
-    for (uint32_t i = 0; i < n; ++i) {
-        const ani_physics_model &m = scene_->models[i];
-        if (!m.desc) return false;
-        materials.push_back(material_of(*m.desc)); // refuses values out of range, as classify
-        const auto [span, free_now, movable, solid] = standing(i);
-        if (!solid) continue;        // collides with nothing: reported as it moves (emit_unmoved)
-        if (!free_now) return false; // keyed here: a moving wall, or a ball still on its keys
-        if (!movable) {
-            walls.push_back(i);
-            continue;
+    // Each model's material, kept if the lane takes the gas (at 100,000 balls 5 MB: written in
+    // the halves below, not zeroed first: huge_pages.hpp).
+    ani::UnwrittenVector<Material> materials(n);
+    // What each half of the models finds, merged in their order: a half stops at its first model
+    // that keeps the lane out (or whose values are refused), as one pass over them in order would.
+    struct Part {
+        std::vector<uint32_t> walls;
+        ani::HugeVector<GasLane::Start> starts;
+        double r = -1.0;
+        glm::dvec3 a{0.0}; // one for all: gravity (Gravity on), or none
+        bool gas = true;
+        std::exception_ptr failed;
+    };
+    Part parts[2];
+    // A hundred nanoseconds or more a model, most of it waiting on its records (its description
+    // alone is six cache lines): two halves at once for a large scene.
+    in_halves(n >= kWorthTwoHalves, n, [&](std::size_t from, std::size_t to) {
+        Part &part = parts[from == 0 ? 0 : 1];
+        part.starts.reserve(to - from);
+        try {
+            for (auto i = static_cast<uint32_t>(from); i < to; ++i) {
+                const ani_physics_model &m = scene_->models[i];
+                if (!m.desc) return void(part.gas = false);
+                materials[i] = material_of(*m.desc); // refuses values out of range, as classify
+                const auto [span, free_now, movable, solid] = standing(i);
+                if (!solid) continue; // collides with nothing: reported as it moves (emit_unmoved)
+                if (!free_now)
+                    return void(part.gas = false); // keyed here: a moving wall, or a
+                                                   // ball still on its keys
+                if (!movable) {
+                    part.walls.push_back(i);
+                    continue;
+                }
+                if (!m.desc->dynamics || materials[i].rotates) return void(part.gas = false);
+                const std::optional<double> radius = sphere_radius(i, t_begin_);
+                if (!radius || (part.r >= 0.0 && *radius != part.r)) return void(part.gas = false);
+                part.r = *radius;
+                const ani_motion_segment s = free_segment(i, *m.desc, start_of(i, t_begin_),
+                                                          t_begin_, t_end_, ani(gravity_));
+                if (part.starts.empty()) part.a = vec(s.a);
+                if (vec(s.a) != part.a) return void(part.gas = false);
+                part.starts.push_back({i, m.desc->mass, s.motion, t_begin_, vec(s.p0), vec(s.v0)});
+            }
+        } catch (...) {
+            part.failed = std::current_exception();
         }
-        if (!m.desc->dynamics || materials.back().rotates) return false;
-        const std::optional<double> radius = sphere_radius(i, t_begin_);
-        if (!radius || (r >= 0.0 && *radius != r)) return false;
-        r = *radius;
-        spheres.push_back(i);
+    });
+    for (const Part &part : parts) {
+        if (part.failed) std::rethrow_exception(part.failed);
+        if (!part.gas) return false;
     }
-    if (spheres.empty() ||
-        (options_.broad_phase == BroadPhase::kAutomatic && spheres.size() < kGridFrom))
+    const Part &first = parts[0], &second = parts[1];
+    if (first.r >= 0.0 && second.r >= 0.0 && first.r != second.r) return false;
+    const double r = first.r >= 0.0 ? first.r : second.r;
+    if (!first.starts.empty() && !second.starts.empty() && first.a != second.a) return false;
+    std::vector<uint32_t> walls = first.walls;
+    walls.insert(walls.end(), second.walls.begin(), second.walls.end());
+    ani::HugeVector<GasLane::Start> starts;
+    starts.reserve(first.starts.size() + second.starts.size());
+    starts.insert(starts.end(), first.starts.begin(), first.starts.end());
+    starts.insert(starts.end(), second.starts.begin(), second.starts.end());
+    if (starts.empty() ||
+        (options_.broad_phase == BroadPhase::kAutomatic && starts.size() < kGridFrom))
         return false;
+    const glm::dvec3 a = first.starts.empty() ? second.a : first.a;
     std::vector<const Material *> balls, wall_materials;
-    balls.reserve(spheres.size());
-    for (uint32_t i : spheres) balls.push_back(&materials[i]);
+    balls.reserve(starts.size());
+    for (const GasLane::Start &st : starts) balls.push_back(&materials[st.model]);
     for (uint32_t w : walls) wall_materials.push_back(&materials[w]);
     if (!elastic(balls, wall_materials)) return false;
-    ani::HugeVector<GasLane::Start> starts;
-    starts.reserve(spheres.size());
-    glm::dvec3 a(0.0); // one for all: gravity (Gravity on), or none
-    for (uint32_t i : spheres) {
-        const ani_motion_segment s = free_segment(i, *scene_->models[i].desc, start_of(i, t_begin_),
-                                                  t_begin_, t_end_, ani(gravity_));
-        if (starts.empty()) a = vec(s.a);
-        if (vec(s.a) != a) return false;
-        starts.push_back(
-            {i, scene_->models[i].desc->mass, s.motion, t_begin_, vec(s.p0), vec(s.v0)});
-    }
     // The static models, and the grid as build_broad_phase makes it (grid_over).
     for (uint32_t w : walls) add_obstacle(w, t_begin_);
     const auto give_up = [&] {
@@ -173,7 +205,7 @@ bool EventBake::gas_from_scene() {
     // Taken: every other model is reported as classify reports it.
     materials_ = std::move(materials);
     is_body_.assign(n, false);
-    for (uint32_t i : spheres) is_body_[i] = true;
+    for (const GasLane::Start &st : starts) is_body_[st.model] = true;
     for (uint32_t i = 0; i < n; ++i)
         if (!is_body_[i]) emit_unmoved(i);
     grid_ = std::move(grid);

@@ -5,6 +5,7 @@
 #include "gas_lane.hpp"
 
 #include "grid.hpp"
+#include "halves.hpp"
 #include "response.hpp"
 
 #include <animator/plugin_cpp.hpp>
@@ -15,10 +16,7 @@
 #include <immintrin.h>
 #endif
 #include <cmath>
-#include <exception>
 #include <string>
-#include <system_error>
-#include <thread>
 
 namespace physics_custom {
 
@@ -35,39 +33,6 @@ ani_vec3 ani(const glm::dvec3 &v) {
     return {v.x, v.y, v.z};
 }
 
-// here() on this thread and there() on another at once (or after it, without a thread to be
-// had), both done when it returns; an exception of either is thrown here then.
-template <class Here, class There> void side_by_side(Here &&here, There &&there) {
-    std::exception_ptr failed_there;
-    std::thread other;
-    try {
-        other = std::thread([&] {
-            try {
-                there();
-            } catch (...) {
-                failed_there = std::current_exception();
-            }
-        });
-    } catch (const std::system_error &) {
-    }
-    try {
-        here();
-    } catch (...) {
-        if (other.joinable()) other.join();
-        throw;
-    }
-    if (other.joinable())
-        other.join();
-    else
-        there();
-    if (failed_there) std::rethrow_exception(failed_there);
-}
-
-// f(from, to) over [0, n): in two halves at once when `two`.
-template <class F> void in_halves(bool two, std::size_t n, F &&f) {
-    if (!two) return f(std::size_t{0}, n);
-    side_by_side([&] { f(std::size_t{0}, n / 2); }, [&] { f(n / 2, n); });
-}
 } // namespace
 
 GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid,
