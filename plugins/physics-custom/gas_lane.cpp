@@ -41,11 +41,11 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     : r_(radius), reach2_((radius + radius) * (radius + radius)), a_(acceleration),
       falls_(acceleration != glm::dvec3(0.0)), grid_(grid), triangles_(std::move(triangles)) {
     const std::size_t n = spheres.size();
-    s_.resize(n);
-    e_.assign(n, Event{});
+    s_.resize(n); // (each of these written below, sphere by sphere)
+    e_.resize(n);
     as_reported_.resize(n);
-    contact_.resize(n);
-    prev_.assign(n, kNone);
+    contact_.resize(n); // (read only for an event with a triangle, which writes it)
+    prev_.resize(n);
     int64_t cells = 1;
     for (int a = 0; a < 3; ++a) {
         stride_[a] = cells;
@@ -102,6 +102,7 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
             put(p.v, st.v);
             p.t0 = st.t0;
             p.count = 0;
+            e_[i] = Event{};
             e_[i].mass = st.mass;
             as_reported_[i] = {st.model, st.motion};
             const glm::dvec3 c = at(p, now);
@@ -114,7 +115,7 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
         admissible_ = false;
         return;
     }
-    ani::HugeVector<double> times(n);
+    ani::UnwrittenVector<double> times(n); // (each written below)
     std::size_t tests[2] = {0, 0};
     in_halves(two, n, [&](std::size_t from, std::size_t to) {
         std::size_t done = 0; // (its own: the two counts share a cache line)

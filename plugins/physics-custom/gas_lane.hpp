@@ -160,20 +160,22 @@ class GasLane {
     bool falls_;        // a_ is not 0: paths are parabolas
     Grid grid_;
     std::vector<Triangle> triangles_;
-    ani::HugeVector<Sphere> s_;
-    ani::HugeVector<Event> e_;
+    // (Per sphere: written by the constructor, in two halves, not zeroed first: huge_pages.hpp.)
+    ani::UnwrittenVector<Sphere> s_;
+    ani::UnwrittenVector<Event> e_;
     // Each sphere's model and how its motion is reported (FREE, or REST until it first moves):
     // read together at its events, so side by side (fetched ahead with its records).
     struct AsReported {
         uint32_t model;
         int motion;
     };
-    ani::HugeVector<AsReported> as_reported_;
+    ani::UnwrittenVector<AsReported> as_reported_;
     // The cells: a layer of empty cells around the grid's (no bounds tests); each cell's first
     // sphere, each sphere's previous one, and each cell's triangles (CSR).
     std::array<int64_t, 3> stride_{};
-    ani::HugeVector<uint32_t> head_, prev_;
-    ani::HugeVector<Contact> contact_;    // each sphere's with the triangle of its event, if any
+    ani::HugeVector<uint32_t> head_;
+    ani::UnwrittenVector<uint32_t> prev_;   // (each written as its sphere is linked)
+    ani::UnwrittenVector<Contact> contact_; // each sphere's with the triangle of its event, if any
     ani::HugeVector<uint32_t> near_from_; // (a value per cell: 2 MB pages, kept when freed)
     std::vector<uint32_t> near_;
     int64_t around_[27];
