@@ -90,6 +90,12 @@ class SegmentSpan {
 class SegmentStore {
   public:
     explicit SegmentStore(std::size_t models = 0) : runs_(models) {}
+    // Moved, not copied: chunk_at_ points into chunks_, whose buffers a move keeps and a copy
+    // would not.
+    SegmentStore(SegmentStore &&) = default;
+    SegmentStore &operator=(SegmentStore &&) = default;
+    SegmentStore(const SegmentStore &) = delete;
+    SegmentStore &operator=(const SegmentStore &) = delete;
 
     std::size_t models() const { return runs_.size(); }
     SegmentSpan operator[](std::size_t model) const {

@@ -131,33 +131,37 @@ bool EventBake::gas_from_scene() {
     Part parts[2];
     // A hundred nanoseconds or more a model, most of it waiting on its records (its description
     // alone is six cache lines): two halves at once for a large scene.
+    // Whether model i leaves the gas to the lane (its findings added to `part`).
+    const auto takes = [&](Part &part, uint32_t i) {
+        const ani_physics_model &m = scene_->models[i];
+        if (!m.desc) return false;
+        materials[i] = material_of(*m.desc); // refuses values out of range, as classify
+        const auto [span, free_now, movable, solid] = standing(i);
+        if (!solid) return true;     // collides with nothing: reported as it moves (emit_unmoved)
+        if (!free_now) return false; // keyed here: a moving wall, or a ball still on its keys
+        if (!movable) {
+            part.walls.push_back(i);
+            return true;
+        }
+        if (!m.desc->dynamics || materials[i].rotates) return false;
+        const std::optional<double> radius = sphere_radius(i, t_begin_);
+        if (!radius || (part.r >= 0.0 && *radius != part.r)) return false;
+        part.r = *radius;
+        const ani_motion_segment s =
+            free_segment(i, *m.desc, start_of(i, t_begin_), t_begin_, t_end_, ani(gravity_));
+        if (part.starts.empty()) part.a = vec(s.a);
+        if (vec(s.a) != part.a) return false;
+        part.starts.push_back({i, m.desc->mass, s.motion, t_begin_, vec(s.p0), vec(s.v0)});
+        return true;
+    };
+    // A hundred nanoseconds or more a model, most of it waiting on its records (its description
+    // alone is six cache lines): two halves at once for a large scene.
     in_halves(n >= kWorthTwoHalves, n, [&](std::size_t from, std::size_t to) {
         Part &part = parts[from == 0 ? 0 : 1];
         part.starts.reserve(to - from);
         try {
-            for (auto i = static_cast<uint32_t>(from); i < to; ++i) {
-                const ani_physics_model &m = scene_->models[i];
-                if (!m.desc) return void(part.gas = false);
-                materials[i] = material_of(*m.desc); // refuses values out of range, as classify
-                const auto [span, free_now, movable, solid] = standing(i);
-                if (!solid) continue; // collides with nothing: reported as it moves (emit_unmoved)
-                if (!free_now)
-                    return void(part.gas = false); // keyed here: a moving wall, or a
-                                                   // ball still on its keys
-                if (!movable) {
-                    part.walls.push_back(i);
-                    continue;
-                }
-                if (!m.desc->dynamics || materials[i].rotates) return void(part.gas = false);
-                const std::optional<double> radius = sphere_radius(i, t_begin_);
-                if (!radius || (part.r >= 0.0 && *radius != part.r)) return void(part.gas = false);
-                part.r = *radius;
-                const ani_motion_segment s = free_segment(i, *m.desc, start_of(i, t_begin_),
-                                                          t_begin_, t_end_, ani(gravity_));
-                if (part.starts.empty()) part.a = vec(s.a);
-                if (vec(s.a) != part.a) return void(part.gas = false);
-                part.starts.push_back({i, m.desc->mass, s.motion, t_begin_, vec(s.p0), vec(s.v0)});
-            }
+            for (auto i = static_cast<uint32_t>(from); i < to && part.gas; ++i)
+                part.gas = takes(part, i);
         } catch (...) {
             part.failed = std::current_exception();
         }
