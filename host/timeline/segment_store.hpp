@@ -2,7 +2,7 @@
 // model's in time order: they are written once, as they come, into a log in chunks that never
 // move, and each model's run lists where its segments are in the log (4 bytes a segment), in time
 // order. Filing a bake call's segments (once per call) writes those indices, not the segments:
-// copying 96-byte segments into runs per model had been a tenth of a bake of 10,000 balls
+// copying 96-byte segments into runs per model had been 6% of a bake of 100,000 balls
 // (docs/performance.md, the gas). A run that must grow moves to the index array's end with twice
 // its capacity; the space it leaves, and the log's segments a re-bake dropped, are reclaimed when
 // the store is compacted, once more is left than used. At 100,000 balls a vector per model had
