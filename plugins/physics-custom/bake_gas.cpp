@@ -129,8 +129,6 @@ bool EventBake::gas_from_scene() {
         std::exception_ptr failed;
     };
     Part parts[2];
-    // A hundred nanoseconds or more a model, most of it waiting on its records (its description
-    // alone is six cache lines): two halves at once for a large scene.
     // Whether model i leaves the gas to the lane (its findings added to `part`).
     const auto takes = [&](Part &part, uint32_t i) {
         const ani_physics_model &m = scene_->models[i];
@@ -158,7 +156,8 @@ bool EventBake::gas_from_scene() {
     // alone is six cache lines): two halves at once for a large scene.
     in_halves(n >= kWorthTwoHalves, n, [&](std::size_t from, std::size_t to) {
         Part &part = parts[from == 0 ? 0 : 1];
-        part.starts.reserve(to - from);
+        // (The first half's with room for the second's, appended to it below.)
+        part.starts.reserve(from == 0 ? n : to - from);
         try {
             for (auto i = static_cast<uint32_t>(from); i < to && part.gas; ++i)
                 part.gas = takes(part, i);
@@ -170,20 +169,18 @@ bool EventBake::gas_from_scene() {
         if (part.failed) std::rethrow_exception(part.failed);
         if (!part.gas) return false;
     }
-    const Part &first = parts[0], &second = parts[1];
+    Part &first = parts[0], &second = parts[1];
     if (first.r >= 0.0 && second.r >= 0.0 && first.r != second.r) return false;
     const double r = first.r >= 0.0 ? first.r : second.r;
     if (!first.starts.empty() && !second.starts.empty() && first.a != second.a) return false;
-    std::vector<uint32_t> walls = first.walls;
+    const glm::dvec3 a = first.starts.empty() ? second.a : first.a;
+    std::vector<uint32_t> walls = std::move(first.walls);
     walls.insert(walls.end(), second.walls.begin(), second.walls.end());
-    ani::HugeVector<GasLane::Start> starts;
-    starts.reserve(first.starts.size() + second.starts.size());
-    starts.insert(starts.end(), first.starts.begin(), first.starts.end());
+    ani::HugeVector<GasLane::Start> starts = std::move(first.starts);
     starts.insert(starts.end(), second.starts.begin(), second.starts.end());
     if (starts.empty() ||
         (options_.broad_phase == BroadPhase::kAutomatic && starts.size() < kGridFrom))
         return false;
-    const glm::dvec3 a = first.starts.empty() ? second.a : first.a;
     std::vector<const Material *> balls, wall_materials;
     balls.reserve(starts.size());
     for (const GasLane::Start &st : starts) balls.push_back(&materials[st.model]);

@@ -4,6 +4,7 @@
 // in bake_*.cpp; the types they share are event_bake_detail.hpp's.
 #include "event_bake.hpp"
 #include "event_bake_detail.hpp"
+#include "halves.hpp"
 
 #include <optional>
 #include <system_error>
@@ -30,7 +31,6 @@ namespace {
 // memo is the setup's). Done, its thread joined, when it goes.
 class PrintBeside {
   public:
-    static constexpr uint32_t kWorthAThread = 4096;
     PrintBeside(const ani_physics_scene &scene, ScenePrint &out) {
         try {
             thread_ = std::thread([&scene, &out] { out = scene_print(scene); });
@@ -53,7 +53,7 @@ class PrintBeside {
 void EventBake::run() {
     keyed_memo_.assign(scene_->model_count, KeyedMemo{});
     std::optional<PrintBeside> beside;
-    if (scene_->model_count >= PrintBeside::kWorthAThread)
+    if (scene_->model_count >= kWorthTwoHalves)
         beside.emplace(*scene_, fingerprint_);
     else
         fingerprint_ = scene_print(*scene_, [&](uint32_t m, double t, ani_model_state &s, ani_vec3 &v) {

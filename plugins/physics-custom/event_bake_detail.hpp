@@ -658,8 +658,8 @@ class EventBake {
     glm::dvec3 gravity_;
     std::vector<Body> bodies_;
     std::vector<int> mesh_bodies_; // the bodies that are not spheres (what can carry a model)
-    ani::UnwrittenVector<Material>
-        materials_; // every model's, by model index (read once, in classify)
+    // Every model's, by model index (read once, in classify).
+    ani::UnwrittenVector<Material> materials_;
     std::vector<Obstacle> obstacles_;
     std::size_t triangle_count_ = 0;
     std::unique_ptr<UniformGrid> grid_; // with many bodies

@@ -93,7 +93,7 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     std::copy_backward(near_from_.begin(), near_from_.end() - 1, near_from_.end());
     near_from_[0] = 0;
     // (What is done per sphere, each sphere's alone, in two halves at once for many spheres.)
-    const bool two = n >= kWorthAThread;
+    const bool two = n >= kWorthTwoHalves;
     in_halves(two, n, [&](std::size_t from, std::size_t to) {
         for (std::size_t i = from; i < to; ++i) {
             const Start &st = spheres[i];
@@ -404,7 +404,7 @@ bool GasLane::predict_all_pairs(double now, bool check) {
     const std::size_t n = s_.size();
     std::size_t tests = 0;
     const int64_t layers = grid_.counts[2];
-    if (n < kWorthAThread || layers < 4) {
+    if (n < kWorthTwoHalves || layers < 4) {
         if (!all_pairs_of(now, check, tests, nullptr, n)) return false;
     } else {
         // In two halves at once: the spheres below the middle layer of cells but one, and those

@@ -101,9 +101,6 @@ class GasLane {
 
   private:
     static constexpr uint32_t kNone = 0xffffffffu;
-    // From this many spheres the start's work per sphere is done in two halves at once (a
-    // thread costs about 50 us; the start of 100,000 spheres about 20 ms on one).
-    static constexpr std::size_t kWorthAThread = kWorthTwoHalves; // (halves.hpp)
     static constexpr double kInf = std::numeric_limits<double>::infinity();
     // What a scan of neighbours reads of each: one cache line.
     struct alignas(64) Sphere {

@@ -193,8 +193,8 @@ template <class T> using HugeVector = std::vector<T, HugePageAllocator<T>>;
 // As HugePageAllocator, but the room a resize (or a vector's constructor of n elements) adds is
 // left unwritten where T is trivially copyable: std::vector would zero it, a pass over the whole
 // array before the caller writes every element anyway (a bake's arrays of a value per model are
-// filled in two halves at once; zeroing them first, on one thread, was a tenth of the host's part
-// of a bake of 100,000 balls: docs/performance.md, the gas). Every such element must be written
+// filled in two halves at once; zeroing them first, on one thread, was 2% of a bake of 100,000
+// balls: docs/performance.md, the gas). Every such element must be written
 // before it is read.
 template <class T> struct UnwrittenAllocator : HugePageAllocator<T> {
     template <class U> struct rebind { using other = UnwrittenAllocator<U>; };
