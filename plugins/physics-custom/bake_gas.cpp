@@ -5,8 +5,10 @@
 
 #include "gas_lane.hpp"
 #include "halves.hpp"
+#include "sink_aside.hpp"
 
 #include <exception>
+#include <optional>
 
 namespace physics_custom::bake {
 
@@ -218,15 +220,17 @@ bool EventBake::gas_from_scene() {
 // before an event it does not take, the bodies go back to the general engine, which goes on
 // from there (false).
 bool EventBake::run_gas_lane() {
-    GasSink sink(*this);
+    GasSink here(*this);
+    // (A large gas's segments and collisions reported on another core: sink_aside.hpp.)
+    std::optional<SinkAside> aside;
+    if (gas_->size() >= kWorthTwoHalves) aside.emplace(here);
+    GasLane::Sink &sink = aside ? static_cast<GasLane::Sink &>(*aside) : here;
     const bool done = gas_->run(t_begin_, t_end_, sink);
+    if (done) gas_->close(t_begin_, t_end_, sink);
+    if (aside) aside->finish();
     fold_gas_counts();
-    if (!done) {
-        leave_gas_lane(gas_->stopped_at());
-        return false;
-    }
-    gas_->close(t_begin_, t_end_, sink);
-    return true;
+    if (!done) leave_gas_lane(gas_->stopped_at());
+    return done;
 }
 
 // Every sphere back in its body where the lane left it (a segment from its last contact), filed

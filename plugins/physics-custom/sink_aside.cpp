@@ -1,0 +1,132 @@
+// The gas lane's report made on another core (sink_aside.hpp).
+#include "sink_aside.hpp"
+
+#include <chrono>
+#include <system_error>
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
+namespace physics_custom {
+
+namespace {
+void pause() {
+#if defined(__x86_64__) || defined(__i386__)
+    _mm_pause();
+#else
+    std::this_thread::yield();
+#endif
+}
+// How many times the reporting thread looks for more before it sleeps (about a millisecond: the
+// lane hands over a batch every few microseconds while it runs), and how long it sleeps before
+// it looks again (the lane does not wake it, which would cost a fence at every batch, unless it
+// finds the ring full or is done).
+constexpr int kSpins = 1 << 13;
+constexpr auto kNap = std::chrono::milliseconds(1);
+} // namespace
+
+SinkAside::SinkAside(GasLane::Sink &to) : to_(to) {
+    if (std::thread::hardware_concurrency() < 2) return;
+    try {
+        thread_ = std::thread([this] { report(); });
+    } catch (const std::system_error &) {
+    }
+}
+
+SinkAside::~SinkAside() {
+    stop();
+}
+
+void SinkAside::stop() {
+    if (!thread_.joinable()) return;
+    publish();
+    {
+        std::lock_guard<std::mutex> hold(lock_);
+        stop_.store(true, std::memory_order_release);
+        wake_.notify_one();
+    }
+    thread_.join();
+}
+
+void SinkAside::finish() {
+    stop();
+    if (failed_.load(std::memory_order_acquire)) {
+        failed_.store(false);
+        std::rethrow_exception(failure_);
+    }
+}
+
+void SinkAside::progress(double now) {
+    if (thread_.joinable()) {
+        publish();
+        if (failed_.load(std::memory_order_acquire)) std::rethrow_exception(failure_);
+    }
+    to_.progress(now);
+}
+
+void SinkAside::publish() {
+    segments_.published.store(segments_.written, std::memory_order_release);
+    collisions_.published.store(collisions_.written, std::memory_order_release);
+}
+
+template <class R> void SinkAside::wait_for_room(R &ring) {
+    publish();
+    {
+        std::lock_guard<std::mutex> hold(lock_);
+        wake_.notify_one();
+    }
+    for (int spins = 0;; ++spins) {
+        if (failed_.load(std::memory_order_acquire)) std::rethrow_exception(failure_);
+        ring.room_until = ring.taken.load(std::memory_order_acquire) + R::kSize;
+        if (ring.room_until != ring.written) return;
+        if (spins < kSpins)
+            pause();
+        else
+            std::this_thread::yield();
+    }
+}
+
+void SinkAside::report() {
+    // After a report throws, the rest is taken and not reported (the lane throws it at its next
+    // progress report, or when it finishes).
+    bool reporting = true;
+    const auto segment = [&](const ani_motion_segment &s) {
+        if (reporting) to_.segment(s);
+    };
+    const auto collision = [&](const ani_collision_event &e) {
+        if (reporting) to_.collision(e);
+    };
+    for (int idle = 0;;) {
+        bool any = false;
+        try {
+            any = segments_.drain(segment);
+            any = collisions_.drain(collision) || any;
+        } catch (...) {
+            failure_ = std::current_exception();
+            failed_.store(true, std::memory_order_release);
+            reporting = false;
+            continue;
+        }
+        if (any) {
+            idle = 0;
+            continue;
+        }
+        // (The lane publishes before it stops: once stop_ is seen, what is published is all.)
+        if (stop_.load(std::memory_order_acquire)) {
+            if (segments_.pending() || collisions_.pending()) continue;
+            return;
+        }
+        if (++idle < kSpins) {
+            pause();
+            continue;
+        }
+        std::unique_lock<std::mutex> hold(lock_);
+        wake_.wait_for(hold, kNap, [&] {
+            return stop_.load(std::memory_order_acquire) || segments_.pending() ||
+                   collisions_.pending();
+        });
+        idle = 0;
+    }
+}
+
+} // namespace physics_custom
