@@ -139,15 +139,15 @@ bool EventBake::keys_hold_still(uint32_t i, double last) const {
 // keys' (physics.md: where and how fast it leaves them).
 ani_model_state EventBake::keyed(uint32_t m, double t, glm::dvec3 *velocity) const {
     KeyedMemo &memo = keyed_memo_[m];
-    if (!(memo.t == t)) {
+    if (!keyed_known_[m] || !(memo.t == t)) {
         ani_vec3 v{};
-        if (scene_->evaluate_keyed(scene_->host_context, m, t, &memo.state, &v) != ANI_OK) {
-            memo.t = std::numeric_limits<double>::quiet_NaN();
+        keyed_known_[m] = 0;
+        if (scene_->evaluate_keyed(scene_->host_context, m, t, &memo.state, &v) != ANI_OK)
             throw ani::Failure(ANI_ERR_FAILED, std::string("cannot evaluate the keys of model '") +
                                                    name_of(scene_->models[m]) + "'");
-        }
         memo.t = t;
         memo.velocity = vec(v);
+        keyed_known_[m] = 1;
     }
     if (velocity) *velocity = memo.velocity;
     return memo.state;

@@ -51,7 +51,7 @@ class PrintBeside {
 } // namespace
 
 void EventBake::run() {
-    keyed_memo_.assign(scene_->model_count, KeyedMemo{});
+    forget_keyed();
     std::optional<PrintBeside> beside;
     if (scene_->model_count >= kWorthTwoHalves)
         beside.emplace(*scene_, fingerprint_);
@@ -103,7 +103,7 @@ bool EventBake::continues(const ani_physics_scene &scene, double t_begin,
 // slices each started over, and redid the predictions and advancements of every body).
 void EventBake::resume(const ani_physics_scene &scene, double t_end, const ani_bake_sink &sink) {
     scene_ = &scene;
-    keyed_memo_.assign(scene_->model_count, KeyedMemo{}); // its answers were the last scene's
+    forget_keyed(); // its answers were the last scene's
     sink_ = &sink;
     t_begin_ = t_end_;
     t_end_ = t_end;

@@ -647,7 +647,14 @@ class EventBake {
         ani_model_state state{};
         glm::dvec3 velocity{0.0};
     };
-    mutable ani::HugeVector<KeyedMemo> keyed_memo_; // per model, for scene_ (100,000: 12 MB)
+    // Per model, for scene_: a memo is kept where keyed_known_ says so (forget_keyed: the memos
+    // themselves, 12 MB at 100,000 models, are not rewritten for each bake, only the flags).
+    mutable ani::UnwrittenVector<KeyedMemo> keyed_memo_;
+    mutable std::vector<uint8_t> keyed_known_;
+    void forget_keyed() {
+        keyed_memo_.resize(scene_->model_count);
+        keyed_known_.assign(scene_->model_count, 0);
+    }
 
     // The data, shared by every stage.
     const ani_physics_scene *scene_; // this call's (the host builds it anew for each)
