@@ -1,5 +1,6 @@
 #include "timeline/timeline.hpp"
 
+#include <animator/halves.hpp>
 #include <animator/huge_pages.hpp>
 
 #include <glm/gtc/quaternion.hpp>
@@ -9,7 +10,6 @@
 #include <array>
 #include <cmath>
 #include <exception>
-#include <thread>
 
 namespace animator {
 
@@ -69,34 +69,6 @@ struct BakeContext {
         return true;
     }
 };
-
-// Runs f(begin, end) over [0, n), in two halves at once when n is large: the second half on a
-// thread of its own (starting one costs about 50 us, a model's keyed start about 0.2 us; the
-// interpolators' evaluate may be called from any thread, interpolator.h). An exception in either
-// half is thrown here once both are done.
-template <class F> void in_two_halves(std::size_t n, F &&f) {
-    constexpr std::size_t kWorthAThread = 4096;
-    if (n < kWorthAThread || std::thread::hardware_concurrency() < 2) {
-        f(std::size_t{0}, n);
-        return;
-    }
-    std::exception_ptr failed_there, failed_here;
-    std::thread there([&] {
-        try {
-            f(n / 2, n);
-        } catch (...) {
-            failed_there = std::current_exception();
-        }
-    });
-    try {
-        f(std::size_t{0}, n / 2);
-    } catch (...) {
-        failed_here = std::current_exception();
-    }
-    there.join();
-    if (failed_here) std::rethrow_exception(failed_here);
-    if (failed_there) std::rethrow_exception(failed_there);
-}
 
 // The context of a bake's questions about keyed poses: the poses already found at its start.
 struct KeyedAnswers {
@@ -400,40 +372,45 @@ void Timeline::run_bake(double from, double until, const std::function<bool(doub
     // 100,000 balls).
     KeyedAnswers answers{keyed_.get(), from,
                          ani::UnwrittenVector<std::optional<ModelPose>>(models.size())};
-    // Each model's part of the scene, in two halves at once (a model's start, its span and its
-    // turning are read from this timeline and the keys, never written: a hundred nanoseconds a
-    // model, most of it waiting on memory).
-    in_two_halves(models.size(), [&](std::size_t begin, std::size_t end) {
-        for (std::size_t m = begin; m < end; ++m) {
-            ani_physics_model &pm = scene_models[m];
-            pm = ani_physics_model{};
-            ::new (static_cast<void *>(&answers.at_from[m])) std::optional<ModelPose>();
-            pm.start = state_at(static_cast<int>(m), from, &answers.at_from[m]);
-            pm.struct_size = sizeof pm;
-            pm.desc = &view.view().models[m];
-            pm.mesh = m < meshes_.size() && meshes_[m] ? &meshes_[m]->view : nullptr;
-            // Parts of a jointed model move with their parent: keyed (relative to it) throughout.
-            pm.group = groups_[m];
-            spans[m] = pm.group != m ? ani_time_span{0.0, std::max(end_of_time, until)}
-                                     : keyed_->keyed_span(static_cast<int>(m));
-            pm.keyed_spans = &spans[m];
-            pm.keyed_span_count = 1;
-            if (const RotationSegment *r = rotation_at(static_cast<int>(m), from)) {
-                const glm::dquat q = orientation_at(*r, from);
-                pm.start_orientation = ani_quat{q.w, q.x, q.y, q.z};
-                pm.start_angular_velocity = to_ani(angular_velocity_at(*r, from));
-                pm.start_turning = 1;
-            } else if (pm.start.motion == ANI_MOTION_FREE &&
-                       carried_at(static_cast<int>(m), from)) {
-                const Placement p = placement(static_cast<int>(m), from);
-                pm.start_orientation = ani_quat{p.q.w, p.q.x, p.q.y, p.q.z};
-                pm.start_angular_velocity = to_ani(p.w);
-                pm.start_turning = 1;
-            }
-            pm.key_times = key_times.data() + key_from[m];
-            pm.key_count = static_cast<uint32_t>(key_from[m + 1] - key_from[m]);
-        }
-    });
+    // Each model's part of the scene, in two halves at once (animator/halves.hpp: a model's start,
+    // its span and its turning are read from this timeline and the keys, never written, and the
+    // interpolators' evaluate may be called from any thread, interpolator.h; a hundred
+    // nanoseconds a model, most of it waiting on memory).
+    ani::in_halves(models.size() >= ani::kWorthTwoHalves, models.size(),
+                   [&](std::size_t begin, std::size_t end) {
+                       for (std::size_t m = begin; m < end; ++m) {
+                           ani_physics_model &pm = scene_models[m];
+                           pm = ani_physics_model{};
+                           ::new (static_cast<void *>(&answers.at_from[m]))
+                               std::optional<ModelPose>();
+                           pm.start = state_at(static_cast<int>(m), from, &answers.at_from[m]);
+                           pm.struct_size = sizeof pm;
+                           pm.desc = &view.view().models[m];
+                           pm.mesh = m < meshes_.size() && meshes_[m] ? &meshes_[m]->view : nullptr;
+                           // Parts of a jointed model move with their parent: keyed (relative to
+                           // it) throughout.
+                           pm.group = groups_[m];
+                           spans[m] = pm.group != m
+                                          ? ani_time_span{0.0, std::max(end_of_time, until)}
+                                          : keyed_->keyed_span(static_cast<int>(m));
+                           pm.keyed_spans = &spans[m];
+                           pm.keyed_span_count = 1;
+                           if (const RotationSegment *r = rotation_at(static_cast<int>(m), from)) {
+                               const glm::dquat q = orientation_at(*r, from);
+                               pm.start_orientation = ani_quat{q.w, q.x, q.y, q.z};
+                               pm.start_angular_velocity = to_ani(angular_velocity_at(*r, from));
+                               pm.start_turning = 1;
+                           } else if (pm.start.motion == ANI_MOTION_FREE &&
+                                      carried_at(static_cast<int>(m), from)) {
+                               const Placement p = placement(static_cast<int>(m), from);
+                               pm.start_orientation = ani_quat{p.q.w, p.q.x, p.q.y, p.q.z};
+                               pm.start_angular_velocity = to_ani(p.w);
+                               pm.start_turning = 1;
+                           }
+                           pm.key_times = key_times.data() + key_from[m];
+                           pm.key_count = static_cast<uint32_t>(key_from[m + 1] - key_from[m]);
+                       }
+                   });
     ani_physics_scene scene{};
     scene.struct_size = sizeof scene;
     scene.models = scene_models.data();

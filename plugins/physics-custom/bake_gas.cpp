@@ -4,8 +4,9 @@
 #include "event_bake_detail.hpp"
 
 #include "gas_lane.hpp"
-#include "halves.hpp"
 #include "sink_aside.hpp"
+
+#include <animator/halves.hpp>
 
 #include <exception>
 #include <optional>
@@ -156,7 +157,7 @@ bool EventBake::gas_from_scene() {
     };
     // A hundred nanoseconds or more a model, most of it waiting on its records (its description
     // alone is six cache lines): two halves at once for a large scene.
-    in_halves(n >= kWorthTwoHalves, n, [&](std::size_t from, std::size_t to) {
+    ani::in_halves(n >= ani::kWorthTwoHalves, n, [&](std::size_t from, std::size_t to) {
         Part &part = parts[from == 0 ? 0 : 1];
         // (The first half's with room for the second's, appended to it below.)
         part.starts.reserve(from == 0 ? n : to - from);
@@ -223,7 +224,7 @@ bool EventBake::run_gas_lane() {
     GasSink here(*this);
     // (A large gas's segments and collisions reported on another core: sink_aside.hpp.)
     std::optional<SinkAside> aside;
-    if (gas_->size() >= kWorthTwoHalves) aside.emplace(here);
+    if (gas_->size() >= ani::kWorthTwoHalves) aside.emplace(here);
     GasLane::Sink &sink = aside ? static_cast<GasLane::Sink &>(*aside) : here;
     const bool done = gas_->run(t_begin_, t_end_, sink);
     if (done) gas_->close(t_begin_, t_end_, sink);

@@ -4,7 +4,8 @@
 // in bake_*.cpp; the types they share are event_bake_detail.hpp's.
 #include "event_bake.hpp"
 #include "event_bake_detail.hpp"
-#include "halves.hpp"
+
+#include <animator/halves.hpp>
 
 #include <optional>
 #include <system_error>
@@ -53,7 +54,7 @@ class PrintBeside {
 void EventBake::run() {
     forget_keyed();
     std::optional<PrintBeside> beside;
-    if (scene_->model_count >= kWorthTwoHalves)
+    if (scene_->model_count >= ani::kWorthTwoHalves)
         beside.emplace(*scene_, fingerprint_);
     else
         fingerprint_ = scene_print(*scene_, [&](uint32_t m, double t, ani_model_state &s, ani_vec3 &v) {

@@ -5,7 +5,6 @@
 #include "gas_lane.hpp"
 
 #include "grid.hpp"
-#include "halves.hpp"
 #include "response.hpp"
 
 #include <animator/plugin_cpp.hpp>
@@ -93,8 +92,8 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     std::copy_backward(near_from_.begin(), near_from_.end() - 1, near_from_.end());
     near_from_[0] = 0;
     // (What is done per sphere, each sphere's alone, in two halves at once for many spheres.)
-    const bool two = n >= kWorthTwoHalves;
-    in_halves(two, n, [&](std::size_t from, std::size_t to) {
+    const bool two = n >= ani::kWorthTwoHalves;
+    ani::in_halves(two, n, [&](std::size_t from, std::size_t to) {
         for (std::size_t i = from; i < to; ++i) {
             const Start &st = spheres[i];
             Sphere &p = s_[i];
@@ -117,7 +116,7 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     }
     ani::UnwrittenVector<double> times(n); // (each written below)
     std::size_t tests[2] = {0, 0};
-    in_halves(two, n, [&](std::size_t from, std::size_t to) {
+    ani::in_halves(two, n, [&](std::size_t from, std::size_t to) {
         std::size_t done = 0; // (its own: the two counts share a cache line)
         for (std::size_t i = from; i < to; ++i) {
             predict_move(static_cast<uint32_t>(i), now, done);
@@ -404,7 +403,7 @@ bool GasLane::predict_all_pairs(double now, bool check) {
     const std::size_t n = s_.size();
     std::size_t tests = 0;
     const int64_t layers = grid_.counts[2];
-    if (n < kWorthTwoHalves || layers < 4) {
+    if (n < ani::kWorthTwoHalves || layers < 4) {
         if (!all_pairs_of(now, check, tests, nullptr, n)) return false;
     } else {
         // In two halves at once: the spheres below the middle layer of cells but one, and those
@@ -422,7 +421,7 @@ bool GasLane::predict_all_pairs(double now, bool check) {
         }
         std::size_t tests_above = 0;
         bool apart_below = true, apart_above = true;
-        side_by_side(
+        ani::side_by_side(
             [&] { apart_below = all_pairs_of(now, check, tests, below.data(), below.size()); },
             [&] {
                 apart_above = all_pairs_of(now, check, tests_above, above.data(), above.size());

@@ -26,9 +26,9 @@
 #pragma once
 
 #include "calendar_queue.hpp"
-#include "halves.hpp"
 #include "time_of_impact.hpp"
 
+#include <animator/halves.hpp>
 #include <animator/huge_pages.hpp>
 #include <animator/physics.h>
 

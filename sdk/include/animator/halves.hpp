@@ -1,5 +1,6 @@
-// Work split in two halves run at once, for the bake's passes over every model or sphere of a
-// large scene (the machines we measure on have two cores; a thread costs about 50 us to start).
+// Work split in two halves run at once, for a bake's passes over every model or sphere of a large
+// scene, in the host and in plugins alike (C++ only, header-only): the machines we measure on
+// have two cores, and a thread costs about 50 us to start.
 #pragma once
 
 #include <cstddef>
@@ -7,7 +8,7 @@
 #include <system_error>
 #include <thread>
 
-namespace physics_custom {
+namespace ani {
 
 // here() on this thread and there() on another at once (or after it, without a thread to be
 // had), both done when it returns; an exception of either is thrown here then (here()'s first).
@@ -42,10 +43,10 @@ template <class Here, class There> void side_by_side(Here &&here, There &&there)
 // takes about 20 ms on one).
 constexpr std::size_t kWorthTwoHalves = 4096;
 
-// f(from, to) over [0, n): in two halves at once when `two`.
+// f(from, to) over [0, n): in two halves at once when `two` (and the machine has two cores).
 template <class F> void in_halves(bool two, std::size_t n, F &&f) {
-    if (!two) return f(std::size_t{0}, n);
+    if (!two || std::thread::hardware_concurrency() < 2) return f(std::size_t{0}, n);
     side_by_side([&] { f(std::size_t{0}, n / 2); }, [&] { f(n / 2, n); });
 }
 
-} // namespace physics_custom
+} // namespace ani
