@@ -223,8 +223,13 @@ bool EventBake::gas_from_scene() {
 bool EventBake::run_gas_lane() {
     GasSink here(*this);
     // (A large gas's segments and collisions reported on another core: sink_aside.hpp.)
+    // (And the scene's print, if it is being made, made there a few hundred models at a time.)
     std::optional<SinkAside> aside;
-    if (gas_->size() >= ani::kWorthTwoHalves) aside.emplace(here);
+    if (gas_->size() >= ani::kWorthTwoHalves) {
+        std::function<bool()> print;
+        if (printing_) print = [this] { return printing_->step(512); };
+        aside.emplace(here, std::move(print));
+    }
     GasLane::Sink &sink = aside ? static_cast<GasLane::Sink &>(*aside) : here;
     const bool done = gas_->run(t_begin_, t_end_, sink);
     if (done) gas_->close(t_begin_, t_end_, sink);

@@ -7,6 +7,7 @@
 
 #include <animator/halves.hpp>
 
+#include <limits>
 #include <optional>
 #include <system_error>
 #include <thread>
@@ -26,17 +27,18 @@ EventBake::EventBake(const ani_physics_scene &scene, double t_begin, double t_en
 
 namespace {
 
-// The scene's print made on a thread of its own beside the bake's setup, for a large scene (it
+// A large scene's print finished on a thread of its own beside the general engine's setup (it
 // reads every model's description and keys, about 3.5% of a bake of 100,000 balls, all cache
 // misses), asking the host for the keys directly (evaluate_keyed is [thread: any]; the keys'
 // memo is the setup's). Done, its thread joined, when it goes.
 class PrintBeside {
   public:
-    PrintBeside(const ani_physics_scene &scene, ScenePrint &out) {
+    explicit PrintBeside(ScenePrinter &printer) {
+        const auto all = [&printer] { printer.step(std::numeric_limits<uint32_t>::max()); };
         try {
-            thread_ = std::thread([&scene, &out] { out = scene_print(scene); });
+            thread_ = std::thread(all);
         } catch (const std::system_error &) { // no thread to be had: here, now
-            out = scene_print(scene);
+            all();
         }
     }
     PrintBeside(const PrintBeside &) = delete;
@@ -53,9 +55,10 @@ class PrintBeside {
 
 void EventBake::run() {
     forget_keyed();
-    std::optional<PrintBeside> beside;
+    // The scene's print, for the next bake to know whether it goes on from this one: for a large
+    // scene, made where a core has nothing better to do (finish_print).
     if (scene_->model_count >= ani::kWorthTwoHalves)
-        beside.emplace(*scene_, fingerprint_);
+        printing_.emplace(*scene_);
     else
         fingerprint_ = scene_print(*scene_, [&](uint32_t m, double t, ani_model_state &s, ani_vec3 &v) {
             try {
@@ -68,10 +71,12 @@ void EventBake::run() {
             }
         });
     if (gas_from_scene()) { // a gas: the lane from the start, no body made (bake_gas.cpp)
-        beside.reset();
-        advance_to_end();
+        advance_to_end();   // (its print made by the lane's reporting thread while it waits)
+        finish_print();
         return;
     }
+    std::optional<PrintBeside> beside;
+    if (printing_) beside.emplace(*printing_);
     classify();
     build_broad_phase();
     queue_ = std::make_unique<EventQueue>(bodies_.size());
@@ -86,7 +91,16 @@ void EventBake::run() {
     if (!enter_gas_lane())
         for (size_t i = 0; i < bodies_.size(); ++i) predict(static_cast<int>(i), t_begin_);
     beside.reset();
+    finish_print();
     advance_to_end();
+}
+
+// The print begun at the start of run() finished here (what is left of it) and kept.
+void EventBake::finish_print() {
+    if (!printing_) return;
+    printing_->step(std::numeric_limits<uint32_t>::max());
+    fingerprint_ = printing_->print();
+    printing_.reset();
 }
 
 // Whether a bake of `scene` from t_begin is the next slice of this one: it starts where this

@@ -696,6 +696,8 @@ class EventBake {
     std::vector<bool> is_body_;        // per model: a body (the others are reported each slice)
     double horizon_ = 0.0;             // how far predictions look
     ScenePrint fingerprint_;           // the scene the bake goes on with
+    std::optional<ScenePrinter> printing_; // its print while it is being made (run())
+    void finish_print();
 };
 
 // Calls f(j) for every active body that body i could meet: its grid neighbours and the

@@ -1,5 +1,6 @@
 #include "scene_print.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -73,12 +74,18 @@ void ScenePrint::add(const void *p) {
     add_word(static_cast<uint64_t>(reinterpret_cast<uintptr_t>(p)));
 }
 
-ScenePrint scene_print(const ani_physics_scene &scene, const KeyedEvaluator &evaluate) {
-    ScenePrint print;
+namespace {
+
+void print_header(ScenePrint &print, const ani_physics_scene &scene) {
     print.add(scene.gravity);
     print.add(static_cast<double>(scene.down_axis));
     print.add(static_cast<double>(scene.model_count));
-    for (uint32_t i = 0; i < scene.model_count; ++i) {
+}
+
+// Models [from, to) of the scene, in order.
+void print_models(ScenePrint &print, const ani_physics_scene &scene, uint32_t from, uint32_t to,
+                  const KeyedEvaluator &evaluate) {
+    for (uint32_t i = from; i < to; ++i) {
         const ani_physics_model &m = scene.models[i];
         print.add(static_cast<const void *>(m.mesh));
         print.add(static_cast<const void *>(m.mesh ? m.mesh->positions : nullptr));
@@ -122,7 +129,26 @@ ScenePrint scene_print(const ani_physics_scene &scene, const KeyedEvaluator &eva
                 print.add(x);
         }
     }
+}
+
+} // namespace
+
+ScenePrint scene_print(const ani_physics_scene &scene, const KeyedEvaluator &evaluate) {
+    ScenePrint print;
+    print_header(print, scene);
+    print_models(print, scene, 0, scene.model_count, evaluate);
     return print;
+}
+
+ScenePrinter::ScenePrinter(const ani_physics_scene &scene) : scene_(&scene) {
+    print_header(print_, scene);
+}
+
+bool ScenePrinter::step(uint32_t models) {
+    const uint32_t to = next_ + std::min(models, scene_->model_count - next_);
+    print_models(print_, *scene_, next_, to, {});
+    next_ = to;
+    return done();
 }
 
 } // namespace physics_custom

@@ -56,4 +56,21 @@ using KeyedEvaluator = std::function<bool(uint32_t m, double t, ani_model_state 
 // evaluated by the scene's evaluate_keyed, or by `evaluate` when given.
 ScenePrint scene_print(const ani_physics_scene &scene, const KeyedEvaluator &evaluate = {});
 
+// The same print made a part at a time, its models in order (a large gas's is made by the lane's
+// reporting thread while it waits: sink_aside.hpp). The scene's keys are evaluated by its
+// evaluate_keyed ([thread: any]).
+class ScenePrinter {
+  public:
+    explicit ScenePrinter(const ani_physics_scene &scene);
+    // Adds the next `models` models (or as many as are left); true once every model is in.
+    bool step(uint32_t models);
+    bool done() const { return next_ == scene_->model_count; }
+    const ScenePrint &print() const { return print_; }
+
+  private:
+    const ani_physics_scene *scene_;
+    ScenePrint print_;
+    uint32_t next_ = 0;
+};
+
 } // namespace physics_custom

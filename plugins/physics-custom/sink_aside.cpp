@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <system_error>
+#include <utility>
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #endif
@@ -25,7 +26,9 @@ constexpr int kSpins = 1 << 13;
 constexpr auto kNap = std::chrono::milliseconds(1);
 } // namespace
 
-SinkAside::SinkAside(GasLane::Sink &to) : to_(to) {
+SinkAside::SinkAside(GasLane::Sink &to, std::function<bool()> meanwhile)
+    : to_(to), meanwhile_(std::move(meanwhile)), meanwhile_left_(bool(meanwhile_)),
+      meanwhile_done_(!meanwhile_) {
     if (std::thread::hardware_concurrency() < 2) return;
     try {
         thread_ = std::thread([this] { report(); });
@@ -115,6 +118,15 @@ void SinkAside::report() {
         if (stop_.load(std::memory_order_acquire)) {
             if (segments_.pending() || collisions_.pending()) continue;
             return;
+        }
+        if (meanwhile_left_) { // (a piece, then a look at the rings again)
+            try {
+                meanwhile_done_ = meanwhile_();
+                meanwhile_left_ = !meanwhile_done_;
+            } catch (...) { // (left undone: its owner sees to it)
+                meanwhile_left_ = false;
+            }
+            continue;
         }
         if (++idle < kSpins) {
             pause();

@@ -12,6 +12,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -31,8 +32,10 @@ inline void prefetch_to_write(const void *p) {
 class SinkAside final : public GasLane::Sink {
   public:
     // Reports to `to` on a thread of its own (or here, where no thread can be had or the
-    // machine has one core).
-    explicit SinkAside(GasLane::Sink &to);
+    // machine has one core). That thread also does `meanwhile`, a piece at a time, whenever it
+    // has nothing to report, until it returns true (done: meanwhile_done()); a piece must be
+    // short (well under the millisecond the rings hold at a gas's rate).
+    explicit SinkAside(GasLane::Sink &to, std::function<bool()> meanwhile = {});
     // Stops the thread (what is handed over and not yet reported is reported first).
     ~SinkAside() override;
     SinkAside(const SinkAside &) = delete;
@@ -52,6 +55,8 @@ class SinkAside final : public GasLane::Sink {
     // Waits until everything handed over has been reported; throws what the thread's report
     // threw. Segments and collisions after it are reported here.
     void finish();
+    // Whether `meanwhile` was done to the end (read after finish()).
+    bool meanwhile_done() const { return meanwhile_done_; }
 
   private:
     // A ring of what one thread writes and the other reads, in order.
@@ -92,6 +97,8 @@ class SinkAside final : public GasLane::Sink {
     void stop();   // (the thread ends once it has reported everything)
 
     GasLane::Sink &to_;
+    std::function<bool()> meanwhile_;
+    bool meanwhile_left_, meanwhile_done_; // (the thread's own until it is joined)
     Ring<ani_motion_segment, 8192> segments_;
     Ring<ani_collision_event, 4096> collisions_;
     std::atomic<bool> stop_{false}, failed_{false};

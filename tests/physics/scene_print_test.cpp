@@ -124,3 +124,32 @@ TEST_CASE("a scene's print takes -0 as 0, and a key it cannot evaluate or a NaN 
     const auto with_nan = scene_print(n.get());
     CHECK(with_nan != scene_print(n.get()));
 }
+
+TEST_CASE("a scene's print made a few models at a time is the print made at once") {
+    // (A large gas's print is made so by the lane's reporting thread while it waits.)
+    Scene s;
+    for (int m = 0; m < 40; ++m) { // 43 models, each its own mass and centre
+        s.descs.push_back(s.descs[m % 3]);
+        s.descs.back().mass = 1.0 + 0.25 * m;
+        s.models.push_back(s.models[m % 3]);
+        s.spans.push_back(s.spans[m % 3]);
+        s.centres.emplace_back(m, -m, 0.5 * m);
+    }
+    const auto whole = scene_print(s.get());
+    for (uint32_t step : {1u, 2u, 5u, 7u, 43u, 1000u}) {
+        CAPTURE(step);
+        physics_custom::ScenePrinter printer(s.get());
+        int steps = 1;
+        while (!printer.step(step)) ++steps;
+        CHECK(steps == static_cast<int>((43 + step - 1) / step));
+        CHECK(printer.done());
+        CHECK(printer.print() == whole);
+        CHECK(printer.step(3)); // (done stays done)
+        CHECK(printer.print() == whole);
+    }
+    // Not done, it is not the whole scene's print.
+    physics_custom::ScenePrinter part(s.get());
+    part.step(42);
+    CHECK_FALSE(part.done());
+    CHECK(part.print() != whole);
+}

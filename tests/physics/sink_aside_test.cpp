@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -119,4 +121,42 @@ TEST_CASE("a cancel of a lane reporting aside leaves nothing running and nothing
     // The lane stopped at its fourth progress report, after 4 x 1024 events.
     CHECK(to.segments.size() == 2 * 4 * 1024);
     CHECK(to.collisions.size() == 4 * 1024);
+}
+
+TEST_CASE(
+    "the thread reporting aside does other work meanwhile, a piece at a time, when it waits") {
+    Recorder to;
+    std::thread::id worker;
+    int pieces = 0;
+    std::atomic<bool> all_done{false};
+    {
+        SinkAside aside(to, [&] {
+            worker = std::this_thread::get_id();
+            all_done = ++pieces == 50;
+            return all_done.load();
+        });
+        run(aside, 3000);
+        // (Waits a little for the thread to have nothing to report, as a lane between events.)
+        for (int k = 0; k < 1000 && !all_done; ++k)
+            std::this_thread::sleep_for(std::chrono::microseconds(100));
+        aside.finish();
+        CHECK(to.segments.size() == 6000); // its report still whole
+        if (std::thread::hardware_concurrency() >= 2) {
+            CHECK(aside.meanwhile_done());
+            CHECK(pieces == 50); // not one piece after it said it was done
+            CHECK(worker != std::this_thread::get_id());
+        } else {
+            CHECK_FALSE(aside.meanwhile_done()); // left to its owner
+        }
+    }
+    // Stopped before it is done, it is left undone (its owner does the rest).
+    Recorder quick;
+    std::atomic<int> done_pieces{0};
+    SinkAside slow(quick, [&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        return ++done_pieces == 1000000;
+    });
+    slow.finish();
+    CHECK_FALSE(slow.meanwhile_done());
+    CHECK(done_pieces < 1000000);
 }
