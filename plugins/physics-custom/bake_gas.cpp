@@ -33,20 +33,23 @@ class EventBake::GasSink final : public GasLane::Sink {
 
 namespace {
 
-// The seed's elastic, frictionless response between every two of the balls' materials and between
-// each of them and each wall's.
-bool elastic(const std::vector<const Material *> &balls,
+// Adds m to `kinds`, the distinct materials (restitution and friction) of a set of balls, unless
+// one there is the same (a gas has one or few).
+void add_kind(std::vector<const Material *> &kinds, const Material *m) {
+    if (std::none_of(kinds.begin(), kinds.end(), [&](const Material *k) {
+            return k->restitution == m->restitution && k->friction == m->friction;
+        }))
+        kinds.push_back(m);
+}
+
+// The seed's elastic, frictionless response between every two of the balls' materials (their
+// distinct kinds) and between each of them and each wall's.
+bool elastic(const std::vector<const Material *> &kinds,
              const std::vector<const Material *> &walls) {
     const auto seed_pair = [](const Material &a, const Material &b) {
         return combined_restitution(a.restitution, b.restitution) == 1.0 &&
                combined_friction(a.friction, b.friction) == 0.0;
     };
-    std::vector<const Material *> kinds; // the balls' distinct materials (a gas has one or few)
-    for (const Material *m : balls)
-        if (std::none_of(kinds.begin(), kinds.end(), [&](const Material *k) {
-                return k->restitution == m->restitution && k->friction == m->friction;
-            }))
-            kinds.push_back(m);
     for (const Material *a : kinds) {
         for (const Material *b : kinds)
             if (!seed_pair(*a, *b)) return false;
@@ -126,6 +129,7 @@ bool EventBake::gas_from_scene() {
     struct Part {
         std::vector<uint32_t> walls;
         ani::HugeVector<GasLane::Start> starts;
+        std::vector<const Material *> kinds; // the balls' materials (add_kind)
         double r = -1.0;
         glm::dvec3 a{0.0}; // one for all: gravity (Gravity on), or none
         bool gas = true;
@@ -153,6 +157,7 @@ bool EventBake::gas_from_scene() {
         if (part.starts.empty()) part.a = vec(s.a);
         if (vec(s.a) != part.a) return false;
         part.starts.push_back({i, m.desc->mass, s.motion, t_begin_, vec(s.p0), vec(s.v0)});
+        add_kind(part.kinds, &materials[i]);
         return true;
     };
     // A hundred nanoseconds or more a model, most of it waiting on its records (its description
@@ -184,11 +189,10 @@ bool EventBake::gas_from_scene() {
     if (starts.empty() ||
         (options_.broad_phase == BroadPhase::kAutomatic && starts.size() < kGridFrom))
         return false;
-    std::vector<const Material *> balls, wall_materials;
-    balls.reserve(starts.size());
-    for (const GasLane::Start &st : starts) balls.push_back(&materials[st.model]);
+    std::vector<const Material *> kinds = std::move(first.kinds), wall_materials;
+    for (const Material *m : second.kinds) add_kind(kinds, m);
     for (uint32_t w : walls) wall_materials.push_back(&materials[w]);
-    if (!elastic(balls, wall_materials)) return false;
+    if (!elastic(kinds, wall_materials)) return false;
     // The static models, and the grid as build_broad_phase makes it (grid_over).
     for (uint32_t w : walls) add_obstacle(w, t_begin_);
     const auto give_up = [&] {
