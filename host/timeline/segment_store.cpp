@@ -1,9 +1,6 @@
 #include "timeline/segment_store.hpp"
 
-#include <animator/halves.hpp>
-
 #include <algorithm>
-#include <utility>
 
 namespace animator {
 
@@ -11,9 +8,6 @@ namespace {
 
 // Below this many, space left in the index array or the log is never worth a compaction.
 constexpr std::size_t kSlack = std::size_t{1} << 16;
-// From this many segments logged, they are filed in two halves at once (each reads every model's
-// run: a pass of a few nanoseconds a segment against 50 us for a thread).
-constexpr std::size_t kFileInHalvesFrom = std::size_t{1} << 16;
 
 } // namespace
 
@@ -43,43 +37,12 @@ std::size_t SegmentStore::room_for(const Run &r, std::uint32_t more) {
 
 void SegmentStore::file() {
     if (filed_ == logged_) return;
-    const std::size_t runs = runs_.size();
-    std::vector<std::uint32_t> count(runs, 0);
-    if (logged_ - filed_ < kFileInHalvesFrom) {
-        for (std::size_t k = filed_; k < logged_; ++k) ++count[models_[k]];
-        make_room(count);
-        for (std::size_t k = filed_; k < logged_; ++k) {
-            Run &r = runs_[models_[k]];
-            index_[r.begin + r.size++] = static_cast<std::uint32_t>(k);
-        }
-    } else {
-        // In two halves of the log at once (animator/halves.hpp): each half's segments counted
-        // per model; then each half's placed from the back of its part of each run (the first
-        // half's right after what the run had, the second's after those), in time order.
-        const std::size_t half_way = (logged_ - filed_) / 2; // the first half's segments
-        std::vector<std::uint32_t> second(runs, 0);
-        const auto half_of = [&](std::size_t half) {
-            const std::size_t middle = filed_ + half_way;
-            return half == 0 ? std::make_pair(filed_, middle) : std::make_pair(middle, logged_);
-        };
-        ani::in_halves(true, 2, [&](std::size_t half, std::size_t) {
-            std::vector<std::uint32_t> &c = half == 0 ? count : second;
-            const auto [from, to] = half_of(half);
-            for (std::size_t k = from; k < to; ++k) ++c[models_[k]];
-        });
-        std::vector<std::uint32_t> both(runs);
-        for (std::size_t m = 0; m < runs; ++m) both[m] = count[m] + second[m];
-        make_room(both); // (which may rebuild the log: the segments not filed move, in order)
-        second = both;   // where each half ends in each run (count: where the first half does)
-        ani::in_halves(true, 2, [&](std::size_t half, std::size_t) {
-            std::vector<std::uint32_t> &end = half == 0 ? count : second;
-            const auto [from, to] = half_of(half);
-            for (std::size_t k = to; k-- > from;) {
-                const std::uint32_t m = models_[k];
-                index_[runs_[m].begin + runs_[m].size + --end[m]] = static_cast<std::uint32_t>(k);
-            }
-        });
-        for (std::size_t m = 0; m < runs; ++m) runs_[m].size += both[m];
+    std::vector<std::uint32_t> count(runs_.size(), 0);
+    for (std::size_t k = filed_; k < logged_; ++k) ++count[models_[k]];
+    make_room(count);
+    for (std::size_t k = filed_; k < logged_; ++k) {
+        Run &r = runs_[models_[k]];
+        index_[r.begin + r.size++] = static_cast<std::uint32_t>(k);
     }
     live_ += logged_ - filed_;
     filed_ = logged_;
