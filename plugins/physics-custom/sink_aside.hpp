@@ -34,7 +34,7 @@ class SinkAside final : public GasLane::Sink {
     // Reports to `to` on a thread of its own (or here, where no thread can be had or the
     // machine has one core). That thread also does `meanwhile`, a piece at a time, whenever it
     // has nothing to report, until it returns true (done: meanwhile_done()); a piece must be
-    // short (well under the millisecond the rings hold at a gas's rate).
+    // short (well under the few milliseconds of a gas's report that the rings hold).
     explicit SinkAside(GasLane::Sink &to, std::function<bool()> meanwhile = {});
     // Stops the thread (what is handed over and not yet reported is reported first).
     ~SinkAside() override;
