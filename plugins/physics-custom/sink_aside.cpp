@@ -54,18 +54,19 @@ void SinkAside::stop() {
 
 void SinkAside::finish() {
     stop();
-    if (failed_.load(std::memory_order_acquire)) {
-        failed_.store(false);
-        std::rethrow_exception(failure_);
-    }
+    throw_if_failed();
 }
 
 void SinkAside::progress(double now) {
     if (thread_.joinable()) {
         publish();
-        if (failed_.load(std::memory_order_acquire)) std::rethrow_exception(failure_);
+        throw_if_failed();
     }
     to_.progress(now);
+}
+
+void SinkAside::throw_if_failed() const {
+    if (failed_.load(std::memory_order_acquire)) std::rethrow_exception(failure_);
 }
 
 void SinkAside::publish() {
@@ -80,7 +81,7 @@ template <class R> void SinkAside::wait_for_room(R &ring) {
         wake_.notify_one();
     }
     for (int spins = 0;; ++spins) {
-        if (failed_.load(std::memory_order_acquire)) std::rethrow_exception(failure_);
+        throw_if_failed();
         ring.room_until = ring.taken.load(std::memory_order_acquire) + R::kSize;
         if (ring.room_until != ring.written) return;
         if (spins < kSpins)
@@ -89,6 +90,11 @@ template <class R> void SinkAside::wait_for_room(R &ring) {
             std::this_thread::yield();
     }
 }
+
+// (Made here for both rings: the header's push() calls them, in every file that hands a segment
+// or collision over.)
+template void SinkAside::wait_for_room(Segments &);
+template void SinkAside::wait_for_room(Collisions &);
 
 void SinkAside::report() {
     // After a report throws, the rest is taken and not reported (the lane throws it at its next

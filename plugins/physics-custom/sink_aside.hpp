@@ -92,15 +92,18 @@ class SinkAside final : public GasLane::Sink {
     static constexpr std::size_t kBatch = 16;
 
     void publish();
-    template <class R> void wait_for_room(R &ring);
+    template <class R> void wait_for_room(R &ring); // (made for both rings in sink_aside.cpp)
     void report(); // the thread's loop
     void stop();   // (the thread ends once it has reported everything)
+    void throw_if_failed() const; // what the thread's report threw, if it threw
 
     GasLane::Sink &to_;
     std::function<bool()> meanwhile_;
     bool meanwhile_left_, meanwhile_done_; // (the thread's own until it is joined)
-    Ring<ani_motion_segment, 8192> segments_;
-    Ring<ani_collision_event, 4096> collisions_;
+    using Segments = Ring<ani_motion_segment, 8192>;
+    using Collisions = Ring<ani_collision_event, 4096>;
+    Segments segments_;
+    Collisions collisions_;
     std::atomic<bool> stop_{false}, failed_{false};
     std::exception_ptr failure_; // the thread's report's, written before failed_
     std::mutex lock_;
