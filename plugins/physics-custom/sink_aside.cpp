@@ -75,6 +75,11 @@ void SinkAside::publish() {
 }
 
 template <class R> void SinkAside::wait_for_room(R &ring) {
+    // The room the thread's reports have made since the lane last looked: nearly always some
+    // (the lane looks only when it has written up to what it knew of). Only a ring truly full
+    // wakes the thread: waking it each time cost a system call, 1.5% of a 10,000-ball bake.
+    ring.room_until = ring.taken.load(std::memory_order_acquire) + R::kSize;
+    if (ring.room_until != ring.written) return;
     publish();
     {
         std::lock_guard<std::mutex> hold(lock_);
