@@ -41,52 +41,83 @@ Interpolators Interpolators::load(PluginRegistry &plugins, const Document &doc) 
     return out;
 }
 
-void KeyedMotion::finish(Channel &c, int kind, const PluginInstance *interpolator, const glm::dvec3 &initial_rate) {
+template <class Keys>
+void KeyedMotion::add(Channel &c, int kind, const PluginInstance *interpolator,
+                      const glm::dvec3 &initial_rate, std::size_t &from, const Keys &keys) {
+    from = keys_.size();
+    keys(keys_);
     c.interpolator = interpolator;
     c.channel.struct_size = sizeof c.channel;
     c.channel.kind = kind;
-    c.channel.keys = c.keys.data();
-    c.channel.key_count = static_cast<uint32_t>(c.keys.size());
+    c.channel.key_count = static_cast<uint32_t>(keys_.size() - from);
     for (int i = 0; i < 3; ++i) c.channel.initial_rate[i] = initial_rate[i];
 }
 
 KeyedMotion::KeyedMotion(const Document &doc, const Interpolators &interpolators) {
     const auto &models = doc.models();
+    const auto &keyframes = doc.keyframes();
+    std::size_t keyed = 0, camera_keys = 0;
+    for (const Keyframe &k : keyframes) {
+        camera_keys += k.camera.has_value();
+        for (const auto &state : k.states) keyed += state.has_value();
+    }
+    keys_.reserve(3 * keyed + 2 * camera_keys);
     models_.resize(models.size());
+    std::vector<std::size_t> from(3 * models.size() + 2); // each channel's first key in keys_
     for (size_t m = 0; m < models.size(); ++m) {
         ModelChannels &ch = models_[m];
-        for (const Keyframe *k : doc.keys_of(static_cast<int>(m))) {
-            const ModelState &s = *k->states[m];
-            const double t = seconds(k->time_ms);
-            ch.center.keys.push_back(key_of(t, s.center));
-            ch.angles.keys.push_back(key_of(t, s.angles, s.turn));
-            ch.scale.keys.push_back(key_of(t, s.scale));
-        }
+        // The model's keys of one channel, in time order.
+        const auto each = [&](auto &&key_of_state) {
+            return [&, key_of_state](std::vector<ani_key> &out) {
+                for (const Keyframe &k : keyframes)
+                    if (const auto &s = k.states[m])
+                        out.push_back(key_of_state(seconds(k.time_ms), *s));
+            };
+        };
         const Model &model = models[m];
         // Dynamics on: the center follows the kinematic equations, starting at the model's
         // initial velocity (seed, "Keyframe Interpolation with Kinematic Equations").
-        finish(ch.center, ANI_CHANNEL_POSITION,
-               model.dynamics ? interpolators.kinematic.get() : interpolators.chosen.get(),
-               model.dynamics ? model.initial_velocity : glm::dvec3(0.0));
-        finish(ch.angles, ANI_CHANNEL_ANGLES, interpolators.chosen.get(), glm::dvec3(0.0));
-        finish(ch.scale, ANI_CHANNEL_SCALE, interpolators.chosen.get(), glm::dvec3(0.0));
+        add(ch.center, ANI_CHANNEL_POSITION,
+            model.dynamics ? interpolators.kinematic.get() : interpolators.chosen.get(),
+            model.dynamics ? model.initial_velocity : glm::dvec3(0.0), from[3 * m],
+            each([](double t, const ModelState &s) { return key_of(t, s.center); }));
+        add(ch.angles, ANI_CHANNEL_ANGLES, interpolators.chosen.get(), glm::dvec3(0.0),
+            from[3 * m + 1],
+            each([](double t, const ModelState &s) { return key_of(t, s.angles, s.turn); }));
+        add(ch.scale, ANI_CHANNEL_SCALE, interpolators.chosen.get(), glm::dvec3(0.0),
+            from[3 * m + 2],
+            each([](double t, const ModelState &s) { return key_of(t, s.scale); }));
     }
-    for (const Keyframe *k : doc.keys_of(-1)) {
-        const CameraState &c = *k->camera;
-        const double t = seconds(k->time_ms);
-        camera_position_.keys.push_back(key_of(t, c.position));
-        ani_key r{};
-        r.time = t;
-        r.value[0] = c.rotation.w;
-        r.value[1] = c.rotation.x;
-        r.value[2] = c.rotation.y;
-        r.value[3] = c.rotation.z;
-        camera_rotation_.keys.push_back(r);
-        fov_times_.push_back(t);
-        fov_values_.push_back(c.fov_degrees);
+    const std::size_t camera = 3 * models.size();
+    add(camera_position_, ANI_CHANNEL_CAMERA_POSITION, interpolators.chosen.get(), glm::dvec3(0.0),
+        from[camera], [&](std::vector<ani_key> &out) {
+            for (const Keyframe &k : keyframes)
+                if (k.camera) out.push_back(key_of(seconds(k.time_ms), k.camera->position));
+        });
+    add(camera_rotation_, ANI_CHANNEL_CAMERA_ROTATION, interpolators.chosen.get(), glm::dvec3(0.0),
+        from[camera + 1], [&](std::vector<ani_key> &out) {
+            for (const Keyframe &k : keyframes) {
+                if (!k.camera) continue;
+                const CameraState &c = *k.camera;
+                ani_key r{};
+                r.time = seconds(k.time_ms);
+                r.value[0] = c.rotation.w;
+                r.value[1] = c.rotation.x;
+                r.value[2] = c.rotation.y;
+                r.value[3] = c.rotation.z;
+                out.push_back(r);
+                fov_times_.push_back(r.time);
+                fov_values_.push_back(c.fov_degrees);
+            }
+        });
+    // keys_ is whole: the channels are pointed at their keys.
+    for (size_t m = 0; m < models.size(); ++m) {
+        models_[m].center.channel.keys = keys_.data() + from[3 * m];
+        models_[m].angles.channel.keys = keys_.data() + from[3 * m + 1];
+        models_[m].scale.channel.keys = keys_.data() + from[3 * m + 2];
     }
-    finish(camera_position_, ANI_CHANNEL_CAMERA_POSITION, interpolators.chosen.get(), glm::dvec3(0.0));
-    finish(camera_rotation_, ANI_CHANNEL_CAMERA_ROTATION, interpolators.chosen.get(), glm::dvec3(0.0));
+    camera_position_.channel.keys = keys_.data() + from[camera];
+    camera_rotation_.channel.keys = keys_.data() + from[camera + 1];
 }
 
 void KeyedMotion::evaluate(const Channel &c, const double *times, std::size_t n, double *values, double *rates) {
@@ -108,7 +139,7 @@ ModelPose KeyedMotion::pose_of(const ModelChannels &ch, double t, const double *
     ModelPose out;
     // Outside its keys a model's angles are held: they do not turn, whatever rate the
     // interpolator continues with.
-    const bool held = t < ch.angles.keys.front().time || t > ch.angles.keys.back().time;
+    const bool held = t < ch.angles.first().time || t > ch.angles.last().time;
     for (int c = 0; c < 3; ++c) {
         out.center[c] = centers[c];
         out.velocity[c] = velocities[c];
@@ -174,8 +205,8 @@ CameraState KeyedMotion::camera(double t) const {
 }
 
 ani_time_span KeyedMotion::keyed_span(int m) const {
-    const auto &keys = models_[static_cast<size_t>(m)].center.keys;
-    return ani_time_span{keys.front().time, keys.back().time};
+    const Channel &center = models_[static_cast<size_t>(m)].center;
+    return ani_time_span{center.first().time, center.last().time};
 }
 
 } // namespace animator

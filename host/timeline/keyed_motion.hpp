@@ -56,22 +56,35 @@ class KeyedMotion {
     ani_time_span keyed_span(int m) const;
     std::size_t model_count() const { return models_.size(); }
 
+    // (The channels point into keys_.)
+    KeyedMotion(const KeyedMotion &) = delete;
+    KeyedMotion &operator=(const KeyedMotion &) = delete;
+
   private:
     struct Channel {
         const PluginInstance *interpolator = nullptr;
-        std::vector<ani_key> keys;
-        ani_channel channel{};
+        ani_channel channel{}; // its keys in keys_
+        const ani_key &first() const { return channel.keys[0]; }
+        const ani_key &last() const { return channel.keys[channel.key_count - 1]; }
     };
     struct ModelChannels {
         Channel center, angles, scale;
     };
-    static void finish(Channel &c, int kind, const PluginInstance *interpolator, const glm::dvec3 &initial_rate);
+    // Appends a channel's keys to keys_ (`key` makes the key of a keyframe that has one) and
+    // sets the channel but for where its keys are (at `from`, set once keys_ is whole).
+    template <class Keys>
+    void add(Channel &c, int kind, const PluginInstance *interpolator,
+             const glm::dvec3 &initial_rate, std::size_t &from, const Keys &keys);
     // The channel at n times: 4 values and 4 rates per time.
     static void evaluate(const Channel &c, const double *times, std::size_t n, double *values, double *rates);
     // The pose from the channels' values at one time (4 numbers each).
     static ModelPose pose_of(const ModelChannels &ch, double t, const double *centers, const double *velocities,
                              const double *angles, const double *angle_rates, const double *scales);
 
+    // Every channel's keys, model after model (its center's, angles' and scale's), then the
+    // camera's: one array read in order (a vector per channel was three allocations a model, and
+    // the keyed starts of a bake of 100,000 models read them from all over the heap).
+    std::vector<ani_key> keys_;
     std::vector<ModelChannels> models_;
     Channel camera_position_, camera_rotation_;
     std::vector<double> fov_times_, fov_values_; // the camera's field of view, linear between keys
