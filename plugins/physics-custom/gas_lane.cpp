@@ -91,9 +91,16 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
         each_cell(triangles_[k].box, [&](std::size_t c) { near_[near_from_[c]++] = k; });
     std::copy_backward(near_from_.begin(), near_from_.end() - 1, near_from_.end());
     near_from_[0] = 0;
-    // (What is done per sphere, each sphere's alone, in two halves at once for many spheres.)
+    // (What is done per sphere, each sphere's alone, in two halves at once for many spheres:
+    // its records, its cell, whether it is clear, and the layer of cells it is in, listed.)
     const bool two = n >= ani::kWorthTwoHalves;
+    Layers halves[2];
+    const int64_t middle = grid_.counts[2] / 2;
+    bool clear_in[2] = {true, true};
     ani::in_halves(two, n, [&](std::size_t from, std::size_t to) {
+        const int half = from != 0;
+        Layers &layers = halves[half];
+        bool clear = true; // (its own until the end: the other half's shares its cache line)
         for (std::size_t i = from; i < to; ++i) {
             const Start &st = spheres[i];
             Sphere &p = s_[i];
@@ -105,12 +112,34 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
             e_[i].mass = st.mass;
             as_reported_[i] = {st.model, st.motion};
             const glm::dvec3 c = at(p, now);
-            place(static_cast<uint32_t>(i),
-                  {coordinate(c.x, 0), coordinate(c.y, 1), coordinate(c.z, 2)});
+            const std::array<int64_t, 3> cell{coordinate(c.x, 0), coordinate(c.y, 1),
+                                              coordinate(c.z, 2)};
+            place(static_cast<uint32_t>(i), cell);
+            if (check) clear = clear && clear_of(static_cast<uint32_t>(i), c);
+            if (two)
+                (cell[2] < middle - 1 ? layers.below
+                 : cell[2] < middle   ? layers.between
+                                      : layers.above)
+                    .push_back(static_cast<uint32_t>(i));
         }
+        clear_in[half] = clear;
     });
-    for (uint32_t i = 0; i < n; ++i) link(i);
-    if ((check && !clear(now)) || !predict_all_pairs(now, check)) {
+    if (!(clear_in[0] && clear_in[1])) {
+        admissible_ = false;
+        return;
+    }
+    Layers layers;
+    if (two) { // (the halves' lists one after the other: each in the order of the spheres)
+        layers = std::move(halves[0]);
+        const auto append = [](std::vector<uint32_t> &to, const std::vector<uint32_t> &from) {
+            to.insert(to.end(), from.begin(), from.end());
+        };
+        append(layers.below, halves[1].below);
+        append(layers.between, halves[1].between);
+        append(layers.above, halves[1].above);
+    }
+    link_all(two ? &layers : nullptr);
+    if (!predict_all_pairs(now, check, two ? &layers : nullptr)) {
         admissible_ = false;
         return;
     }
@@ -128,25 +157,42 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     queue_.init(times.data(), n, now);
 }
 
-// Whether every sphere is inside the grid's cells and none is within r (and the general engine's
-// touching allowance, 1e-6 r: EventBake::overlaps_body) of a triangle: one touching a face, which
-// the general engine may put on it, is left to the general engine too. (That no two overlap is
-// checked by predict_all_pairs, which reads every pair anyway.)
-bool GasLane::clear(double now) const {
+// Whether sphere i (placed, its centre at c) is inside the grid's cells and not within r (and the
+// general engine's touching allowance, 1e-6 r: EventBake::overlaps_body) of a triangle: one
+// touching a face, which the general engine may put on it, is left to the general engine too.
+// (That no two overlap is checked by predict_all_pairs, which reads every pair anyway.)
+bool GasLane::clear_of(uint32_t i, const glm::dvec3 &c) const {
+    const Event &e = e_[i];
+    for (int a = 0; a < 3; ++a)
+        if (e.cell[a] < 0 || e.cell[a] >= grid_.counts[a]) return false;
     const double beside = r_ * (1.0 + 1e-6);
-    for (uint32_t i = 0; i < s_.size(); ++i) {
-        const Event &e = e_[i];
-        for (int a = 0; a < 3; ++a)
-            if (e.cell[a] < 0 || e.cell[a] >= grid_.counts[a]) return false;
-        if (e.near_from == e.near_to) continue;
-        const glm::dvec3 c = at(s_[i], now);
-        for (uint32_t k = e.near_from; k < e.near_to; ++k) {
-            const Triangle &tri = triangles_[near_[k]];
-            if (glm::length(c - closest_point_on_triangle(c, tri.a, tri.b, tri.c)) < beside)
-                return false;
-        }
+    for (uint32_t k = e.near_from; k < e.near_to; ++k) {
+        const Triangle &tri = triangles_[near_[k]];
+        if (glm::length(c - closest_point_on_triangle(c, tri.a, tri.b, tri.c)) < beside)
+            return false;
     }
     return true;
+}
+
+// Every sphere linked into its cell's list, in the order of the spheres (each list then starts
+// with its last), as one pass over them would link them. With `layers`, in two halves at once:
+// the layers of cells below the middle one and those from it up (a cell's spheres all in one
+// half, each half in the spheres' order).
+void GasLane::link_all(const Layers *layers) {
+    if (!layers) {
+        for (uint32_t i = 0; i < s_.size(); ++i) link(i);
+        return;
+    }
+    ani::side_by_side(
+        [&] { // below and between, merged in the spheres' order
+            const std::vector<uint32_t> &a = layers->below, &b = layers->between;
+            std::size_t j = 0, k = 0;
+            while (j < a.size() || k < b.size())
+                link(k == b.size() || (j < a.size() && a[j] < b[k]) ? a[j++] : b[k++]);
+        },
+        [&] {
+            for (uint32_t i : layers->above) link(i);
+        });
 }
 
 // Where a sphere is at t, and how fast it moves: Path::at and Path::velocity, the same operations
@@ -399,11 +445,10 @@ void GasLane::predict_pairs(uint32_t i, double now) {
 // the predictions unfinished) when two spheres are closer than 2r less the general engine's
 // touching allowance (1e-6 r each: EventBake::overlaps_body): the squared distance of each pair
 // from the batch its root was computed from.
-bool GasLane::predict_all_pairs(double now, bool check) {
+bool GasLane::predict_all_pairs(double now, bool check, const Layers *layers) {
     const std::size_t n = s_.size();
     std::size_t tests = 0;
-    const int64_t layers = grid_.counts[2];
-    if (n < ani::kWorthTwoHalves || layers < 4) {
+    if (!layers || grid_.counts[2] < 4) {
         if (!all_pairs_of(now, check, tests, nullptr, n)) return false;
     } else {
         // In two halves at once: the spheres below the middle layer of cells but one, and those
@@ -411,14 +456,8 @@ bool GasLane::predict_all_pairs(double now, bool check) {
         // apart (and each reads only its own spheres' events: listed first); the layer between
         // them after. (Each sphere is offered the same roots; only the order of two offers from
         // either side of that layer changes, which decides between exactly equal times alone.)
-        const int64_t middle = layers / 2;
-        std::vector<uint32_t> below, above, between;
-        below.reserve(n / 2);
-        above.reserve(n / 2);
-        for (uint32_t i = 0; i < n; ++i) {
-            const int32_t z = e_[i].cell[2];
-            (z < middle - 1 ? below : z >= middle ? above : between).push_back(i);
-        }
+        const std::vector<uint32_t> &below = layers->below, &above = layers->above,
+                                    &between = layers->between;
         std::size_t tests_above = 0;
         bool apart_below = true, apart_above = true;
         ani::side_by_side(

@@ -134,7 +134,13 @@ class GasLane {
     template <class B> bool gather(B &batch, uint32_t k, double now) const;
     void scan(uint32_t i, double now, const int64_t *offsets, int count, bool all);
     void predict_pairs(uint32_t i, double now);
-    bool predict_all_pairs(double now, bool check); // every sphere's, at the start
+    // The spheres by the layer of cells they are in: below the middle one but one, that one
+    // (between), and from the middle one up; each list in the spheres' order.
+    struct Layers {
+        std::vector<uint32_t> below, between, above;
+    };
+    void link_all(const Layers *layers);
+    bool predict_all_pairs(double now, bool check, const Layers *layers); // at the start
     bool all_pairs_of(double now, bool check, std::size_t &tests, const uint32_t *ids,
                       std::size_t listed);
     void predict_move(uint32_t i, double now) { predict_move(i, now, counts_.done); }
@@ -180,7 +186,7 @@ class GasLane {
     CalendarQueue queue_;
     Counts counts_;
     bool admissible_ = true;
-    bool clear(double now) const;
+    bool clear_of(uint32_t i, const glm::dvec3 &c) const;
     double stopped_at_ = kInf;
     double t_begin_ = 0.0, t_end_ = 0.0; // the slice's
     std::size_t at_once_ = 0;
