@@ -9,6 +9,7 @@
 #include <animator/halves.hpp>
 
 #include <exception>
+#include <limits>
 #include <optional>
 
 namespace physics_custom::bake {
@@ -128,7 +129,10 @@ bool EventBake::gas_from_scene() {
     // that keeps the lane out (or whose values are refused), as one pass over them in order would.
     struct Part {
         std::vector<uint32_t> walls;
+        std::vector<uint32_t> unmoved; // the models not balls (walls among them), in order
         ani::HugeVector<GasLane::Start> starts;
+        Box region{glm::dvec3(std::numeric_limits<double>::infinity()),
+                   glm::dvec3(-std::numeric_limits<double>::infinity())}; // of the balls' centres
         std::vector<const Material *> kinds; // the balls' materials (add_kind)
         double r = -1.0;
         glm::dvec3 a{0.0}; // one for all: gravity (Gravity on), or none
@@ -142,10 +146,14 @@ bool EventBake::gas_from_scene() {
         if (!m.desc) return false;
         materials[i] = material_of(*m.desc); // refuses values out of range, as classify
         const auto [span, free_now, movable, solid] = standing(i);
-        if (!solid) return true;     // collides with nothing: reported as it moves (emit_unmoved)
+        if (!solid) { // collides with nothing: reported as it moves (emit_unmoved)
+            part.unmoved.push_back(i);
+            return true;
+        }
         if (!free_now) return false; // keyed here: a moving wall, or a ball still on its keys
         if (!movable) {
             part.walls.push_back(i);
+            part.unmoved.push_back(i);
             return true;
         }
         if (!m.desc->dynamics || materials[i].rotates) return false;
@@ -157,6 +165,8 @@ bool EventBake::gas_from_scene() {
         if (part.starts.empty()) part.a = vec(s.a);
         if (vec(s.a) != part.a) return false;
         part.starts.push_back({i, m.desc->mass, s.motion, t_begin_, vec(s.p0), vec(s.v0)});
+        part.region.lo = glm::min(part.region.lo, vec(s.p0));
+        part.region.hi = glm::max(part.region.hi, vec(s.p0));
         add_kind(part.kinds, &materials[i]);
         return true;
     };
@@ -200,11 +210,8 @@ bool EventBake::gas_from_scene() {
         triangle_count_ = 0;
         return false;
     };
-    Box region{starts[0].p, starts[0].p};
-    for (const GasLane::Start &st : starts) {
-        region.lo = glm::min(region.lo, st.p);
-        region.hi = glm::max(region.hi, st.p);
-    }
+    const Box region{glm::min(first.region.lo, second.region.lo),
+                     glm::max(first.region.hi, second.region.hi)};
     auto grid = grid_over(region, 2.0 * r);
     if (!grid->dense()) return give_up();
     const GasLane::Grid geometry{grid->origin(), grid->cell_size(), grid->counts()};
@@ -212,10 +219,12 @@ bool EventBake::gas_from_scene() {
     if (!lane->admissible()) return give_up();
     // Taken: every other model is reported as classify reports it.
     materials_ = std::move(materials);
-    is_body_.assign(n, false);
-    for (const GasLane::Start &st : starts) is_body_[st.model] = true;
-    for (uint32_t i = 0; i < n; ++i)
-        if (!is_body_[i]) emit_unmoved(i);
+    is_body_.assign(n, true);
+    for (const Part &part : parts)
+        for (uint32_t i : part.unmoved) {
+            is_body_[i] = false;
+            emit_unmoved(i);
+        }
     grid_ = std::move(grid);
     gas_ = std::move(lane);
     return true;
