@@ -4,6 +4,9 @@
 #include "calendar_queue.hpp" // physics.custom's, which its gas lane uses too
 
 #include <algorithm>
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 #include <cmath>
 #include <limits>
 
@@ -228,6 +231,37 @@ void Simulation::predict_pairs(std::uint32_t i, std::uint32_t skip) {
 void Simulation::predict_move(std::uint32_t i) {
     const Sphere &p = s_[i];
     Event &e = e_[i];
+#if defined(__x86_64__)
+    // Without branches, with SSE2's selects, as physics.custom's lane does (face_ahead in
+    // gas_lane.cpp): which way a sphere moves along each axis, and which face it reaches first,
+    // are coin tosses. The same numbers as the branches below.
+    const __m128d zero = _mm_setzero_pd(), never = _mm_set_sd(kInf);
+    const auto pick = [](__m128d mask, __m128d yes, __m128d no) {
+        return _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no));
+    };
+    __m128d best = never;
+    int move = 0;
+    for (int a = 0; a < 3; ++a) {
+        const double v = p.v[a];
+        const int c = coord_[i][a], up = v > 0.0;
+        const int wall = up ? c == n_[a] : c == 1; // (integers: a select, not a branch)
+        const __m128d va = _mm_set_sd(v), is_up = _mm_cmpgt_sd(va, zero);
+        const __m128d wall_plane = pick(is_up, _mm_set_sd(wall_hi_[a]), _mm_set_sd(wall_lo_[a]));
+        const __m128d cell_plane = _mm_add_sd(
+            _mm_set_sd(cell_lo_[a]),
+            _mm_mul_sd(_mm_set_sd(static_cast<double>(c - 1 + up)), _mm_set_sd(width_[a])));
+        const __m128d plane = pick(_mm_castsi128_pd(_mm_set1_epi64x(-static_cast<long long>(wall))),
+                                   wall_plane, cell_plane);
+        const __m128d q = _mm_div_sd(_mm_sub_sd(plane, _mm_set_sd(p.x[a])), va);
+        const __m128d t =
+            pick(_mm_cmpeq_sd(va, zero), never, pick(_mm_cmplt_sd(q, zero), zero, q)); // max(q, 0)
+        const int first = -_mm_comilt_sd(t, best); // (all ones, or none)
+        best = _mm_min_sd(t, best);
+        move = ((wall ? a + 3 : a) & first) | (move & ~first);
+    }
+    if (_mm_comilt_sd(best, never)) e.move = move;
+    e.move_time = p.t + _mm_cvtsd_f64(best);
+#else
     double best = kInf;
     for (int a = 0; a < 3; ++a) {
         const double v = p.v[a];
@@ -243,6 +277,7 @@ void Simulation::predict_move(std::uint32_t i) {
         }
     }
     e.move_time = p.t + best;
+#endif
 }
 
 void Simulation::schedule(std::uint32_t i) {
