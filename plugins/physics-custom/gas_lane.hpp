@@ -13,7 +13,8 @@
 //   static model), made stale lazily by the partner's counter; a crossing keeps the pair part
 //   and scans only the 9 cells newly in reach; the first predictions compute each pair once;
 // - a scan's candidates gathered and their roots computed four at a time with AVX2 where the
-//   processor has it (the same operations in the same order as one at a time);
+//   processor has it (the same operations in the same order as one at a time), and the face of
+//   its cell a sphere reaches first found without branches (face_ahead);
 // - the static models' triangles listed per cell once, so a sphere far from every wall tests
 //   none, and a face met inside its triangle solved directly;
 // - a calendar queue of the event times (calendar_queue.hpp); the next event's records fetched

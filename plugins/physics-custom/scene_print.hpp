@@ -56,7 +56,7 @@ using KeyedEvaluator = std::function<bool(uint32_t m, double t, ani_model_state 
 // evaluated by the scene's evaluate_keyed, or by `evaluate` when given.
 ScenePrint scene_print(const ani_physics_scene &scene, const KeyedEvaluator &evaluate = {});
 
-// The same print made a part at a time, its models in order (a large gas's is made by the lane's
+// The same print made a part at a time, its models in order (a gas's is made by the lane's
 // reporting thread while it waits: sink_aside.hpp). The scene's keys are evaluated by its
 // evaluate_keyed ([thread: any]).
 class ScenePrinter {

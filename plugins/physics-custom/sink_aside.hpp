@@ -1,6 +1,6 @@
 // A gas lane's report made on another core: the lane hands each segment and collision to a ring,
 // and a thread of its own reports them to the sink it wraps (to the host, which logs them), in
-// the order they were given. A large gas reports two segments and a collision at each of its
+// the order they were given. A gas reports two segments and a collision at each of its
 // events, and reported on the lane's thread they were a fifth of its bake (docs/performance.md,
 // the gas); so the lane goes on with its next event while they are reported beside it. Progress
 // (which may cancel the bake) is reported on the lane's thread, as before.
