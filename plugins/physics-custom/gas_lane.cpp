@@ -33,9 +33,10 @@ ani_vec3 ani(const glm::dvec3 &v) {
 }
 
 // The face of its cell (`cell`, in a grid of cells of `side` from `origin`) that a path from c
-// at velocity v (no acceleration) reaches first: per axis, the face it moves towards, at
-// (face - c) / v, or at once (t = 0) when it is on that face or beyond it by rounding; none
-// along an axis it does not move along (t infinite if along none); ties go to the lower axis.
+// at velocity v (no acceleration) reaches first (the general grid's first_exit, written out for
+// such a path): per axis, the face it moves towards, at (face - c) / v, or at once (t = 0) when
+// it is on that face or beyond it by rounding; none along an axis it does not move along (t
+// infinite if along none); ties go to the lower axis.
 struct FaceAhead {
     double t;
     int axis, direction;
@@ -583,9 +584,7 @@ bool GasLane::all_pairs_of(double now, bool check, std::size_t &tests_out, const
 
 // Its next move from now: out of its cell, or into a static model's triangle listed for its cell
 // before that (sphere_triangle, as the general engine's obstacles). The crossing is first_exit's
-// for a path without acceleration, written out: per axis, the face it moves towards, at
-// (face - p) / v, or at once when it is on that face or beyond it by rounding; ties go to the
-// lower axis.
+// for a path without acceleration, written out (face_ahead).
 void GasLane::predict_move(uint32_t i, double now, std::size_t &done) {
     const Sphere &p = s_[i];
     Event &e = e_[i];
