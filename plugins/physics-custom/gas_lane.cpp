@@ -621,7 +621,10 @@ void GasLane::predict_move(uint32_t i, double now, std::size_t &done) {
         limit = hit.t;
         e.move_time = now + hit.t;
         e.triangle = k;
-        contact_[i] = hit;
+        Contact &to = contact_[i]; // (field by field: a copy whole was a `rep movs`)
+        to.t = hit.t;
+        to.normal = hit.normal;
+        to.point = hit.point;
     };
     for (uint32_t k = from; k < to; ++k) {
         const Triangle &tri = triangles_[near_[k]];
@@ -645,10 +648,12 @@ void GasLane::predict_move(uint32_t i, double now, std::size_t &done) {
             const double t = (away - r_) / closing;
             if (!(t <= limit)) continue;
             const glm::dvec3 normal = side * n, q = here.at(t) - r_ * normal;
-            const glm::dvec3 corners[3] = {tri.a, tri.b, tri.c};
+            // (The corners named, not copied: a copy of the three was a `rep movs`, slow to
+            // start, at every face met.)
+            const glm::dvec3 *const corners[3] = {&tri.a, &tri.b, &tri.c};
             bool inside = true;
             for (int j = 0; j < 3 && inside; ++j) {
-                const glm::dvec3 &a = corners[j], &b = corners[(j + 1) % 3];
+                const glm::dvec3 &a = *corners[j], &b = *corners[(j + 1) % 3];
                 inside = glm::dot(n, glm::cross(b - a, q - a)) >= 0.0;
             }
             if (inside) {
