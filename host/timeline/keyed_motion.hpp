@@ -70,8 +70,8 @@ class KeyedMotion {
     struct ModelChannels {
         Channel center, angles, scale;
     };
-    // Appends a channel's keys to keys_ (`key` makes the key of a keyframe that has one) and
-    // sets the channel but for where its keys are (at `from`, set once keys_ is whole).
+    // Appends a channel's keys to keys_ (`keys` appends them, in time order) and sets the
+    // channel but for where its keys are (at `from`, pointed at once keys_ is whole).
     template <class Keys>
     void add(Channel &c, int kind, const PluginInstance *interpolator,
              const glm::dvec3 &initial_rate, std::size_t &from, const Keys &keys);

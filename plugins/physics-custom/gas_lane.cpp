@@ -150,6 +150,9 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     // (What is done per sphere, each sphere's alone, in two halves at once for many spheres:
     // its records, its cell, whether it is clear, and the layer of cells it is in, listed.)
     const bool two = n >= ani::kWorthTwoHalves;
+    // (Listed by layer for the halves of linking and of the first predictions: with 4 layers of
+    // cells or more.)
+    const bool by_layers = two && grid_.counts[2] >= 4;
     Layers halves[2];
     const int64_t middle = grid_.counts[2] / 2;
     bool clear_in[2] = {true, true};
@@ -172,7 +175,7 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
                                               coordinate(c.z, 2)};
             place(static_cast<uint32_t>(i), cell);
             if (check) clear = clear && clear_of(static_cast<uint32_t>(i), c);
-            if (two)
+            if (by_layers)
                 (cell[2] < middle - 1 ? layers.below
                  : cell[2] < middle   ? layers.between
                                       : layers.above)
@@ -185,7 +188,7 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
         return;
     }
     Layers layers;
-    if (two) { // (the halves' lists one after the other: each in the order of the spheres)
+    if (by_layers) { // (the halves' lists one after the other: each in the order of the spheres)
         layers = std::move(halves[0]);
         const auto append = [](std::vector<uint32_t> &to, const std::vector<uint32_t> &from) {
             to.insert(to.end(), from.begin(), from.end());
@@ -194,8 +197,8 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
         append(layers.between, halves[1].between);
         append(layers.above, halves[1].above);
     }
-    link_all(two ? &layers : nullptr);
-    if (!predict_all_pairs(now, check, two ? &layers : nullptr)) {
+    link_all(by_layers ? &layers : nullptr);
+    if (!predict_all_pairs(now, check, by_layers ? &layers : nullptr)) {
         admissible_ = false;
         return;
     }
@@ -500,11 +503,12 @@ void GasLane::predict_pairs(uint32_t i, double now) {
 // not), so every sphere gets the times its own scan would have found. With `check`, false (and
 // the predictions unfinished) when two spheres are closer than 2r less the general engine's
 // touching allowance (1e-6 r each: EventBake::overlaps_body): the squared distance of each pair
-// from the batch its root was computed from.
+// from the batch its root was computed from. With `layers` (4 layers of cells or more), in two
+// halves at once (below).
 bool GasLane::predict_all_pairs(double now, bool check, const Layers *layers) {
     const std::size_t n = s_.size();
     std::size_t tests = 0;
-    if (!layers || grid_.counts[2] < 4) {
+    if (!layers) {
         if (!all_pairs_of(now, check, tests, nullptr, n)) return false;
     } else {
         // In two halves at once: the spheres below the middle layer of cells but one, and those
@@ -621,10 +625,10 @@ void GasLane::predict_move(uint32_t i, double now, std::size_t &done) {
         limit = hit.t;
         e.move_time = now + hit.t;
         e.triangle = k;
-        Contact &to = contact_[i]; // (field by field: a copy whole was a `rep movs`)
-        to.t = hit.t;
-        to.normal = hit.normal;
-        to.point = hit.point;
+        Contact &kept = contact_[i]; // (field by field: a copy whole was a `rep movs`)
+        kept.t = hit.t;
+        kept.normal = hit.normal;
+        kept.point = hit.point;
     };
     for (uint32_t k = from; k < to; ++k) {
         const Triangle &tri = triangles_[near_[k]];

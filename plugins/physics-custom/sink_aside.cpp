@@ -78,8 +78,11 @@ template <class R> void SinkAside::wait_for_room(R &ring) {
     // The room the thread's reports have made since the lane last looked: nearly always some
     // (the lane looks only when it has written up to what it knew of). Only a ring truly full
     // wakes the thread: waking it each time cost a system call, 1.5% of a 10,000-ball bake.
-    ring.room_until = ring.taken.load(std::memory_order_acquire) + R::kSize;
-    if (ring.room_until != ring.written) return;
+    const auto room = [&ring] {
+        ring.room_until = ring.taken.load(std::memory_order_acquire) + R::kSize;
+        return ring.room_until != ring.written;
+    };
+    if (room()) return;
     publish();
     {
         std::lock_guard<std::mutex> hold(lock_);
@@ -87,8 +90,7 @@ template <class R> void SinkAside::wait_for_room(R &ring) {
     }
     for (int spins = 0;; ++spins) {
         throw_if_failed();
-        ring.room_until = ring.taken.load(std::memory_order_acquire) + R::kSize;
-        if (ring.room_until != ring.written) return;
+        if (room()) return;
         if (spins < kSpins)
             pause();
         else
