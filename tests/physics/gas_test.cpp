@@ -332,6 +332,28 @@ TEST_CASE("the gas lane of 5000 balls starts in two halves and finds the general
     same_places(*a, *b, 0.2);
 }
 
+TEST_CASE("the gas lane's work per collision does not grow with the number of balls") {
+    // Issue 22: time per collision growing no faster than log N. The work counted (pair tests,
+    // predictions, cell crossings, stale events) per collision, at 27 times the balls in a box
+    // 3 times as wide (the same density), over about as many collisions per ball; each ball's
+    // first predictions counted in. No more than log N grows: log(27000) / log(1000) = 1.48.
+    const auto work = [](int side, uint64_t seed) {
+        const int n = side * side * side;
+        const Gas gas = make_gas(n, 0.2, 0.6, 1.0, 0.3 * side, 0, seed);
+        auto t = baked(gas, 2.0);
+        const double collisions = static_cast<double>(t->events().size());
+        INFO(n << " balls: " << collisions << " collisions");
+        CHECK(count_of(*t, "gas lane events") >= collisions);
+        CHECK(collisions > 2.0 * n);
+        return (count_of(*t, "pair tests done") + count_of(*t, "predictions") +
+                count_of(*t, "cell crossings") + count_of(*t, "stale predictions")) /
+               collisions;
+    };
+    const double small = work(10, 43), large = work(30, 43);
+    CAPTURE(small, large);
+    CHECK(large <= std::log(27000.0) / std::log(1000.0) * small);
+}
+
 TEST_CASE("the gas lane hands the bake to the general engine when a ball leaves its grid") {
     // In free space the balls that fly off leave the grid, which the lane does not follow: it
     // stops there and the general engine goes on from where it left every ball.
