@@ -15,6 +15,7 @@
 #include <immintrin.h>
 #endif
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace physics_custom {
@@ -90,6 +91,63 @@ inline FaceAhead face_ahead(const glm::dvec3 &c, const glm::dvec3 &v,
 
 } // namespace
 
+// The box the static models close, when they do: the box of all their corners, each of its six
+// faces two triangles of one model lying in the face's plane (their normal along its axis alone,
+// every corner's coordinate along it the face's) with the face's four corners between them and
+// its diagonal shared, so that the two make the whole face. Its faces by index (2 a: the lower
+// along axis a, 2 a + 1: the upper), each its two triangles in the general engine's order.
+struct GasLane::BoxFaces {
+    Box box;
+    std::array<std::array<uint32_t, 2>, 6> triangles{};
+};
+std::optional<GasLane::BoxFaces> GasLane::find_box(const std::vector<Triangle> &triangles) {
+    if (triangles.size() < 12) return std::nullopt;
+    BoxFaces found;
+    found.box = {triangles[0].a, triangles[0].a};
+    for (const Triangle &t : triangles)
+        for (const glm::dvec3 &p : {t.a, t.b, t.c}) {
+            found.box.lo = glm::min(found.box.lo, p);
+            found.box.hi = glm::max(found.box.hi, p);
+        }
+    for (int f = 0; f < 6; ++f) {
+        const int a = f / 2, b = (a + 1) % 3, c = (a + 2) % 3;
+        const double plane = f % 2 ? found.box.hi[a] : found.box.lo[a];
+        // A triangle of the face: its corners, as corners of the face (bit 0: upper along b,
+        // bit 1: upper along c), or none.
+        const auto corners = [&](const Triangle &t) -> std::optional<std::array<int, 3>> {
+            if (t.normal[a] == 0.0 || t.normal[b] != 0.0 || t.normal[c] != 0.0) return std::nullopt;
+            std::array<int, 3> out{};
+            const glm::dvec3 *p[3] = {&t.a, &t.b, &t.c};
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec3 &q = *p[k];
+                const bool lo_b = q[b] == found.box.lo[b], hi_b = q[b] == found.box.hi[b];
+                const bool lo_c = q[c] == found.box.lo[c], hi_c = q[c] == found.box.hi[c];
+                if (q[a] != plane || !(lo_b || hi_b) || !(lo_c || hi_c)) return std::nullopt;
+                out[static_cast<std::size_t>(k)] = (hi_b ? 1 : 0) | (hi_c ? 2 : 0);
+            }
+            if (out[0] == out[1] || out[1] == out[2] || out[0] == out[2]) return std::nullopt;
+            return out;
+        };
+        std::vector<std::pair<uint32_t, int>> in_face; // (triangle, its corners as a bit set)
+        for (uint32_t k = 0; k < triangles.size(); ++k)
+            if (const auto cs = corners(triangles[k]))
+                in_face.emplace_back(k, (1 << (*cs)[0]) | (1 << (*cs)[1]) | (1 << (*cs)[2]));
+        bool whole = false;
+        for (std::size_t x = 0; x < in_face.size() && !whole; ++x)
+            for (std::size_t y = x + 1; y < in_face.size() && !whole; ++y) {
+                const int shared = in_face[x].second & in_face[y].second;
+                // Two corners shared, and they are a diagonal's (0 and 3, or 1 and 2).
+                whole = triangles[in_face[x].first].model == triangles[in_face[y].first].model &&
+                        (shared == 0b1001 || shared == 0b0110);
+                if (whole)
+                    found.triangles[static_cast<std::size_t>(f)] = {in_face[x].first,
+                                                                    in_face[y].first};
+            }
+        if (!whole) return std::nullopt;
+    }
+    return found;
+}
+
 GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid,
                  std::vector<Triangle> triangles, const ani::HugeVector<Start> &spheres, double now,
                  bool check)
@@ -101,6 +159,52 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     as_reported_.resize(n);
     contact_.resize(n); // (read only for an event with a triangle, which writes it)
     prev_.resize(n);
+    // The box around the spheres, if the static models close one and nothing falls (a parabola
+    // meets a face where first_exit and sphere_triangle say). If a sphere is not inside it after
+    // all, everything is laid out again without it.
+    const std::optional<BoxFaces> box = falls_ ? std::nullopt : find_box(triangles_);
+    const bool two = n >= ani::kWorthTwoHalves;
+    Layers layers;
+    bool clear = true;
+    if (!lay_out(spheres, now, check, box ? &*box : nullptr, layers, clear)) {
+        layers = Layers{};
+        clear = true;
+        lay_out(spheres, now, check, nullptr, layers, clear);
+    }
+    if (!clear) {
+        admissible_ = false;
+        return;
+    }
+    const bool by_layers = two && grid_.counts[2] >= 4;
+    link_all(by_layers ? &layers : nullptr);
+    if (!predict_all_pairs(now, check, by_layers ? &layers : nullptr)) {
+        admissible_ = false;
+        return;
+    }
+    ani::UnwrittenVector<double> times(n); // (each written below)
+    std::size_t tests[2] = {0, 0};
+    ani::in_halves(two, n, [&](std::size_t from, std::size_t to) {
+        std::size_t done = 0; // (its own: the two counts share a cache line)
+        for (std::size_t i = from; i < to; ++i) {
+            predict_move(static_cast<uint32_t>(i), now, done);
+            times[i] = std::min(e_[i].pair_time, e_[i].move_time);
+        }
+        tests[from != 0] = done;
+    });
+    counts_.done += tests[0] + tests[1];
+    queue_.init(times.data(), n, now);
+}
+
+// The cells, each cell's triangles, and every sphere's records, placed in its cell (and listed
+// by the layer of cells it is in, for the halves of linking and of the first predictions);
+// `clear`: whether every sphere is (with `check`). With `box`, its faces are known as such (not
+// listed: the spheres moving towards them test them): false, and nothing to be trusted, if a
+// sphere is not inside it.
+bool GasLane::lay_out(const ani::HugeVector<Start> &spheres, double now, bool check,
+                      const BoxFaces *box, Layers &layers, bool &clear) {
+    const std::size_t n = spheres.size();
+    boxed_ = box != nullptr;
+    facing_ = 0;
     int64_t cells = 1;
     for (int a = 0; a < 3; ++a) {
         stride_[a] = cells;
@@ -121,32 +225,31 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
                 for (int d2 = -1; d2 <= 1; ++d2)
                     beyond_[2 * a + d][q++] = (d ? 1 : -1) * stride_[a] + d1 * s1 + d2 * s2;
         }
-    // Each cell's triangles: those whose box reaches the cell's widened by the radius (and a
-    // little more, for rounding), in the general engine's order; counted, then listed.
-    const double pad = r_ * (1.0 + 1e-6);
-    const auto each_cell = [&](const Box &box, auto &&f) {
-        std::array<int64_t, 3> lo{}, hi{};
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = coordinate(box.lo[a] - pad, a);
-            hi[a] = coordinate(box.hi[a] + pad, a);
+    // The box's faces, and the cells beside each.
+    if (box) {
+        const double pad = r_ * (1.0 + 1e-6); // (as list_triangles widens the cells)
+        for (int f = 0; f < 6; ++f) {
+            const int a = f / 2;
+            const double plane = f % 2 ? box->box.hi[a] : box->box.lo[a];
+            Face &face = faces_[static_cast<std::size_t>(f)];
+            face.first = box->triangles[static_cast<std::size_t>(f)][0];
+            face.second = box->triangles[static_cast<std::size_t>(f)][1];
+            face.from = static_cast<int32_t>(coordinate(plane - pad, a));
+            face.to = static_cast<int32_t>(coordinate(plane + pad, a));
+            face_order_[static_cast<std::size_t>(f)] = f;
+            // (Its plane's front the box's inside, for either triangle: a centre inside can be r
+            // in front of it. Behind the plane, never: left_touching.)
+            const double inward = f % 2 ? -1.0 : 1.0;
+            if (triangles_[face.first].normal[a] * inward > 0.0 ||
+                triangles_[face.second].normal[a] * inward > 0.0)
+                facing_ |= 1 << f;
         }
-        for (int64_t z = lo[2]; z <= hi[2]; ++z)
-            for (int64_t y = lo[1]; y <= hi[1]; ++y)
-                for (int64_t x = lo[0]; x <= hi[0]; ++x)
-                    f(static_cast<std::size_t>(cell_index({x, y, z})));
-    };
-    near_from_.assign(static_cast<std::size_t>(cells) + 1, 0);
-    for (const Triangle &tri : triangles_)
-        each_cell(tri.box, [&](std::size_t c) { ++near_from_[c + 1]; });
-    for (std::size_t c = 0; c < static_cast<std::size_t>(cells); ++c)
-        near_from_[c + 1] += near_from_[c];
-    near_.resize(near_from_.back());
-    // (Each cell's start used as its cursor, leaving it at the next cell's start: moved back up
-    // one cell after. No copy of the starts: at 100,000 balls 800 KB in fresh pages a bake.)
-    for (uint32_t k = 0; k < triangles_.size(); ++k)
-        each_cell(triangles_[k].box, [&](std::size_t c) { near_[near_from_[c]++] = k; });
-    std::copy_backward(near_from_.begin(), near_from_.end() - 1, near_from_.end());
-    near_from_[0] = 0;
+        std::sort(face_order_.begin(), face_order_.end(), [&](int x, int y) {
+            return faces_[static_cast<std::size_t>(x)].first <
+                   faces_[static_cast<std::size_t>(y)].first;
+        });
+    }
+    list_triangles();
     // (What is done per sphere, each sphere's alone, in two halves at once for many spheres:
     // its records, its cell, whether it is clear, and the layer of cells it is in, listed.)
     const bool two = n >= ani::kWorthTwoHalves;
@@ -155,11 +258,12 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     const bool by_layers = two && grid_.counts[2] >= 4;
     Layers halves[2];
     const int64_t middle = grid_.counts[2] / 2;
-    bool clear_in[2] = {true, true};
+    bool clear_in[2] = {true, true}, inside_in[2] = {true, true};
     ani::in_halves(two, n, [&](std::size_t from, std::size_t to) {
         const int half = from != 0;
-        Layers &layers = halves[half];
-        bool clear = true; // (its own until the end: the other half's shares its cache line)
+        Layers &mine = halves[half];
+        bool apart = true, inside = true; // (its own until the end: the other half's shares
+                                          // its cache line)
         for (std::size_t i = from; i < to; ++i) {
             const Start &st = spheres[i];
             Sphere &p = s_[i];
@@ -174,20 +278,20 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
             const std::array<int64_t, 3> cell{coordinate(c.x, 0), coordinate(c.y, 1),
                                               coordinate(c.z, 2)};
             place(static_cast<uint32_t>(i), cell);
-            if (check) clear = clear && clear_of(static_cast<uint32_t>(i), c);
+            if (check) apart = apart && clear_of(static_cast<uint32_t>(i), c);
+            if (box)
+                inside = inside && glm::all(glm::greaterThan(c, box->box.lo)) &&
+                         glm::all(glm::lessThan(c, box->box.hi));
             if (by_layers)
-                (cell[2] < middle - 1 ? layers.below
-                 : cell[2] < middle   ? layers.between
-                                      : layers.above)
+                (cell[2] < middle - 1 ? mine.below
+                 : cell[2] < middle   ? mine.between
+                                      : mine.above)
                     .push_back(static_cast<uint32_t>(i));
         }
-        clear_in[half] = clear;
+        clear_in[half] = apart;
+        inside_in[half] = inside;
     });
-    if (!(clear_in[0] && clear_in[1])) {
-        admissible_ = false;
-        return;
-    }
-    Layers layers;
+    clear = clear_in[0] && clear_in[1];
     if (by_layers) { // (the halves' lists one after the other: each in the order of the spheres)
         layers = std::move(halves[0]);
         const auto append = [](std::vector<uint32_t> &to, const std::vector<uint32_t> &from) {
@@ -197,23 +301,41 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
         append(layers.between, halves[1].between);
         append(layers.above, halves[1].above);
     }
-    link_all(by_layers ? &layers : nullptr);
-    if (!predict_all_pairs(now, check, by_layers ? &layers : nullptr)) {
-        admissible_ = false;
-        return;
-    }
-    ani::UnwrittenVector<double> times(n); // (each written below)
-    std::size_t tests[2] = {0, 0};
-    ani::in_halves(two, n, [&](std::size_t from, std::size_t to) {
-        std::size_t done = 0; // (its own: the two counts share a cache line)
-        for (std::size_t i = from; i < to; ++i) {
-            predict_move(static_cast<uint32_t>(i), now, done);
-            times[i] = std::min(e_[i].pair_time, e_[i].move_time);
+    return inside_in[0] && inside_in[1];
+}
+
+// Each cell's triangles: those whose box reaches the cell's widened by the radius (and a little
+// more, for rounding), in the general engine's order; counted, then listed. (With boxed_, the
+// box's faces are not: the spheres moving towards them test them.)
+void GasLane::list_triangles() {
+    const double pad = r_ * (1.0 + 1e-6);
+    const auto each_cell = [&](const Box &box, auto &&f) {
+        std::array<int64_t, 3> lo{}, hi{};
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = coordinate(box.lo[a] - pad, a);
+            hi[a] = coordinate(box.hi[a] + pad, a);
         }
-        tests[from != 0] = done;
-    });
-    counts_.done += tests[0] + tests[1];
-    queue_.init(times.data(), n, now);
+        for (int64_t z = lo[2]; z <= hi[2]; ++z)
+            for (int64_t y = lo[1]; y <= hi[1]; ++y)
+                for (int64_t x = lo[0]; x <= hi[0]; ++x)
+                    f(static_cast<std::size_t>(cell_index({x, y, z})));
+    };
+    std::vector<bool> listed(triangles_.size(), true);
+    if (boxed_)
+        for (const Face &face : faces_) listed[face.first] = listed[face.second] = false;
+    const std::size_t cells = head_.size();
+    near_from_.assign(cells + 1, 0);
+    for (uint32_t k = 0; k < triangles_.size(); ++k)
+        if (listed[k]) each_cell(triangles_[k].box, [&](std::size_t c) { ++near_from_[c + 1]; });
+    for (std::size_t c = 0; c < cells; ++c) near_from_[c + 1] += near_from_[c];
+    near_.resize(near_from_.back());
+    // (Each cell's start used as its cursor, leaving it at the next cell's start: moved back up
+    // one cell after. No copy of the starts: at 100,000 balls 800 KB in fresh pages a bake.)
+    for (uint32_t k = 0; k < triangles_.size(); ++k)
+        if (listed[k])
+            each_cell(triangles_[k].box, [&](std::size_t c) { near_[near_from_[c]++] = k; });
+    std::copy_backward(near_from_.begin(), near_from_.end() - 1, near_from_.end());
+    near_from_[0] = 0;
 }
 
 // Whether sphere i (placed, its centre at c) is inside the grid's cells and not within r (and the
@@ -222,14 +344,17 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
 // (That no two overlap is checked by predict_all_pairs, which reads every pair anyway.)
 bool GasLane::clear_of(uint32_t i, const glm::dvec3 &c) const {
     const Event &e = e_[i];
-    for (int a = 0; a < 3; ++a)
-        if (e.cell[a] < 0 || e.cell[a] >= grid_.counts[a]) return false;
+    if (!in_grid(e)) return false;
     const double beside = r_ * (1.0 + 1e-6);
-    for (uint32_t k = e.near_from; k < e.near_to; ++k) {
-        const Triangle &tri = triangles_[near_[k]];
-        if (glm::length(c - closest_point_on_triangle(c, tri.a, tri.b, tri.c)) < beside)
+    const auto apart = [&](uint32_t k) {
+        const Triangle &tri = triangles_[k];
+        return !(glm::length(c - closest_point_on_triangle(c, tri.a, tri.b, tri.c)) < beside);
+    };
+    for (int f = 0; f < 6; ++f)
+        if ((e.faces >> f & 1) && !(apart(faces_[f].first) && apart(faces_[f].second)))
             return false;
-    }
+    for (uint32_t k = e.near_from; k < e.near_to; ++k)
+        if (!apart(near_[k])) return false;
     return true;
 }
 
@@ -256,13 +381,13 @@ void GasLane::link_all(const Layers *layers) {
 
 // Where a sphere is at t, and how fast it moves: Path::at and Path::velocity, the same operations
 // in the same order (without acceleration, the term that would add 0 is left out).
-glm::dvec3 GasLane::at(const Sphere &p, double t) const {
+inline glm::dvec3 GasLane::at(const Sphere &p, double t) const {
     const double dt = t - p.t0;
     if (falls_) return Path{vec(p.x), vec(p.v), a_}.at(dt);
     return {p.x[0] + p.v[0] * dt, p.x[1] + p.v[1] * dt, p.x[2] + p.v[2] * dt};
 }
 
-glm::dvec3 GasLane::velocity(const Sphere &p, double t) const {
+inline glm::dvec3 GasLane::velocity(const Sphere &p, double t) const {
     if (falls_) return Path{vec(p.x), vec(p.v), a_}.velocity(t - p.t0);
     return vec(p.v);
 }
@@ -284,6 +409,11 @@ void GasLane::place(uint32_t i, const std::array<int64_t, 3> &c) {
     e.index = static_cast<uint32_t>(cell_index(c));
     e.near_from = near_from_[e.index];
     e.near_to = near_from_[e.index + 1];
+    e.faces = 0;
+    for (int f = 0; boxed_ && f < 6; ++f) {
+        const Face &face = faces_[static_cast<std::size_t>(f)];
+        e.faces |= static_cast<uint8_t>((c[f / 2] >= face.from && c[f / 2] <= face.to) << f);
+    }
 }
 
 void GasLane::link(uint32_t i) {
@@ -605,8 +735,45 @@ void GasLane::predict_move(uint32_t i, double now, std::size_t &done) {
     }
     e.move_time = now + limit;
     const uint32_t from = e.near_from, to = e.near_to;
-    if (from == to) return;
+    // The box's faces beside its cell that it moves towards (tested as if listed: in the lists'
+    // order, before the cell's other triangles).
+    int faces = 0;
+    if (e.faces != 0)
+        for (int a = 0; a < 3; ++a) faces |= (v[a] != 0.0) << (2 * a + (v[a] > 0.0));
+    faces &= e.faces;
+    if (from == to && faces == 0) return;
     const Path here{c, v, glm::dvec3(0.0)};
+    const auto offer = [&](uint32_t k, const Contact &hit) {
+        limit = hit.t;
+        e.move_time = now + hit.t;
+        e.triangle = k;
+        Contact &kept = contact_[i]; // (field by field: a copy whole was a `rep movs`)
+        kept.t = hit.t;
+        kept.normal = hit.normal;
+        kept.point = hit.point;
+    };
+    // A face of the box, its centre inside it: met where it meets the face's plane (r away), the
+    // contact inside the face; the common case of the test below, with its numbers, written out.
+    // (Touching it already, by rounding: the test below.)
+    int general = 0;
+    for (int f : face_order_) {
+        if (!(faces >> f & 1)) continue;
+        const Triangle &tri = triangles_[faces_[f].first];
+        const glm::dvec3 &n = tri.normal;
+        const double d0 = glm::dot(n, c) - tri.offset, vn = glm::dot(n, v);
+        const double side = d0 > 0.0 ? 1.0 : -1.0, away = side * d0, closing = -side * vn;
+        if (!(away > r_ && closing > 0.0)) {
+            general |= 1 << f;
+            continue;
+        }
+        ++done;
+        const double t = (away - r_) / closing;
+        if (t <= limit) {
+            const glm::dvec3 normal = side * n;
+            offer(faces_[f].first, Contact{t, normal, here.at(t) - normal * r_});
+        }
+    }
+    if (from == to && general == 0) return;
     Box reach = swept_box(here, limit);
     reach.lo -= glm::dvec3(r_);
     reach.hi += glm::dvec3(r_);
@@ -621,36 +788,25 @@ void GasLane::predict_move(uint32_t i, double now, std::size_t &done) {
     uint32_t later[16];
     double plane_at[16];
     int deferred = 0;
-    const auto offer = [&](uint32_t k, const Contact &hit) {
-        limit = hit.t;
-        e.move_time = now + hit.t;
-        e.triangle = k;
-        Contact &kept = contact_[i]; // (field by field: a copy whole was a `rep movs`)
-        kept.t = hit.t;
-        kept.normal = hit.normal;
-        kept.point = hit.point;
-    };
-    for (uint32_t k = from; k < to; ++k) {
-        const Triangle &tri = triangles_[near_[k]];
-        if (!reach.overlaps(tri.box)) continue;
+    const auto test = [&](uint32_t k) {
+        const Triangle &tri = triangles_[k];
+        if (!reach.overlaps(tri.box)) return;
         const glm::dvec3 &n = tri.normal;
         if (n == glm::dvec3(0.0)) {
             ++done;
-            if (auto hit = sphere_triangle(here, r_, tri.a, tri.b, tri.c, limit))
-                offer(near_[k], *hit);
-            continue;
+            if (auto hit = sphere_triangle(here, r_, tri.a, tri.b, tri.c, limit)) offer(k, *hit);
+            return;
         }
         const double d0 = glm::dot(n, c) - tri.offset, vn = glm::dot(n, v);
         const double side = d0 > 0.0 ? 1.0 : -1.0, away = side * d0, closing = -side * vn;
-        if (away + std::min(-closing * limit, 0.0) > far || (closing <= 0.0 && away >= off))
-            continue;
-        if (met && n == met->normal && tri.offset == met->offset) continue;
+        if (away + std::min(-closing * limit, 0.0) > far || (closing <= 0.0 && away >= off)) return;
+        if (met && n == met->normal && tri.offset == met->offset) return;
         ++done;
         if (away > r_ && closing > 0.0) {
             // sphere_triangle's common case written out: the plane at (away - r) / closing, met
             // inside the triangle (sphere_triangle's test).
             const double t = (away - r_) / closing;
-            if (!(t <= limit)) continue;
+            if (!(t <= limit)) return;
             const glm::dvec3 normal = side * n, q = here.at(t) - r_ * normal;
             // (The corners named, not copied: a copy of the three was a `rep movs`, slow to
             // start, at every face met.)
@@ -661,21 +817,27 @@ void GasLane::predict_move(uint32_t i, double now, std::size_t &done) {
                 inside = glm::dot(n, glm::cross(b - a, q - a)) >= 0.0;
             }
             if (inside) {
-                offer(near_[k], Contact{t, normal, here.at(t) - normal * r_});
+                offer(k, Contact{t, normal, here.at(t) - normal * r_});
                 met = &tri;
-                continue;
+                return;
             }
             if (deferred < 16) {
-                later[deferred] = near_[k];
+                later[deferred] = k;
                 plane_at[deferred++] = t;
-                continue;
+                return;
             }
         }
         if (auto hit = sphere_triangle(here, r_, tri.a, tri.b, tri.c, limit)) {
-            offer(near_[k], *hit);
+            offer(k, *hit);
             met = nullptr;
         }
-    }
+    };
+    for (int f : face_order_)
+        if (general >> f & 1) {
+            test(faces_[f].first);
+            test(faces_[f].second);
+        }
+    for (uint32_t k = from; k < to; ++k) test(near_[k]);
     for (int k = 0; k < deferred; ++k) {
         if (plane_at[k] >= limit) continue; // (a tie at most: met as early already)
         const Triangle &tri = triangles_[later[k]];
@@ -732,13 +894,18 @@ bool GasLane::grazing(const glm::dvec3 &relative, const glm::dvec3 &n) const {
 bool GasLane::left_touching(uint32_t i, const glm::dvec3 &c, const glm::dvec3 &v) const {
     const Event &e = e_[i];
     const double tol = 1e-6 * r_;
-    for (uint32_t k = e.near_from; k < e.near_to; ++k) {
-        const Triangle &tri = triangles_[near_[k]];
-        if (tri.normal == glm::dvec3(0.0) ||
-            !(std::abs(glm::dot(tri.normal, c) - tri.offset - r_) <= tol))
-            continue;
-        if (std::abs(glm::dot(v, tri.normal)) <= 1e-9 * std::max(1.0, glm::length(v))) return true;
-    }
+    const auto touching = [&](uint32_t k) {
+        const Triangle &tri = triangles_[k];
+        return tri.normal != glm::dvec3(0.0) &&
+               std::abs(glm::dot(tri.normal, c) - tri.offset - r_) <= tol &&
+               std::abs(glm::dot(v, tri.normal)) <= 1e-9 * std::max(1.0, glm::length(v));
+    };
+    const int faces = e.faces & facing_;
+    for (int f = 0; faces != 0 && f < 6; ++f)
+        if ((faces >> f & 1) && (touching(faces_[f].first) || touching(faces_[f].second)))
+            return true;
+    for (uint32_t k = e.near_from; k < e.near_to; ++k)
+        if (touching(near_[k])) return true;
     return false;
 }
 

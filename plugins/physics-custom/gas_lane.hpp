@@ -16,7 +16,10 @@
 //   processor has it (the same operations in the same order as one at a time), and the face of
 //   its cell a sphere reaches first found without branches (face_ahead);
 // - the static models' triangles listed per cell once, so a sphere far from every wall tests
-//   none, and a face met inside its triangle solved directly;
+//   none, and a face met inside its triangle solved directly; a box closed around every sphere
+//   without gravity (each face two triangles making it whole, as the cube mesh's: the
+//   benchmark's gas) known as such, so that a sphere meets only the faces it moves towards,
+//   from the cells beside them, where it meets their plane;
 // - a calendar queue of the event times (calendar_queue.hpp); the next event's records fetched
 //   ahead; nothing allocated in the loop;
 // - the arrays of a value per sphere in 2 MB pages once they are large (animator/huge_pages.hpp:
@@ -36,6 +39,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace physics_custom {
@@ -123,6 +127,7 @@ class GasLane {
         uint32_t near_from = 0, near_to = 0;
         uint32_t triangle = kNone; // met at move_time, with contact_ (or kNone: a crossing)
         int8_t axis = 0, direction = 0;
+        uint8_t faces = 0; // the box's faces its cell is beside (a bit each: Face)
         double mass = 1.0; // (here, not in an array of its own: read at its collisions)
     };
     static_assert(sizeof(Event) == 64);
@@ -144,6 +149,29 @@ class GasLane {
     bool predict_all_pairs(double now, bool check, const Layers *layers); // at the start
     bool all_pairs_of(double now, bool check, std::size_t &tests, const uint32_t *ids,
                       std::size_t listed);
+    // The box closed around every sphere, when the static models make one (find_box in
+    // gas_lane.cpp) and nothing falls: each face (2 a for the lower along axis a, 2 a + 1 the
+    // upper) is two triangles making it whole, taken out of the cells' lists and met, from the
+    // cells the lists would have it in (from .. to along its axis: along the others, every cell
+    // inside the box), only by a sphere moving towards it (predict_move).
+    struct Face {
+        uint32_t first = kNone, second = kNone; // its triangles, in the general engine's order
+        int32_t from = 0, to = -1;
+    };
+    struct BoxFaces; // (gas_lane.cpp)
+    static std::optional<BoxFaces> find_box(const std::vector<Triangle> &triangles);
+    bool lay_out(const ani::HugeVector<Start> &spheres, double now, bool check, const BoxFaces *box,
+                 Layers &layers, bool &clear);
+    bool in_grid(const Event &e) const {
+        for (int a = 0; a < 3; ++a)
+            if (e.cell[a] < 0 || e.cell[a] >= grid_.counts[a]) return false;
+        return true;
+    }
+    bool boxed_ = false;
+    std::array<Face, 6> faces_{};
+    std::array<int, 6> face_order_{}; // by their first triangle (the lists' order)
+    int facing_ = 0;                  // the faces whose plane faces the box's inside (a bit each)
+    void list_triangles(); // each cell's (near_from_, near_), the box's faces left out if boxed_
     void predict_move(uint32_t i, double now) { predict_move(i, now, counts_.done); }
     void predict_move(uint32_t i, double now, std::size_t &done); // its tests added to done
     void predict_fall(uint32_t i, double now, const Path &here, std::size_t &done);

@@ -354,6 +354,51 @@ TEST_CASE("the gas lane's work per collision does not grow with the number of ba
     CHECK(large <= std::log(27000.0) / std::log(1000.0) * small);
 }
 
+TEST_CASE("the gas lane meets a box's faces as the general engine does, around every ball or not") {
+    // A box closed around every ball (the cube mesh, its faces along the axes) the lane knows as
+    // such and meets its faces directly (GasLane::find_box); with a ball outside it, or turned
+    // off the axes, its faces are triangles like any other. Either way: the general engine's
+    // collisions, its walls among them.
+    // (300 balls on a lattice 3.6 m wide, in a box 6 m wide: inside it turned too.)
+    const auto same = [](const std::function<void(Gas &)> &change) {
+        Gas lane = make_gas(300, 0.2, 0.6, 1.0, 3.0, 0, 47);
+        Gas general = make_gas(300, 0.2, 0.6, 1.0, 3.0, 0, 47, false);
+        change(lane);
+        change(general);
+        auto a = baked(lane, 2.0), b = baked(general, 2.0);
+        CHECK(count_of(*a, "gas lane events") >= static_cast<double>(a->events().size()));
+        CHECK(count_of(*b, "gas lane events") == 0.0);
+        size_t walls = 0;
+        for (size_t k = 0; k < 400; ++k) walls += a->events()[k].a == 0 || a->events()[k].b == 0;
+        CHECK(walls > 5);
+        same_first_collisions(*a, *b, 400);
+        same_places(*a, *b, 0.3);
+    };
+    SECTION("every ball inside") {
+        same([](Gas &) {});
+    }
+    SECTION("a ball outside, still") {
+        same([](Gas &gas) {
+            Model ball;
+            ball.name = "outside";
+            ball.mesh = "sphere";
+            ball.dynamics = true;
+            ball.gravity = false;
+            ModelState st;
+            st.center = {4.0, 0.0, 0.0};
+            st.scale = glm::dvec3(0.2);
+            gas.doc.add_model(ball, st);
+        });
+    }
+    SECTION("the box turned about y") {
+        same([](Gas &gas) {
+            ModelState st = *gas.doc.keyframes().front().states[0];
+            st.angles = {0.0, 30.0, 0.0};
+            gas.doc.set_state(0, 0, st);
+        });
+    }
+}
+
 TEST_CASE("the gas lane hands the bake to the general engine when a ball leaves its grid") {
     // In free space the balls that fly off leave the grid, which the lane does not follow: it
     // stops there and the general engine goes on from where it left every ball.
