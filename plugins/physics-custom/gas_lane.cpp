@@ -89,6 +89,17 @@ inline FaceAhead face_ahead(const glm::dvec3 &c, const glm::dvec3 &v,
 }
 #endif
 
+// A centre at c moving at v against a triangle's plane: on which side of it (1: the normal's,
+// -1: the other), how far from it, and how fast it comes closer (the triangle tests' numbers).
+struct Approach {
+    double side, away, closing;
+};
+inline Approach approach(const GasLane::Triangle &tri, const glm::dvec3 &c, const glm::dvec3 &v) {
+    const double d0 = glm::dot(tri.normal, c) - tri.offset, vn = glm::dot(tri.normal, v);
+    const double side = d0 > 0.0 ? 1.0 : -1.0;
+    return {side, side * d0, -side * vn};
+}
+
 } // namespace
 
 // The box the static models close, when they do: the box of all their corners, each of its six
@@ -112,26 +123,22 @@ std::optional<GasLane::BoxFaces> GasLane::find_box(const std::vector<Triangle> &
     for (int f = 0; f < 6; ++f) {
         const int a = f / 2, b = (a + 1) % 3, c = (a + 2) % 3;
         const double plane = f % 2 ? found.box.hi[a] : found.box.lo[a];
-        // A triangle of the face: its corners, as corners of the face (bit 0: upper along b,
-        // bit 1: upper along c), or none.
-        const auto corners = [&](const Triangle &t) -> std::optional<std::array<int, 3>> {
-            if (t.normal[a] == 0.0 || t.normal[b] != 0.0 || t.normal[c] != 0.0) return std::nullopt;
-            std::array<int, 3> out{};
-            const glm::dvec3 *p[3] = {&t.a, &t.b, &t.c};
-            for (int k = 0; k < 3; ++k) {
-                const glm::dvec3 &q = *p[k];
-                const bool lo_b = q[b] == found.box.lo[b], hi_b = q[b] == found.box.hi[b];
-                const bool lo_c = q[c] == found.box.lo[c], hi_c = q[c] == found.box.hi[c];
-                if (q[a] != plane || !(lo_b || hi_b) || !(lo_c || hi_c)) return std::nullopt;
-                out[static_cast<std::size_t>(k)] = (hi_b ? 1 : 0) | (hi_c ? 2 : 0);
+        // A triangle of the face: the face's corners it has, a bit each (corner 0 to 3: bit 0 of
+        // the corner's number upper along b, bit 1 upper along c), or 0 when it is not one.
+        const auto corners = [&](const Triangle &t) {
+            if (t.normal[a] == 0.0 || t.normal[b] != 0.0 || t.normal[c] != 0.0) return 0;
+            int out = 0;
+            for (const glm::dvec3 *q : {&t.a, &t.b, &t.c}) {
+                const bool lo_b = (*q)[b] == found.box.lo[b], hi_b = (*q)[b] == found.box.hi[b];
+                const bool lo_c = (*q)[c] == found.box.lo[c], hi_c = (*q)[c] == found.box.hi[c];
+                if ((*q)[a] != plane || !(lo_b || hi_b) || !(lo_c || hi_c)) return 0;
+                out |= 1 << ((hi_b ? 1 : 0) | (hi_c ? 2 : 0));
             }
-            if (out[0] == out[1] || out[1] == out[2] || out[0] == out[2]) return std::nullopt;
-            return out;
+            return __builtin_popcount(static_cast<unsigned>(out)) == 3 ? out : 0; // 3 distinct
         };
-        std::vector<std::pair<uint32_t, int>> in_face; // (triangle, its corners as a bit set)
+        std::vector<std::pair<uint32_t, int>> in_face; // (triangle, its corners)
         for (uint32_t k = 0; k < triangles.size(); ++k)
-            if (const auto cs = corners(triangles[k]))
-                in_face.emplace_back(k, (1 << (*cs)[0]) | (1 << (*cs)[1]) | (1 << (*cs)[2]));
+            if (const int cs = corners(triangles[k])) in_face.emplace_back(k, cs);
         bool whole = false;
         for (std::size_t x = 0; x < in_face.size() && !whole; ++x)
             for (std::size_t y = x + 1; y < in_face.size() && !whole; ++y) {
@@ -163,19 +170,17 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
     // meets a face where first_exit and sphere_triangle say). If a sphere is not inside it after
     // all, everything is laid out again without it.
     const std::optional<BoxFaces> box = falls_ ? std::nullopt : find_box(triangles_);
-    const bool two = n >= ani::kWorthTwoHalves;
+    // (Per sphere, in two halves at once for many spheres; listed by layer for the halves of
+    // linking and of the first predictions: with 4 layers of cells or more.)
+    const bool two = n >= ani::kWorthTwoHalves, by_layers = two && grid_.counts[2] >= 4;
     Layers layers;
     bool clear = true;
-    if (!lay_out(spheres, now, check, box ? &*box : nullptr, layers, clear)) {
-        layers = Layers{};
-        clear = true;
-        lay_out(spheres, now, check, nullptr, layers, clear);
-    }
+    if (!lay_out(spheres, now, check, box ? &*box : nullptr, two, by_layers, layers, clear))
+        lay_out(spheres, now, check, nullptr, two, by_layers, layers, clear);
     if (!clear) {
         admissible_ = false;
         return;
     }
-    const bool by_layers = two && grid_.counts[2] >= 4;
     link_all(by_layers ? &layers : nullptr);
     if (!predict_all_pairs(now, check, by_layers ? &layers : nullptr)) {
         admissible_ = false;
@@ -201,7 +206,7 @@ GasLane::GasLane(double radius, const glm::dvec3 &acceleration, const Grid &grid
 // listed: the spheres moving towards them test them): false, and nothing to be trusted, if a
 // sphere is not inside it.
 bool GasLane::lay_out(const ani::HugeVector<Start> &spheres, double now, bool check,
-                      const BoxFaces *box, Layers &layers, bool &clear) {
+                      const BoxFaces *box, bool two, bool by_layers, Layers &layers, bool &clear) {
     const std::size_t n = spheres.size();
     boxed_ = box != nullptr;
     facing_ = 0;
@@ -250,20 +255,16 @@ bool GasLane::lay_out(const ani::HugeVector<Start> &spheres, double now, bool ch
         });
     }
     list_triangles();
-    // (What is done per sphere, each sphere's alone, in two halves at once for many spheres:
-    // its records, its cell, whether it is clear, and the layer of cells it is in, listed.)
-    const bool two = n >= ani::kWorthTwoHalves;
-    // (Listed by layer for the halves of linking and of the first predictions: with 4 layers of
-    // cells or more.)
-    const bool by_layers = two && grid_.counts[2] >= 4;
+    // (What is done per sphere, each sphere's alone: its records, its cell, whether it is clear
+    // and inside the box, and the layer of cells it is in, listed.)
     Layers halves[2];
     const int64_t middle = grid_.counts[2] / 2;
     bool clear_in[2] = {true, true}, inside_in[2] = {true, true};
     ani::in_halves(two, n, [&](std::size_t from, std::size_t to) {
         const int half = from != 0;
         Layers &mine = halves[half];
-        bool apart = true, inside = true; // (its own until the end: the other half's shares
-                                          // its cache line)
+        // (Its own until the end: the other half's share their cache line.)
+        bool apart = true, inside = true;
         for (std::size_t i = from; i < to; ++i) {
             const Start &st = spheres[i];
             Sphere &p = s_[i];
@@ -338,6 +339,19 @@ void GasLane::list_triangles() {
     near_from_[0] = 0;
 }
 
+// Calls f(k) for each triangle k near e's cell: those of the box's faces in `faces` (a bit each),
+// in the lists' order, then those its cell lists; stops at the first for which f is true (and
+// says so).
+template <class F> inline bool GasLane::any_near(const Event &e, int faces, F &&f) const {
+    for (int k = 0; faces != 0 && k < 6; ++k) {
+        const Face &face = faces_[static_cast<std::size_t>(face_order_[k])];
+        if ((faces >> face_order_[k] & 1) && (f(face.first) || f(face.second))) return true;
+    }
+    for (uint32_t k = e.near_from; k < e.near_to; ++k)
+        if (f(near_[k])) return true;
+    return false;
+}
+
 // Whether sphere i (placed, its centre at c) is inside the grid's cells and not within r (and the
 // general engine's touching allowance, 1e-6 r: EventBake::overlaps_body) of a triangle: one
 // touching a face, which the general engine may put on it, is left to the general engine too.
@@ -350,12 +364,7 @@ bool GasLane::clear_of(uint32_t i, const glm::dvec3 &c) const {
         const Triangle &tri = triangles_[k];
         return !(glm::length(c - closest_point_on_triangle(c, tri.a, tri.b, tri.c)) < beside);
     };
-    for (int f = 0; f < 6; ++f)
-        if ((e.faces >> f & 1) && !(apart(faces_[f].first) && apart(faces_[f].second)))
-            return false;
-    for (uint32_t k = e.near_from; k < e.near_to; ++k)
-        if (!apart(near_[k])) return false;
-    return true;
+    return !any_near(e, e.faces, [&](uint32_t k) { return !apart(k); });
 }
 
 // Every sphere linked into its cell's list, in the order of the spheres (each list then starts
@@ -760,8 +769,7 @@ void GasLane::predict_move(uint32_t i, double now, std::size_t &done) {
         if (!(faces >> f & 1)) continue;
         const Triangle &tri = triangles_[faces_[f].first];
         const glm::dvec3 &n = tri.normal;
-        const double d0 = glm::dot(n, c) - tri.offset, vn = glm::dot(n, v);
-        const double side = d0 > 0.0 ? 1.0 : -1.0, away = side * d0, closing = -side * vn;
+        const auto [side, away, closing] = approach(tri, c, v);
         if (!(away > r_ && closing > 0.0)) {
             general |= 1 << f;
             continue;
@@ -797,8 +805,7 @@ void GasLane::predict_move(uint32_t i, double now, std::size_t &done) {
             if (auto hit = sphere_triangle(here, r_, tri.a, tri.b, tri.c, limit)) offer(k, *hit);
             return;
         }
-        const double d0 = glm::dot(n, c) - tri.offset, vn = glm::dot(n, v);
-        const double side = d0 > 0.0 ? 1.0 : -1.0, away = side * d0, closing = -side * vn;
+        const auto [side, away, closing] = approach(tri, c, v);
         if (away + std::min(-closing * limit, 0.0) > far || (closing <= 0.0 && away >= off)) return;
         if (met && n == met->normal && tri.offset == met->offset) return;
         ++done;
@@ -832,12 +839,10 @@ void GasLane::predict_move(uint32_t i, double now, std::size_t &done) {
             met = nullptr;
         }
     };
-    for (int f : face_order_)
-        if (general >> f & 1) {
-            test(faces_[f].first);
-            test(faces_[f].second);
-        }
-    for (uint32_t k = from; k < to; ++k) test(near_[k]);
+    any_near(e, general, [&](uint32_t k) {
+        test(k);
+        return false;
+    });
     for (int k = 0; k < deferred; ++k) {
         if (plane_at[k] >= limit) continue; // (a tie at most: met as early already)
         const Triangle &tri = triangles_[later[k]];
@@ -900,13 +905,7 @@ bool GasLane::left_touching(uint32_t i, const glm::dvec3 &c, const glm::dvec3 &v
                std::abs(glm::dot(tri.normal, c) - tri.offset - r_) <= tol &&
                std::abs(glm::dot(v, tri.normal)) <= 1e-9 * std::max(1.0, glm::length(v));
     };
-    const int faces = e.faces & facing_;
-    for (int f = 0; faces != 0 && f < 6; ++f)
-        if ((faces >> f & 1) && (touching(faces_[f].first) || touching(faces_[f].second)))
-            return true;
-    for (uint32_t k = e.near_from; k < e.near_to; ++k)
-        if (touching(near_[k])) return true;
-    return false;
+    return any_near(e, e.faces & facing_, touching);
 }
 
 // Its segment up to t, from where it started or from where this slice starts

@@ -161,7 +161,7 @@ class GasLane {
     struct BoxFaces; // (gas_lane.cpp)
     static std::optional<BoxFaces> find_box(const std::vector<Triangle> &triangles);
     bool lay_out(const ani::HugeVector<Start> &spheres, double now, bool check, const BoxFaces *box,
-                 Layers &layers, bool &clear);
+                 bool two, bool by_layers, Layers &layers, bool &clear);
     bool in_grid(const Event &e) const {
         for (int a = 0; a < 3; ++a)
             if (e.cell[a] < 0 || e.cell[a] >= grid_.counts[a]) return false;
@@ -172,6 +172,7 @@ class GasLane {
     std::array<int, 6> face_order_{}; // by their first triangle (the lists' order)
     int facing_ = 0;                  // the faces whose plane faces the box's inside (a bit each)
     void list_triangles(); // each cell's (near_from_, near_), the box's faces left out if boxed_
+    template <class F> bool any_near(const Event &e, int faces, F &&f) const;
     void predict_move(uint32_t i, double now) { predict_move(i, now, counts_.done); }
     void predict_move(uint32_t i, double now, std::size_t &done); // its tests added to done
     void predict_fall(uint32_t i, double now, const Path &here, std::size_t &done);
